@@ -17,7 +17,13 @@ pub mod delaunay;
 pub mod error;
 pub mod io;
 pub mod predicates;
+pub mod reconstruct;
 pub mod sample;
+pub mod voronoi;
 
 pub use delaunay::{triangulate, Triangulation};
 pub use error::Error;
+pub use reconstruct::{reconstruct, reconstruct_with, Reconstruction};
+pub use voronoi::Voronoi;
+
+

@@ -9,7 +9,7 @@ mod quadedge;
 mod triangulation;
 mod validate;
 
-pub use triangulation::{Triangulation, NO_TWIN};
+pub use triangulation::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
 pub use validate::ValidationError;
 
 use crate::error::{check_points, Error};

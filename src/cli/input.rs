@@ -1,0 +1,72 @@
+//! Where the points come from: a file or standard input, and the messages naming it.
+
+use std::fs::File;
+use std::io::{self, BufReader};
+use std::path::{Path, PathBuf};
+
+use wdm_crust::io::{format_from_path, read_points, ParseError, ParseErrorKind};
+
+use super::CliError;
+
+/// The input of a subcommand: a file, or standard input for an absent INPUT or `-`.
+#[derive(Debug)]
+pub struct Input {
+    path: Option<PathBuf>,
+}
+
+impl Input {
+    /// The input named on the command line.
+    pub fn new(arg: Option<&Path>) -> Self {
+        let path = arg.filter(|p| p.as_os_str() != "-").map(Path::to_path_buf);
+        Input { path }
+    }
+
+    /// The name used in messages: the path as given, or `<stdin>`.
+    pub fn name(&self) -> String {
+        match &self.path {
+            Some(path) => path.display().to_string(),
+            None => "<stdin>".to_string(),
+        }
+    }
+
+    /// Reads all points, in the format implied by the extension or detected from the content.
+    pub fn read_points(&self) -> Result<Vec<[f64; 2]>, CliError> {
+        let result = match &self.path {
+            None => read_points(BufReader::with_capacity(1 << 16, io::stdin().lock()), None),
+            Some(path) => {
+                if path.is_dir() {
+                    return Err(CliError::bad_input(format!(
+                        "{}: is a directory, not a point file",
+                        self.name()
+                    )));
+                }
+                let file = File::open(path).map_err(|e| {
+                    CliError::bad_input(format!("{}: cannot open: {e}", self.name()))
+                })?;
+                read_points(
+                    BufReader::with_capacity(1 << 16, file),
+                    format_from_path(path),
+                )
+            }
+        };
+        result.map_err(|e| self.parse_error(&e))
+    }
+
+    /// `<file>:<line>: <problem>`; exit 2, except for a failing read (exit 1).
+    fn parse_error(&self, e: &ParseError) -> CliError {
+        let message = match e.line {
+            Some(line) => format!("{}:{line}: {}", self.name(), e.kind),
+            None => format!("{}: {}", self.name(), e.kind),
+        };
+        match e.kind {
+            ParseErrorKind::Io(_) => CliError::failure(message),
+            _ => CliError::bad_input(message),
+        }
+    }
+
+    /// A library error about the points read (normally caught by the parser already): it
+    /// names the point index.
+    pub fn library_error(&self, e: &wdm_crust::Error) -> CliError {
+        CliError::bad_input(format!("{}: {e}", self.name()))
+    }
+}

@@ -1,0 +1,114 @@
+//! The command line: one module per subcommand plus the shared pieces (input, output,
+//! errors, timings). A new subcommand is a new module with an `Args` struct and a `run`
+//! function, and one more variant of [`Command`].
+
+mod error;
+mod input;
+mod output;
+mod timings;
+mod triangulate;
+
+use std::io::Write;
+use std::process::ExitCode;
+
+use clap::error::ErrorKind;
+use clap::{Parser, Subcommand};
+
+pub use error::CliError;
+
+/// Shown after the top-level help.
+const FORMATS_HELP: &str = "\
+Input formats (detected from the content, or .node/.gtn/.csv by extension):
+  plain text   one point per line: `x y`, `x,y` or `x y z...` (extra columns ignored)
+  CSV          the same, after an optional header line such as `x,y`
+  .node/.gtn   Triangle/Dey format: header `N 2 A B`, then `index x y [attributes] [marker]`
+Blank lines and `#` comments are skipped; \\n, \\r\\n and \\r line ends are all accepted.
+Point indices in every output are positions among the points read, counting from 0.
+
+Exit status: 0 on success, 2 for bad input or usage, 1 for other failures.";
+
+/// Exact 2D Delaunay triangulation, Voronoi diagram and curve reconstruction (WDM_CRUST).
+#[derive(Debug, Parser)]
+#[command(
+    name = "wdm-crust",
+    version,
+    propagate_version = true,
+    arg_required_else_help = true,
+    after_help = FORMATS_HELP
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Exact Delaunay triangulation of a point file.
+    #[command(after_help = triangulate::EXAMPLES)]
+    Triangulate(triangulate::TriangulateArgs),
+}
+
+/// Parses the command line, runs the subcommand and turns the outcome into an exit code,
+/// with at most one line on standard error for a failure.
+pub fn run() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return clap_exit(&e),
+    };
+    let result = match &cli.command {
+        Command::Triangulate(args) => triangulate::run(args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => e.report(),
+    }
+}
+
+/// Help and version go to standard output with exit 0; a usage error becomes one line on
+/// standard error with exit 2 (clap's tip and list of possible values kept).
+fn clap_exit(e: &clap::Error) -> ExitCode {
+    match e.kind() {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            // A closed pipe (`--help | head -1`) is not worth a message.
+            let _ = e.print();
+            ExitCode::SUCCESS
+        }
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            let _ = e.print();
+            ExitCode::from(2)
+        }
+        _ => {
+            let rendered = e.render().to_string();
+            let mut lines = rendered.lines().map(str::trim).filter(|l| !l.is_empty());
+            let first = lines.next().unwrap_or("invalid arguments");
+            let first = first.strip_prefix("error: ").unwrap_or(first);
+            let mut message = first.to_string();
+            for line in lines {
+                if let Some(tip) = line.strip_prefix("tip: ") {
+                    message.push_str(&format!(" ({tip})"));
+                } else if line.starts_with('[') {
+                    // `[possible values: json, text]`
+                    message.push(' ');
+                    message.push_str(line);
+                }
+            }
+            let _ = writeln!(
+                std::io::stderr(),
+                "wdm-crust: {message}; see 'wdm-crust --help'"
+            );
+            ExitCode::from(2)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn the_command_line_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+}

@@ -1,0 +1,617 @@
+use std::io::{BufReader, Read};
+use std::path::PathBuf;
+
+use proptest::prelude::*;
+
+use super::*;
+
+fn parse(text: &str) -> Result<Vec<[f64; 2]>, ParseError> {
+    read_points(text.as_bytes(), None)
+}
+
+fn parse_as(text: &str, format: InputFormat) -> Result<Vec<[f64; 2]>, ParseError> {
+    read_points(text.as_bytes(), Some(format))
+}
+
+fn ok(text: &str) -> Vec<[f64; 2]> {
+    parse(text).unwrap_or_else(|e| panic!("{text:?}: {e}"))
+}
+
+/// The error of `text`, checking that it has line `line` and a one-line message.
+fn err_at(text: &str, format: Option<InputFormat>, line: usize) -> ParseErrorKind {
+    let err = read_points(text.as_bytes(), format).expect_err(text);
+    let message = err.to_string();
+    assert_eq!(err.line, Some(line), "{text:?}: {message}");
+    assert!(message.starts_with(&format!("line {line}: ")), "{message}");
+    assert!(
+        !message.contains('\n') && !message.contains('\r'),
+        "{message:?}"
+    );
+    err.kind
+}
+
+// ----- plain text -----
+
+#[test]
+fn text_separators_and_extra_columns() {
+    let expected = vec![[1.5, -2.0], [3.0, 4e2], [5.0, 6.0], [7.0, 8.0], [9.0, 10.0]];
+    assert_eq!(
+        ok("1.5 -2\n3\t4e2\n  5 ,  6  \n7,8,extra\n9 10 0.85 more\n"),
+        expected
+    );
+    assert_eq!(
+        ok("+.5 1.\n-0 0e-500\n1E+3 2e-3\n"),
+        vec![[0.5, 1.0], [-0.0, 0.0], [1000.0, 0.002]]
+    );
+}
+
+#[test]
+fn text_comments_and_blank_lines() {
+    let text = "# header comment\n\n   \n1 2 # trailing comment\n\t\n#3 4\n5 6\n\n";
+    assert_eq!(ok(text), vec![[1.0, 2.0], [5.0, 6.0]]);
+    assert!(ok("").is_empty());
+    assert!(ok("# only a comment\n\n").is_empty());
+}
+
+#[test]
+fn text_line_ends() {
+    let expected = vec![[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]];
+    assert_eq!(ok("1 2\n3 4\n5 6\n"), expected);
+    assert_eq!(ok("1 2\r\n3 4\r\n5 6\r\n"), expected);
+    assert_eq!(ok("1 2\r3 4\r5 6\r"), expected);
+    assert_eq!(ok("1 2\r\n3 4\r5 6"), expected);
+    assert_eq!(ok("\u{feff}1 2\n3 4\n5 6"), expected);
+}
+
+#[test]
+fn crawl_and_peel_files_are_tab_separated_with_cr_line_ends() {
+    let text = "51.8\t267.0525397\t1\r151\t283.6979167\t1\r156\t290.1805556\t1\r";
+    assert_eq!(
+        ok(text),
+        vec![
+            [51.8, 267.0525397],
+            [151.0, 283.6979167],
+            [156.0, 290.1805556]
+        ]
+    );
+    assert_eq!(detect_format(text.as_bytes()), InputFormat::Text);
+}
+
+#[test]
+fn line_numbers_count_every_kind_of_line_end() {
+    // Lines: 1 "1 2" (CR), 2 "" (CRLF), 3 "# c" (LF), 4 "bad".
+    let kind = err_at("1 2\r\r\n# c\nbad 1\n", None, 4);
+    assert!(matches!(
+        kind,
+        ParseErrorKind::NotANumber { axis: Axis::X, .. }
+    ));
+}
+
+#[test]
+fn explicit_text_has_no_header() {
+    let kind = err_at("x y\n1 2\n", Some(InputFormat::Text), 1);
+    assert!(
+        matches!(kind, ParseErrorKind::NotANumber { axis: Axis::X, ref token } if token == "x")
+    );
+}
+
+// ----- CSV -----
+
+#[test]
+fn csv_with_and_without_header() {
+    let expected = vec![[1.0, 2.0], [3.5, -4.0]];
+    assert_eq!(ok("x,y\n1,2\n3.5,-4\n"), expected);
+    assert_eq!(ok("X, Y, label\r\n1, 2, a\r\n3.5, -4, b\r\n"), expected);
+    assert_eq!(ok("\"x\",\"y\"\n\"1\",\"2\"\n3.5,\"-4\"\n"), expected);
+    assert_eq!(
+        ok("# exported\nlongitude latitude\n1 2\n3.5 -4\n"),
+        expected
+    );
+    assert_eq!(ok("1,2\n3.5,-4\n"), expected);
+    assert_eq!(
+        parse_as("x,y\n1,2\n3.5,-4\n", InputFormat::Csv).unwrap(),
+        expected
+    );
+    assert_eq!(
+        parse_as("1,2\n3.5,-4\n", InputFormat::Csv).unwrap(),
+        expected
+    );
+    assert!(ok("x,y\n").is_empty());
+}
+
+#[test]
+fn header_only_on_the_first_line() {
+    let kind = err_at("x,y\n1,2\nx,y\n", None, 3);
+    assert!(matches!(kind, ParseErrorKind::NotANumber { .. }));
+    // A number word is not a header.
+    let kind = err_at("nan,1\n", None, 1);
+    assert!(matches!(
+        kind,
+        ParseErrorKind::NotFinite { axis: Axis::X, .. }
+    ));
+    // A line mixing words and numbers is not a header.
+    let kind = err_at("x,1\n", Some(InputFormat::Csv), 1);
+    assert!(matches!(
+        kind,
+        ParseErrorKind::NotANumber { axis: Axis::X, .. }
+    ));
+}
+
+// ----- .node / .gtn -----
+
+#[test]
+fn node_zero_based() {
+    let text = "3 2 0 0\n0 1.5 2\n1 3 4\n2 5 6\n";
+    let expected = vec![[1.5, 2.0], [3.0, 4.0], [5.0, 6.0]];
+    assert_eq!(ok(text), expected);
+    assert_eq!(parse_as(text, InputFormat::Node).unwrap(), expected);
+    assert_eq!(detect_format(text.as_bytes()), InputFormat::Node);
+}
+
+#[test]
+fn node_one_based_with_attributes_markers_and_comments() {
+    let text =
+        "# Triangle output\n3  2  1  1\n1 0 0 0.25 1 # corner\n\n2 1 0 0.5 0\n3 0 1 0.75 1\n";
+    let expected = vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+    assert_eq!(ok(text), expected);
+    assert_eq!(parse_as(text, InputFormat::Node).unwrap(), expected);
+}
+
+#[test]
+fn gtn_style_with_padding_tabs_and_crlf() {
+    let text = "     3 2 0 0\r\n0\t1.08701 17.0872\r\n     1\t3.20185 21.0835\r\n     2\t5 6\r\n";
+    assert_eq!(
+        ok(text),
+        vec![[1.08701, 17.0872], [3.20185, 21.0835], [5.0, 6.0]]
+    );
+}
+
+#[test]
+fn node_with_no_points() {
+    assert!(ok("0 2 0 0\n").is_empty());
+    assert!(parse_as("0 2 0 0\n", InputFormat::Node).unwrap().is_empty());
+    assert_eq!(detect_format(b"0 2 0 0\n"), InputFormat::Node);
+}
+
+#[test]
+fn four_integer_text_lines_are_not_mistaken_for_a_node_header() {
+    // Second line does not have the `index x y` shape the header asks for.
+    assert_eq!(ok("4 2 0 0\n5 6 0 0\n"), vec![[4.0, 2.0], [5.0, 6.0]]);
+    assert_eq!(ok("4 2 0 0\n7 6\n"), vec![[4.0, 2.0], [7.0, 6.0]]);
+    assert_eq!(ok("4 2 0 0\n"), vec![[4.0, 2.0]]);
+    assert_eq!(detect_format(b"4 2 0 0\n5 6 0 0\n"), InputFormat::Text);
+    // Not dimension 2, or a marker flag above 1: never a header.
+    assert_eq!(ok("3 3 0 0\n0 1 2\n"), vec![[3.0, 3.0], [0.0, 1.0]]);
+}
+
+#[test]
+fn node_header_mismatch() {
+    let node = Some(InputFormat::Node);
+    for header in [
+        "3 3 0 0",
+        "abc 2 0 0",
+        "3 2 0",
+        "3 2 0 2",
+        "3 2 0 0 0",
+        "-3 2 0 0",
+        "3.0 2 0 0",
+    ] {
+        let text = format!("{header}\n0 1 2\n1 3 4\n2 5 6\n");
+        let kind = err_at(&text, node, 1);
+        assert!(
+            matches!(kind, ParseErrorKind::NodeHeader { .. }),
+            "{header}"
+        );
+    }
+    let kind = err_at("# comment\n\n3 3 0 0\n", node, 3);
+    assert!(kind.to_string().contains("dimension is 3"), "{kind}");
+}
+
+#[test]
+fn node_count_mismatch() {
+    let kind = err_at("3 2 0 0\n0 1 2\n1 3 4\n", Some(InputFormat::Node), 1);
+    assert!(matches!(
+        kind,
+        ParseErrorKind::NodeTooFewPoints {
+            declared: 3,
+            found: 2
+        }
+    ));
+    let kind = err_at("2 2 0 0\n0 1 2\n1 3 4\n2 5 6\n", None, 4);
+    assert!(matches!(
+        kind,
+        ParseErrorKind::NodeTooManyPoints { declared: 2 }
+    ));
+}
+
+#[test]
+fn node_index_checks() {
+    let kind = err_at("2 2 0 0\n5 1 2\n6 3 4\n", Some(InputFormat::Node), 2);
+    assert!(matches!(
+        kind,
+        ParseErrorKind::NodeIndex { expected: None, .. }
+    ));
+    let kind = err_at("3 2 0 0\n1 1 2\n2 3 4\n2 5 6\n", None, 4);
+    assert!(matches!(
+        kind,
+        ParseErrorKind::NodeIndex {
+            expected: Some(3),
+            ..
+        }
+    ));
+    let kind = err_at("2 2 0 0\n0 1 2\none 3 4\n", None, 3);
+    assert!(matches!(kind, ParseErrorKind::NodeIndex { .. }));
+}
+
+#[test]
+fn node_point_line_problems() {
+    let kind = err_at("2 2 0 0\n0 1 2\n1 3\n", None, 3);
+    assert!(matches!(kind, ParseErrorKind::NodeFields { found: 2 }));
+    let kind = err_at("2 2 0 0\n0 1 2\n1 3 y\n", None, 3);
+    assert!(matches!(
+        kind,
+        ParseErrorKind::NotANumber { axis: Axis::Y, .. }
+    ));
+    let kind = err_at("2 2 0 0\n0 1 2\n1 nan 4\n", None, 3);
+    assert!(matches!(
+        kind,
+        ParseErrorKind::NotFinite { axis: Axis::X, .. }
+    ));
+}
+
+// ----- detection -----
+
+#[test]
+fn format_detection() {
+    assert_eq!(detect_format(b""), InputFormat::Text);
+    assert_eq!(detect_format(b"1 2\n"), InputFormat::Text);
+    assert_eq!(detect_format(b"1,2\n"), InputFormat::Csv);
+    assert_eq!(detect_format(b"x y\n1 2\n"), InputFormat::Csv);
+    assert_eq!(detect_format(b"\r\n# c\r\nx,y\r\n"), InputFormat::Csv);
+    assert_eq!(
+        detect_format(b"2 2 1 0\n1 0 0 7\n2 1 1 7\n"),
+        InputFormat::Node
+    );
+    assert_eq!(
+        format_from_path(Path::new("a/b.NODE")),
+        Some(InputFormat::Node)
+    );
+    assert_eq!(
+        format_from_path(Path::new("x.gtn")),
+        Some(InputFormat::Node)
+    );
+    assert_eq!(format_from_path(Path::new("x.csv")), Some(InputFormat::Csv));
+    assert_eq!(format_from_path(Path::new("x.p2d")), None);
+    assert_eq!(format_from_path(Path::new("noext")), None);
+}
+
+// ----- bad coordinates -----
+
+#[test]
+fn not_a_number() {
+    let kind = err_at("1 2\nfoo 3\n", None, 2);
+    assert!(
+        matches!(kind, ParseErrorKind::NotANumber { axis: Axis::X, ref token } if token == "foo")
+    );
+    let kind = err_at("1 2\n3 4\n5 6y\n", None, 3);
+    assert!(
+        matches!(kind, ParseErrorKind::NotANumber { axis: Axis::Y, ref token } if token == "6y")
+    );
+    let kind = err_at("1;2\n", None, 1);
+    assert!(matches!(kind, ParseErrorKind::NotANumber { .. }));
+    let kind = err_at("0x10 1\n", None, 1);
+    assert!(matches!(kind, ParseErrorKind::NotANumber { .. }));
+    let long = format!("1 2\n{} 1\n", "z".repeat(500));
+    let kind = err_at(&long, None, 2);
+    assert!(kind.to_string().len() < 200, "{kind}");
+}
+
+#[test]
+fn one_number_on_a_line() {
+    assert!(matches!(
+        err_at("1 2\n\n3\n", None, 3),
+        ParseErrorKind::MissingY
+    ));
+    assert!(matches!(err_at("3,\n", None, 1), ParseErrorKind::MissingY));
+    assert!(matches!(
+        err_at("3 # 4\n", None, 1),
+        ParseErrorKind::MissingY
+    ));
+}
+
+#[test]
+fn empty_fields() {
+    let kind = err_at("1,,2\n", None, 1);
+    assert!(matches!(kind, ParseErrorKind::EmptyField { axis: Axis::Y }));
+    let kind = err_at("1 2\n,2\n", None, 2);
+    assert!(matches!(kind, ParseErrorKind::EmptyField { axis: Axis::X }));
+    let kind = err_at("1, ,2\n", None, 1);
+    assert!(matches!(kind, ParseErrorKind::EmptyField { axis: Axis::Y }));
+}
+
+#[test]
+fn nan_and_infinity() {
+    for token in ["nan", "NaN", "inf", "-inf", "+Infinity"] {
+        let kind = err_at(&format!("1 2\n{token} 1\n"), None, 2);
+        assert!(
+            matches!(kind, ParseErrorKind::NotFinite { axis: Axis::X, .. }),
+            "{token}"
+        );
+        let kind = err_at(&format!("1 {token}\n"), None, 1);
+        assert!(
+            matches!(kind, ParseErrorKind::NotFinite { axis: Axis::Y, .. }),
+            "{token}"
+        );
+    }
+}
+
+#[test]
+fn exact_envelope() {
+    // The boundaries themselves are accepted.
+    assert_eq!(
+        ok("1.793662034335766e-43 -3.2138760885179806e60\n"),
+        vec![[2f64.powi(-142), -(2f64.powi(201))]]
+    );
+    for (token, small) in [
+        ("1e-300", true),
+        ("-1e-43", true),
+        ("5e-324", true),
+        ("1e-400", true),
+        ("0.0000e-999999", false),
+        ("1e61", false),
+        ("-1e300", false),
+        ("1e400", false),
+    ] {
+        let result = parse(&format!("0 0\n1 {token}\n"));
+        if token.starts_with("0.0000") {
+            assert!(result.is_ok(), "{token}");
+            continue;
+        }
+        let err = result.expect_err(token);
+        assert_eq!(err.line, Some(2));
+        if small {
+            assert!(
+                matches!(err.kind, ParseErrorKind::TooSmall { axis: Axis::Y, .. }),
+                "{token}"
+            );
+        } else {
+            assert!(
+                matches!(err.kind, ParseErrorKind::TooLarge { axis: Axis::Y, .. }),
+                "{token}"
+            );
+        }
+    }
+}
+
+// ----- binary and I/O -----
+
+#[test]
+fn binary_garbage() {
+    let err = read_points(&b"1 2\n3 4\n\x00\x01\x02"[..], None).unwrap_err();
+    assert_eq!(err.line, Some(3));
+    assert!(matches!(err.kind, ParseErrorKind::NulByte));
+
+    let err = read_points(&b"1 2\n\x89PNG\r\n\x1a\n"[..], None).unwrap_err();
+    assert_eq!(err.line, Some(2));
+    assert!(matches!(err.kind, ParseErrorKind::InvalidUtf8));
+
+    // UTF-16 text: NUL bytes on line 1.
+    let err = read_points(&b"\xff\xfe1\x00 \x002\x00"[..], None).unwrap_err();
+    assert_eq!(err.line, Some(1));
+    assert!(matches!(err.kind, ParseErrorKind::NulByte));
+
+    let long = vec![b'1'; 3 << 20];
+    let err = read_points(&long[..], None).unwrap_err();
+    assert_eq!(err.line, Some(1));
+    assert!(matches!(err.kind, ParseErrorKind::LineTooLong { .. }));
+}
+
+/// Gives `data`, then fails.
+struct FailingReader<'a> {
+    data: &'a [u8],
+}
+
+impl Read for FailingReader<'_> {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        if self.data.is_empty() {
+            return Err(io::Error::other("disk on fire"));
+        }
+        let n = buf.len().min(self.data.len());
+        buf[..n].copy_from_slice(&self.data[..n]);
+        self.data = &self.data[n..];
+        Ok(n)
+    }
+}
+
+#[test]
+fn io_error_names_the_line_being_read() {
+    let reader = BufReader::with_capacity(
+        4,
+        FailingReader {
+            data: b"1 2\n3 4\n5",
+        },
+    );
+    let err = read_points(reader, None).unwrap_err();
+    assert_eq!(err.line, Some(3));
+    assert!(matches!(err.kind, ParseErrorKind::Io(_)));
+    assert!(std::error::Error::source(&err).is_some());
+    assert_eq!(err.to_string(), "line 3: read error: disk on fire");
+}
+
+#[test]
+fn missing_file_has_no_line() {
+    let err = read_points_from_path(Path::new("/nonexistent/dir/points.txt")).unwrap_err();
+    assert_eq!(err.line, None);
+    assert!(matches!(err.kind, ParseErrorKind::Io(_)));
+    assert!(!err.to_string().starts_with("line"));
+}
+
+#[test]
+fn messages_are_one_line_and_name_the_problem() {
+    let cases: &[(&str, &str)] = &[
+        (
+            "1 2\nabc 3\n",
+            "line 2: x coordinate \"abc\" is not a number",
+        ),
+        ("7\n", "line 1: only one number on the line"),
+        (
+            "1 inf\n",
+            "line 1: y coordinate \"inf\" is not a finite number",
+        ),
+        (
+            "1e-200 0\n",
+            "line 1: x coordinate \"1e-200\" is non-zero but smaller",
+        ),
+        (
+            "1e100 0\n",
+            "line 1: x coordinate \"1e100\" is larger in magnitude",
+        ),
+        (
+            "2 2 0 0\n0 1 2\n",
+            "line 1: the .node header declares 2 points but the file has 1",
+        ),
+        (
+            "1 2 0 0\n0 1 2\n1 3 4\n",
+            "line 3: more points than the 1 declared",
+        ),
+    ];
+    for (text, start) in cases {
+        let message = parse(text).unwrap_err().to_string();
+        assert!(message.starts_with(start), "{message:?} vs {start:?}");
+        assert!(!message.contains('\n'));
+    }
+    let message = parse("1 \u{1b}[31m\n").unwrap_err().to_string();
+    assert!(!message.contains('\u{1b}'), "{message:?}");
+}
+
+// ----- reading from paths -----
+
+#[test]
+fn path_extension_forces_the_format() {
+    let dir = tempfile::tempdir().unwrap();
+    let node = dir.path().join("pts.node");
+    // Valid as text (two points with extra columns), but the extension says .node.
+    std::fs::write(&node, "4 2 0 0\n5 6 0 0\n").unwrap();
+    let err = read_points_from_path(&node).unwrap_err();
+    assert_eq!(err.line, Some(2));
+    let csv = dir.path().join("pts.csv");
+    std::fs::write(&csv, "a,b\r\n1,2\r\n").unwrap();
+    assert_eq!(read_points_from_path(&csv).unwrap(), vec![[1.0, 2.0]]);
+    let txt = dir.path().join("pts.txt");
+    std::fs::write(&txt, "2 2 0 0\n0 1 2\n1 3 4\n").unwrap();
+    assert_eq!(
+        read_points_from_path(&txt).unwrap(),
+        vec![[1.0, 2.0], [3.0, 4.0]]
+    );
+}
+
+proptest! {
+    #[test]
+    fn shortest_decimal_round_trips_exactly(
+        points in prop::collection::vec((-1e6f64..1e6, -1e6f64..1e6), 0..40),
+        ends in prop::sample::select(vec!["\n", "\r\n", "\r"]),
+        separator in prop::sample::select(vec![" ", "\t", ",", " , ", "  "]),
+    ) {
+        let mut text = String::new();
+        for &(x, y) in &points {
+            text.push_str(&format!("{x}{separator}{y}{ends}"));
+        }
+        let parsed = parse(&text).unwrap();
+        let expected: Vec<[f64; 2]> = points.iter().map(|&(x, y)| [x, y]).collect();
+        prop_assert_eq!(parsed, expected);
+    }
+
+    #[test]
+    fn arbitrary_bytes_never_panic(bytes in prop::collection::vec(any::<u8>(), 0..200)) {
+        if let Err(err) = read_points(&bytes[..], None) {
+            let message = err.to_string();
+            prop_assert!(!message.contains('\n') && !message.contains('\r'));
+        }
+    }
+
+    #[test]
+    fn arbitrary_text_lines_never_panic(
+        lines in prop::collection::vec("[0-9eE.,+\\- \t#a-z\"]{0,12}", 0..12),
+        format in prop::sample::select(vec![None, Some(InputFormat::Text), Some(InputFormat::Csv), Some(InputFormat::Node)]),
+    ) {
+        let text = lines.join("\n");
+        if let Err(err) = read_points(text.as_bytes(), format) {
+            prop_assert!(err.line.is_some());
+            prop_assert!(err.line.unwrap() <= lines.len().max(1));
+        }
+    }
+}
+
+// ----- the real data files -----
+
+/// The shared data directory, or `None` (with a note) when it is not there.
+fn data_dir() -> Option<PathBuf> {
+    let dir = PathBuf::from(
+        std::env::var_os("WDM_CRUST_DATA").unwrap_or_else(|| "/work/shared/data".into()),
+    );
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        eprintln!(
+            "note: {} is absent, skipping the real-data parse test",
+            dir.display()
+        );
+        None
+    }
+}
+
+#[test]
+fn real_data_files_have_their_documented_point_counts() {
+    let Some(dir) = data_dir() else { return };
+    let files: &[(&str, usize)] = &[
+        ("hnn-crust-sgp16/crocodile-conf.p2d", 129),
+        ("hnn-crust-sgp16/crocodile-conf.gtn", 129),
+        ("hnn-crust-sgp16/mushroom.p2d", 59),
+        ("hnn-crust-sgp16/ventilator.p2d", 194),
+        ("hnn-crust-sgp16/ventilator.gtn", 194),
+        ("fitconnect/data/apple_2percent_noise.txt", 170),
+        ("fitconnect/data/butterfly_2percent_noise.txt", 164),
+        ("fitconnect/data/crab_2percent_noise.txt", 284),
+        ("fitconnect/data/dolphin_2percent_noise.txt", 179),
+        ("fitconnect/data/fish.txt", 1000),
+        ("fitconnect/data/bot.txt", 1000),
+        ("fitconnect/data/Cup0.txt", 263),
+        ("fitconnect/data/Keyboard0.txt", 585),
+        ("fitconnect/data/Monitor0.txt", 915),
+        ("fitconnect/data/Mouse0.txt", 157),
+        ("stretchdenoise/data/Circle0.txt", 248),
+        ("stretchdenoise/data/drill.txt", 372),
+        ("stretchdenoise/data/drill2_xyz.txt", 372),
+        ("stretchdenoise/data/drill_xyz.txt", 408),
+        ("stretchdenoise/data/drillcase_xyz.txt", 611),
+        ("stretchdenoise/data/thing.txt", 343),
+        ("stretchdenoise/data/what_xyz.txt", 343),
+        ("stretchdenoise/data/vase.txt", 317),
+        ("stretchdenoise/data/vase2_xyz.txt", 317),
+        ("stretchdenoise/data/vase_xyz.txt", 329),
+        ("stretchdenoise/data/stair.xy", 160),
+        ("stretchdenoise/data/stair-noise00.xy", 160),
+        ("stretchdenoise/data/stair.xym", 160),
+        ("stretchdenoise/data/family.p2d", 9990),
+    ];
+    for &(name, count) in files {
+        let path = dir.join(name);
+        let points = read_points_from_path(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(points.len(), count, "{name}");
+        // Content detection agrees with the extension.
+        let head = std::fs::read(&path).unwrap();
+        let detected = read_points(&head[..], None).unwrap();
+        assert_eq!(detected, points, "{name}");
+    }
+    for stem in ["crocodile-conf", "ventilator"] {
+        let p2d = read_points_from_path(&dir.join(format!("hnn-crust-sgp16/{stem}.p2d"))).unwrap();
+        let gtn = read_points_from_path(&dir.join(format!("hnn-crust-sgp16/{stem}.gtn"))).unwrap();
+        assert_eq!(p2d, gtn, "{stem}: .gtn and .p2d hold the same points");
+        let head = std::fs::read(dir.join(format!("hnn-crust-sgp16/{stem}.gtn"))).unwrap();
+        assert_eq!(detect_format(&head), InputFormat::Node);
+    }
+    // The xyz variants hold the 2D points of their silhouettes in the first two columns.
+    let drill = read_points_from_path(&dir.join("stretchdenoise/data/drill.txt")).unwrap();
+    let drill2 = read_points_from_path(&dir.join("stretchdenoise/data/drill2_xyz.txt")).unwrap();
+    assert_eq!(drill, drill2);
+}

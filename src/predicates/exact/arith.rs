@@ -1,0 +1,362 @@
+//! The two number types every derived predicate is evaluated in.
+//!
+//! Each predicate's polynomial is written once, generic over [`Arith`], and evaluated first
+//! with [`Bounded`] (an `f64` value with a proven bound on its distance from the exact value)
+//! and, only when that bound cannot decide the sign, again with [`BigRational`] (exact).
+//!
+//! # The error bound of [`Bounded`]
+//!
+//! A `Bounded { v, e }` stands for a real number `x` with `|x − v| ≤ e`. Every input `f64` is
+//! exact (`e = 0`). For an operation `∘` on `a = (va, ea)` and `b = (vb, eb)` the result is
+//! `v = fl(va ∘ vb)` and
+//!
+//! * rounding: round-to-nearest gives `|fl(va ∘ vb) − va ∘ vb| ≤ u·|v|` with `u = 2^-53` when
+//!   `v` is normal; a subnormal product or quotient adds at most `2^-1075 < η = 2^-1074`
+//!   (sums are exact in the subnormal range). When both operands are exact the rounding error
+//!   is computed exactly instead (Knuth's TwoSum, Dekker's TwoProduct, in the ranges where
+//!   they are proven exact), so results that are exactly representable keep `e = 0`;
+//! * propagation: `ea + eb` for sums and differences, `|va|·eb + |vb|·ea + ea·eb` for products
+//!   (from `(va + α)(vb + β) − va·vb = va·β + vb·α + α·β`).
+//!
+//! The error terms themselves are sums and products of non-negative `f64`s; each such
+//! operation is rounded to nearest and then stepped one ulp up (`up`), which is an upper
+//! bound of the exact result (the exact value lies within half a gap of the rounded one), so
+//! `e` is a true upper bound, never an estimate. Overflow makes `v` or `e` infinite or NaN and
+//! the sign is then reported undecided. Hence: if `v` is finite and `|v| > e`, the exact value
+//! has the sign of `v`; if `v = e = 0`, the exact value is zero; otherwise the caller falls
+//! back to exact arithmetic.
+
+use num_bigint::Sign as BigSign;
+use num_rational::BigRational;
+use num_traits::{ToPrimitive, Zero};
+
+use super::Sign;
+
+/// Unit roundoff of `f64`: 2^-53.
+const U: f64 = f64::EPSILON / 2.0;
+/// Smallest positive subnormal: 2^-1074.
+const ETA: f64 = f64::MIN_POSITIVE * f64::EPSILON;
+/// Below this magnitude of a product, Dekker's TwoProduct is not proven exact (underflow).
+const TWO_PRODUCT_MIN: f64 = 1.2882297539194267e-271; // 2^-900
+/// Above this magnitude of a factor, Dekker's splitting could overflow.
+const TWO_PRODUCT_MAX_FACTOR: f64 = 1.0463951242053392e298; // 2^990
+/// Above this magnitude of a sum, TwoSum is not used (no overflow risk below it).
+const TWO_SUM_MAX: f64 = 1.0715086071862673e301; // 2^1000
+
+/// Ring operations shared by the filter type and the exact type.
+pub(super) trait Arith: Sized {
+    /// The exact value of a finite `f64` (non-finite inputs map to an unspecified value).
+    fn from_f64(x: f64) -> Self;
+    /// `self + other`.
+    fn add(&self, other: &Self) -> Self;
+    /// `self − other`.
+    fn sub(&self, other: &Self) -> Self;
+    /// `self · other`.
+    fn mul(&self, other: &Self) -> Self;
+    /// `2 · self`.
+    fn twice(&self) -> Self {
+        self.add(self)
+    }
+    /// The sign, if this representation can certify it.
+    fn sign(&self) -> Option<Sign>;
+}
+
+/// The smallest `f64` above `x`, for `x ≥ 0`; infinities and NaN are returned unchanged.
+#[inline]
+fn up(x: f64) -> f64 {
+    if x < f64::INFINITY {
+        if x == 0.0 {
+            ETA
+        } else {
+            f64::from_bits(x.to_bits() + 1)
+        }
+    } else {
+        x
+    }
+}
+
+/// An upper bound of `x + y` for `x, y ≥ 0` (exact zero stays zero).
+#[inline]
+fn add_up(x: f64, y: f64) -> f64 {
+    let s = x + y;
+    if s == 0.0 {
+        0.0
+    } else {
+        up(s)
+    }
+}
+
+/// An upper bound of `x · y` for `x, y ≥ 0` (a zero factor gives an exact zero).
+#[inline]
+fn mul_up(x: f64, y: f64) -> f64 {
+    if x == 0.0 || y == 0.0 {
+        0.0
+    } else {
+        up(x * y)
+    }
+}
+
+/// A lower bound of `x − y` for `x ≥ y ≥ 0`, or `None` if it is not certainly positive.
+#[inline]
+fn sub_down_positive(x: f64, y: f64) -> Option<f64> {
+    let d = x - y;
+    if d > 0.0 && d < f64::INFINITY {
+        // The exact difference is above the predecessor of its rounding.
+        let below = f64::from_bits(d.to_bits() - 1);
+        (below > 0.0).then_some(below)
+    } else {
+        None
+    }
+}
+
+/// An upper bound of `x / y` for `x ≥ 0`, `y > 0`.
+#[inline]
+fn div_up(x: f64, y: f64) -> f64 {
+    if x == 0.0 {
+        0.0
+    } else {
+        up(x / y)
+    }
+}
+
+/// Dekker's splitting of `x` into two halves of at most 26 significant bits.
+#[inline]
+fn split(x: f64) -> (f64, f64) {
+    const SPLITTER: f64 = 134_217_729.0; // 2^27 + 1
+    let c = SPLITTER * x;
+    let hi = c - (c - x);
+    (hi, x - hi)
+}
+
+/// The exact rounding error `a·b − p` of `p = fl(a·b)`, if it is proven exact here.
+#[inline]
+fn two_product_error(a: f64, b: f64, p: f64) -> Option<f64> {
+    if a == 0.0 || b == 0.0 {
+        return Some(0.0);
+    }
+    let ok = a.abs() < TWO_PRODUCT_MAX_FACTOR
+        && b.abs() < TWO_PRODUCT_MAX_FACTOR
+        && p.abs() >= TWO_PRODUCT_MIN
+        && p.is_finite();
+    if !ok {
+        return None;
+    }
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    let err1 = p - ah * bh;
+    let err2 = err1 - al * bh;
+    let err3 = err2 - ah * bl;
+    Some(al * bl - err3)
+}
+
+/// A real number known to lie within `e` of the `f64` value `v` (see the module docs).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Bounded {
+    /// The floating-point approximation.
+    pub(super) v: f64,
+    /// A rigorous upper bound of the distance between `v` and the exact value.
+    pub(super) e: f64,
+}
+
+impl Bounded {
+    /// `self + other` where `other` enters with the given sign (`±1`).
+    #[inline]
+    fn add_signed(&self, other: &Bounded, negate: bool) -> Bounded {
+        let b = if negate { -other.v } else { other.v };
+        // An exact zero operand leaves the other one unchanged.
+        if other.v == 0.0 && other.e == 0.0 {
+            return *self;
+        }
+        if self.v == 0.0 && self.e == 0.0 {
+            return Bounded { v: b, e: other.e };
+        }
+        let v = self.v + b;
+        if self.e == 0.0 && other.e == 0.0 && v.abs() < TWO_SUM_MAX {
+            // Knuth's TwoSum: the exact rounding error of `v` (no overflow below 2^1000).
+            let bv = v - self.v;
+            let err = (self.v - (v - bv)) + (b - bv);
+            return Bounded { v, e: err.abs() };
+        }
+        let rounding = mul_up(U, v.abs());
+        Bounded {
+            v,
+            e: add_up(add_up(self.e, other.e), rounding),
+        }
+    }
+
+    /// `self / other`, or `None` if `other` is not certainly non-zero.
+    pub(super) fn div(&self, other: &Bounded) -> Option<Bounded> {
+        let den = sub_down_positive(other.v.abs(), other.e)?;
+        if self.v == 0.0 && self.e == 0.0 {
+            return Some(*self);
+        }
+        let q = self.v / other.v;
+        if !q.is_finite() {
+            return None;
+        }
+        // |q − va/vb| ≤ u|q| + η, so |va/vb| ≤ |q| + u|q| + η.
+        let rounding = add_up(mul_up(U, q.abs()), ETA);
+        let quotient_bound = add_up(q.abs(), rounding);
+        // |x/y − va/vb| = |(x − va)·vb − va·(y − vb)| / |y·vb| ≤ (ea + |va/vb|·eb) / (|vb| − eb).
+        let propagated = div_up(add_up(self.e, mul_up(quotient_bound, other.e)), den);
+        Some(Bounded {
+            v: q,
+            e: add_up(propagated, rounding),
+        })
+    }
+}
+
+impl Arith for Bounded {
+    #[inline]
+    fn from_f64(x: f64) -> Self {
+        Bounded { v: x, e: 0.0 }
+    }
+
+    #[inline]
+    fn add(&self, other: &Self) -> Self {
+        self.add_signed(other, false)
+    }
+
+    #[inline]
+    fn sub(&self, other: &Self) -> Self {
+        self.add_signed(other, true)
+    }
+
+    #[inline]
+    fn mul(&self, other: &Self) -> Self {
+        let (a, b) = (self.v, other.v);
+        let v = a * b;
+        let exact_error = if self.e == 0.0 && other.e == 0.0 {
+            two_product_error(a, b, v)
+        } else {
+            None
+        };
+        let rounding = match exact_error {
+            Some(err) => err.abs(),
+            None if v.abs() >= f64::MIN_POSITIVE => mul_up(U, v.abs()),
+            None if a == 0.0 || b == 0.0 => 0.0,
+            None => ETA,
+        };
+        let propagated = add_up(
+            add_up(mul_up(a.abs(), other.e), mul_up(b.abs(), self.e)),
+            mul_up(self.e, other.e),
+        );
+        Bounded {
+            v,
+            e: add_up(propagated, rounding),
+        }
+    }
+
+    #[inline]
+    fn sign(&self) -> Option<Sign> {
+        if self.v.is_finite() && self.v.abs() > self.e {
+            Some(if self.v > 0.0 {
+                Sign::Positive
+            } else {
+                Sign::Negative
+            })
+        } else if self.v == 0.0 && self.e == 0.0 {
+            Some(Sign::Zero)
+        } else {
+            None
+        }
+    }
+}
+
+impl Arith for BigRational {
+    fn from_f64(x: f64) -> Self {
+        BigRational::from_float(x).unwrap_or_else(BigRational::zero)
+    }
+
+    fn add(&self, other: &Self) -> Self {
+        self + other
+    }
+
+    fn sub(&self, other: &Self) -> Self {
+        self - other
+    }
+
+    fn mul(&self, other: &Self) -> Self {
+        self * other
+    }
+
+    fn sign(&self) -> Option<Sign> {
+        Some(rational_sign(self))
+    }
+}
+
+/// The exact sign of a rational.
+pub(super) fn rational_sign(x: &BigRational) -> Sign {
+    // The denominator of a `Ratio` is kept positive.
+    match x.numer().sign() {
+        BigSign::Minus => Sign::Negative,
+        BigSign::NoSign => Sign::Zero,
+        BigSign::Plus => Sign::Positive,
+    }
+}
+
+/// `2^k` for `k` in `-1074..=1023` (exactly representable).
+pub(super) fn pow2(k: i32) -> f64 {
+    if k >= -1022 {
+        f64::from_bits(((k + 1023) as u64) << 52)
+    } else {
+        f64::from_bits(1u64 << (k + 1074).max(0))
+    }
+}
+
+/// The unit in the last place of a finite `v`: the gap from `|v|` to the next larger `f64`.
+pub(super) fn ulp(v: f64) -> f64 {
+    let a = v.abs();
+    f64::from_bits(a.to_bits() + 1) - a
+}
+
+/// `x` rounded to the nearest `f64`, ties to even (infinite beyond the `f64` range).
+pub(super) fn rational_to_f64(x: &BigRational) -> f64 {
+    let negative = x.numer().sign() == BigSign::Minus;
+    let signed = |m: f64| if negative { -m } else { m };
+    let n = x.numer().magnitude();
+    let d = x.denom().magnitude();
+    if n.is_zero() {
+        return 0.0;
+    }
+    // |x| lies in [2^(e0 − 1), 2^(e0 + 1)).
+    let e0 = n.bits() as i64 - d.bits() as i64;
+    if e0 > 1025 {
+        return signed(f64::INFINITY);
+    }
+    if e0 < -1080 {
+        return signed(0.0);
+    }
+    // q = floor(|x| · 2^s) has 55 or 56 bits; `sticky` tells whether the floor dropped anything.
+    let s = 55 - e0;
+    let (num, den) = if s >= 0 {
+        (n << (s as usize), d.clone())
+    } else {
+        (n.clone(), d << ((-s) as usize))
+    };
+    let q = &num / &den;
+    let r = &num - &q * &den;
+    let Some(q) = q.to_u64() else {
+        return signed(f64::NAN); // unreachable: q < 2^56
+    };
+    let sticky = !r.is_zero();
+    let q_bits = 64 - i64::from(q.leading_zeros());
+    let exponent = q_bits - 1 - s; // floor(log2 |x|)
+    if exponent > 1023 {
+        return signed(f64::INFINITY);
+    }
+    // The result is a multiple of 2^(exponent − 52), or of 2^-1074 when subnormal.
+    let quantum = exponent.max(-1022) - 52;
+    let shift = quantum + s; // ≥ 2
+    if shift >= 60 {
+        return signed(0.0); // |x| < 2^-1076: below half the smallest subnormal
+    }
+    let kept = q >> shift;
+    let dropped = q & ((1u64 << shift) - 1);
+    let half = 1u64 << (shift - 1);
+    let round_up = dropped > half || (dropped == half && (sticky || kept & 1 == 1));
+    // The mantissa is at most 2^53 (exact as f64) and `quantum` lies in -1074..=971: the
+    // product is exact or overflows to infinity, as rounding to nearest requires.
+    let mantissa = kept + u64::from(round_up);
+    signed(mantissa as f64 * pow2(quantum as i32))
+}

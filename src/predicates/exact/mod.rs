@@ -1,0 +1,713 @@
+//! Exact predicates on constructed points: circumcenters of triangles with `f64` vertices.
+//!
+//! The water-flow labeling decides things about Voronoi vertices, which are circumcenters
+//! and not input points: on which side of a line a circumcenter lies
+//! ([`orient2d_circumcenter`]), on which side of the line through a sample orthogonal to its
+//! source direction ([`dot_sign_circumcenters`]), which of two circumradii is larger
+//! ([`compare_circumradius`]) and whether a circumcenter lies in the convex hull
+//! ([`circumcenter_in_convex_hull`]). Every answer here is the one exact arithmetic on the
+//! `f64` inputs gives.
+//!
+//! # Method
+//!
+//! Each predicate is one polynomial in the input coordinates, written once and evaluated in
+//! two number types. Divisions are avoided: with the triangle translated to its first vertex
+//! `t0`, `b = t1 − t0`, `c = t2 − t0`, the circumcenter is `O = t0 + (ux, uy) / d` with
+//! `d = 2 (bx·cy − by·cx)`, `ux = cy·|b|² − by·|c|²`, `uy = bx·|c|² − cx·|b|²`; a predicate on
+//! `O − p` is evaluated on `d·(O − p) = d·(t0 − p) + u` and its sign corrected by the sign of
+//! `d`, which is the triangle's orientation.
+//!
+//! 1. The filter evaluates the polynomial in `f64` together with a rigorous bound `e` on the
+//!    distance between the computed value `v` and the exact one: standard-model rounding
+//!    `|fl(x∘y) − x∘y| ≤ 2^-53·|fl(x∘y)|` (plus `2^-1074` per product or quotient for
+//!    underflow), propagated through every operation, with the bound itself computed with
+//!    upward rounding. If `|v| > e` the exact value has the sign of `v`.
+//! 2. Otherwise the same polynomial is evaluated exactly: all `f64` inputs of the call are
+//!    written as integers times one common power of two (every `f64` is a dyadic rational),
+//!    so exact rational arithmetic reduces to [`BigInt`] arithmetic with a single
+//!    normalization for constructed [`BigRational`] results.
+//!
+//! Before filtering, the points of one predicate call are scaled together by a power of two
+//! (exactly, and only when their magnitudes are far from 1), which leaves every sign unchanged
+//! and keeps the degree-10 radius comparison from overflowing or underflowing anywhere in the
+//! input envelope `|x| ∈ {0} ∪ [2^-142, 2^201]`. Exact zeros (right angles, cocircular and
+//! symmetric configurations) are certified by the filter only when every operation was exact
+//! in `f64`; otherwise they take the exact path. [`fallback_counts`] reports how often that
+//! happens.
+//!
+//! # Degenerate input
+//!
+//! A collinear triangle (including one with repeated vertices) has no circumcenter: every
+//! predicate then returns an unspecified answer, deterministically and without panicking.
+//! The same holds for non-finite coordinates. No function here panics on any input.
+//!
+//! ```
+//! use std::cmp::Ordering;
+//! use wdm_crust::predicates::exact::{circumcenter, compare_circumradius};
+//!
+//! // A right triangle: the circumcenter is the midpoint of the hypotenuse.
+//! assert_eq!(circumcenter([0.0, 0.0], [4.0, 0.0], [0.0, 2.0]), Some([2.0, 1.0]));
+//! // Congruent triangles (one translated and reflected) have equal circumradii.
+//! let t1 = [[0.0, 0.0], [3.0, 0.0], [1.0, 2.0]];
+//! let t2 = [[10.0, 5.0], [10.0, 8.0], [12.0, 6.0]];
+//! assert_eq!(compare_circumradius(t1, t2), Ordering::Equal);
+//! ```
+
+mod arith;
+
+use std::cmp::Ordering;
+use std::sync::atomic::{AtomicU64, Ordering as AtomicOrdering};
+
+use num_rational::BigRational;
+use num_traits::Zero;
+
+use num_bigint::BigInt;
+
+use self::arith::{
+    integer_sign, lift_exact, lift_filter, pow2, rational_to_f64, ulp, Arith, Bounded,
+};
+use super::{orient2d, Orientation};
+
+/// The sign of an exactly evaluated expression.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Sign {
+    /// Strictly below zero.
+    Negative,
+    /// Exactly zero.
+    Zero,
+    /// Strictly above zero.
+    Positive,
+}
+
+impl Sign {
+    /// The sign of a product.
+    fn times(self, other: Sign) -> Sign {
+        match (self, other) {
+            (Sign::Zero, _) | (_, Sign::Zero) => Sign::Zero,
+            (a, b) if a == b => Sign::Positive,
+            _ => Sign::Negative,
+        }
+    }
+}
+
+/// Where a point lies relative to a closed convex polygon.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum HullPosition {
+    /// In the interior.
+    Inside,
+    /// Exactly on the boundary (an edge or a vertex).
+    OnBoundary,
+    /// Strictly outside.
+    Outside,
+}
+
+/// A point with exact rational coordinates, such as a circumcenter of `f64` points.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ExactPoint {
+    /// The x coordinate.
+    pub x: BigRational,
+    /// The y coordinate.
+    pub y: BigRational,
+}
+
+impl ExactPoint {
+    /// Both coordinates correctly rounded to the nearest `f64` (ties to even); a coordinate
+    /// beyond the `f64` range becomes infinite.
+    ///
+    /// ```
+    /// use wdm_crust::predicates::exact::circumcenter_exact;
+    /// let o = circumcenter_exact([0.0, 0.0], [1.0, 0.0], [0.0, 3.0]).unwrap();
+    /// assert_eq!(o.to_f64(), [0.5, 1.5]);
+    /// ```
+    pub fn to_f64(&self) -> [f64; 2] {
+        [rational_to_f64(&self.x), rational_to_f64(&self.y)]
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Fallback statistics.
+
+/// How often one predicate was called and how often its filter could not decide.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct PredicateCounts {
+    /// Number of calls.
+    pub calls: u64,
+    /// Number of calls that needed exact rational arithmetic.
+    pub exact: u64,
+}
+
+/// Global call and exact-fallback counts of the filtered predicates, since the start of the
+/// process or the last [`reset_fallback_counts`].
+///
+/// The counters are relaxed atomics shared by all threads, so a snapshot taken while other
+/// threads run predicates mixes their calls in.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct FallbackCounts {
+    /// [`orient2d_circumcenter`] (direct calls only, not those made by the hull test).
+    pub orient2d_circumcenter: PredicateCounts,
+    /// [`dot_sign_circumcenters`].
+    pub dot_sign_circumcenters: PredicateCounts,
+    /// [`compare_circumradius`].
+    pub compare_circumradius: PredicateCounts,
+    /// [`circumcenter_in_convex_hull`]; a call counts as exact if any of its orientation
+    /// tests needed exact arithmetic.
+    pub circumcenter_in_convex_hull: PredicateCounts,
+    /// [`circumcenter`]; a call counts as exact if the coordinates were rounded from the exact
+    /// circumcenter.
+    pub circumcenter: PredicateCounts,
+}
+
+impl FallbackCounts {
+    /// The counts accumulated between `earlier` and `self` (saturating at zero).
+    pub fn since(&self, earlier: &FallbackCounts) -> FallbackCounts {
+        let d = |a: PredicateCounts, b: PredicateCounts| PredicateCounts {
+            calls: a.calls.saturating_sub(b.calls),
+            exact: a.exact.saturating_sub(b.exact),
+        };
+        FallbackCounts {
+            orient2d_circumcenter: d(self.orient2d_circumcenter, earlier.orient2d_circumcenter),
+            dot_sign_circumcenters: d(self.dot_sign_circumcenters, earlier.dot_sign_circumcenters),
+            compare_circumradius: d(self.compare_circumradius, earlier.compare_circumradius),
+            circumcenter_in_convex_hull: d(
+                self.circumcenter_in_convex_hull,
+                earlier.circumcenter_in_convex_hull,
+            ),
+            circumcenter: d(self.circumcenter, earlier.circumcenter),
+        }
+    }
+}
+
+struct Counter {
+    calls: AtomicU64,
+    exact: AtomicU64,
+}
+
+impl Counter {
+    const fn new() -> Counter {
+        Counter {
+            calls: AtomicU64::new(0),
+            exact: AtomicU64::new(0),
+        }
+    }
+
+    fn call(&self) {
+        self.calls.fetch_add(1, AtomicOrdering::Relaxed);
+    }
+
+    fn fallback(&self) {
+        self.exact.fetch_add(1, AtomicOrdering::Relaxed);
+    }
+
+    fn read(&self) -> PredicateCounts {
+        PredicateCounts {
+            calls: self.calls.load(AtomicOrdering::Relaxed),
+            exact: self.exact.load(AtomicOrdering::Relaxed),
+        }
+    }
+
+    fn reset(&self) {
+        self.calls.store(0, AtomicOrdering::Relaxed);
+        self.exact.store(0, AtomicOrdering::Relaxed);
+    }
+}
+
+static ORIENT: Counter = Counter::new();
+static DOT: Counter = Counter::new();
+static RADIUS: Counter = Counter::new();
+static HULL: Counter = Counter::new();
+static CIRCUMCENTER: Counter = Counter::new();
+
+/// A snapshot of the global call and exact-fallback counters.
+///
+/// ```
+/// use wdm_crust::predicates::exact::{fallback_counts, orient2d_circumcenter};
+/// let before = fallback_counts();
+/// orient2d_circumcenter([5.0, 0.0], [5.0, 1.0], [[0.0, 0.0], [3.0, 0.0], [0.0, 4.0]]);
+/// let delta = fallback_counts().since(&before);
+/// assert!(delta.orient2d_circumcenter.calls >= 1);
+/// ```
+pub fn fallback_counts() -> FallbackCounts {
+    FallbackCounts {
+        orient2d_circumcenter: ORIENT.read(),
+        dot_sign_circumcenters: DOT.read(),
+        compare_circumradius: RADIUS.read(),
+        circumcenter_in_convex_hull: HULL.read(),
+        circumcenter: CIRCUMCENTER.read(),
+    }
+}
+
+/// Sets all counters of [`fallback_counts`] to zero.
+pub fn reset_fallback_counts() {
+    for c in [&ORIENT, &DOT, &RADIUS, &HULL, &CIRCUMCENTER] {
+        c.reset();
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The polynomials, generic over the number type.
+
+/// The circumcenter of `t` in homogeneous form relative to `t[0]`: `O = t[0] + (ux, uy) / d`.
+struct Circ<T> {
+    /// `2 (bx·cy − by·cx)` with `b = t1 − t0`, `c = t2 − t0`: positive iff `t` is CCW.
+    d: T,
+    ux: T,
+    uy: T,
+}
+
+/// A point in the number type `T`.
+type Pt<T> = [T; 2];
+
+fn diff<T: Arith>(p: &Pt<T>, q: &Pt<T>) -> Pt<T> {
+    [p[0].sub(&q[0]), p[1].sub(&q[1])]
+}
+
+fn norm2<T: Arith>(v: &Pt<T>) -> T {
+    v[0].mul(&v[0]).add(&v[1].mul(&v[1]))
+}
+
+fn cross<T: Arith>(v: &Pt<T>, w: &Pt<T>) -> T {
+    v[0].mul(&w[1]).sub(&v[1].mul(&w[0]))
+}
+
+fn circ<T: Arith>(t: &[Pt<T>; 3]) -> Circ<T> {
+    let b = diff(&t[1], &t[0]);
+    let c = diff(&t[2], &t[0]);
+    let b2 = norm2(&b);
+    let c2 = norm2(&c);
+    Circ {
+        d: cross(&b, &c).twice(),
+        ux: c[1].mul(&b2).sub(&b[1].mul(&c2)),
+        uy: b[0].mul(&c2).sub(&c[0].mul(&b2)),
+    }
+}
+
+/// `d·(O − p)` for the circumcenter `O = t0 + u/d` described by `c`.
+fn scaled_offset<T: Arith>(c: &Circ<T>, t0: &Pt<T>, p: &Pt<T>) -> Pt<T> {
+    let [dx, dy] = diff(t0, p);
+    [c.d.mul(&dx).add(&c.ux), c.d.mul(&dy).add(&c.uy)]
+}
+
+/// `[d, (b − a) × d·(O − a)]` (degrees 2 and 4): the orientation of `(a, b, O)` is the sign
+/// of the product.
+fn orient_terms<T: Arith>(a: &Pt<T>, b: &Pt<T>, tri: &[Pt<T>; 3]) -> [T; 2] {
+    let c = circ(tri);
+    let n = scaled_offset(&c, &tri[0], a);
+    let v = cross(&diff(b, a), &n);
+    [c.d, v]
+}
+
+/// `[d_s, d_o, d_s·(O_s − p) · d_o·(O_o − p)]` (degrees 2, 2 and 6).
+fn dot_terms<T: Arith>(p: &Pt<T>, source: &[Pt<T>; 3], other: &[Pt<T>; 3]) -> [T; 3] {
+    let cs = circ(source);
+    let co = circ(other);
+    let ns = scaled_offset(&cs, &source[0], p);
+    let no = scaled_offset(&co, &other[0], p);
+    let v = ns[0].mul(&no[0]).add(&ns[1].mul(&no[1]));
+    [cs.d, co.d, v]
+}
+
+/// `(|t1 − t0|²·|t2 − t0|²·|t2 − t1|², d²)`: the squared circumradius is their quotient
+/// (`R = |a||b||c| / (4·area)` and `|d| = 4·area`).
+fn radius_parts<T: Arith>(t: &[Pt<T>; 3]) -> (T, T) {
+    let b = diff(&t[1], &t[0]);
+    let c = diff(&t[2], &t[0]);
+    let a = diff(&t[2], &t[1]);
+    let n = norm2(&b).mul(&norm2(&c)).mul(&norm2(&a));
+    let d = cross(&b, &c).twice();
+    (n, d.mul(&d))
+}
+
+/// `R1²·(d1²·d2²) − R2²·(d1²·d2²)` (degree 10), the sign of `R1 − R2`.
+fn radius_terms<T: Arith>(t1: &[Pt<T>; 3], t2: &[Pt<T>; 3]) -> [T; 1] {
+    let (n1, dd1) = radius_parts(t1);
+    let (n2, dd2) = radius_parts(t2);
+    [n1.mul(&dd2).sub(&n2.mul(&dd1))]
+}
+
+// ---------------------------------------------------------------------------------------
+// Filter driver.
+
+/// Magnitudes in this range are evaluated unscaled: even degree-10 terms of coordinate
+/// differences then stay far from overflow, and far from underflow unless the differences
+/// themselves are tiny.
+const UNSCALED_MIN: f64 = 9.094947017729282e-13; // 2^-40
+const UNSCALED_MAX: f64 = 1099511627776.0; // 2^40
+
+/// Scales all points by one power of two `2^-k` such that the largest coordinate magnitude
+/// falls in `[1, 2)`, when their magnitudes are outside `[2^-40, 2^40]` and the scaling is
+/// exact for every coordinate. Returns the points and `k` (original = scaled · 2^k).
+fn normalize<const N: usize>(points: [[f64; 2]; N]) -> ([[f64; 2]; N], i32) {
+    let max = points.iter().flatten().fold(0.0f64, |m, c| m.max(c.abs()));
+    if !max.is_finite() || max == 0.0 || (UNSCALED_MIN..=UNSCALED_MAX).contains(&max) {
+        return (points, 0);
+    }
+    // floor(log2 max); -1023 for subnormals, whose scaled value is then below 2.
+    let k = ((max.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    let (down, back) = (pow2(-k), pow2(k));
+    let mut scaled = points;
+    for p in scaled.iter_mut() {
+        for c in p.iter_mut() {
+            let s = *c * down;
+            // Scaling up by 2^k is exact here, so a round trip detects any rounding.
+            if s * back != *c {
+                return (points, 0);
+            }
+            *c = s;
+        }
+    }
+    (scaled, k)
+}
+
+/// The signs of `terms` evaluated by the filter on `filtered`, or else exactly on `exact`.
+/// Returns the signs and whether the exact path ran.
+fn signs<const K: usize>(
+    filtered: [Bounded; K],
+    exact: impl FnOnce() -> [BigInt; K],
+) -> ([Sign; K], bool) {
+    let mut out = [Sign::Zero; K];
+    let mut decided = true;
+    for (o, b) in out.iter_mut().zip(filtered.iter()) {
+        match b.sign() {
+            Some(s) => *o = s,
+            None => decided = false,
+        }
+    }
+    if decided {
+        return (out, false);
+    }
+    let values = exact();
+    for (o, v) in out.iter_mut().zip(values.iter()) {
+        *o = integer_sign(v);
+    }
+    (out, true)
+}
+
+/// Puts `p` first if it is a vertex of `t` (a cyclic shift keeps the orientation): the
+/// translation `t0 − p` is then an exact zero and the filter sharper.
+fn rotate_to(t: [[f64; 2]; 3], p: [f64; 2]) -> [[f64; 2]; 3] {
+    if t[1] == p {
+        [t[1], t[2], t[0]]
+    } else if t[2] == p {
+        [t[2], t[0], t[1]]
+    } else {
+        t
+    }
+}
+
+fn orientation_of(s: Sign) -> Orientation {
+    match s {
+        Sign::Positive => Orientation::CounterClockwise,
+        Sign::Negative => Orientation::Clockwise,
+        Sign::Zero => Orientation::Collinear,
+    }
+}
+
+/// Orientation of `(a, b, O(tri))`, `None` if `tri` is collinear; and whether the exact path ran.
+fn orient_circumcenter_impl(
+    a: [f64; 2],
+    b: [f64; 2],
+    tri: [[f64; 2]; 3],
+) -> (Option<Orientation>, bool) {
+    let tri = rotate_to(tri, a);
+    let points = [a, b, tri[0], tri[1], tri[2]];
+    let [fa, fb, f0, f1, f2] = lift_filter(normalize(points).0);
+    let ([d, v], exact) = signs(orient_terms(&fa, &fb, &[f0, f1, f2]), || {
+        let ([ea, eb, e0, e1, e2], _) = lift_exact(points);
+        orient_terms(&ea, &eb, &[e0, e1, e2])
+    });
+    if d == Sign::Zero {
+        return (None, exact);
+    }
+    (Some(orientation_of(v.times(d))), exact)
+}
+
+// ---------------------------------------------------------------------------------------
+// Public predicates and constructions.
+
+/// The exact circumcenter of `a, b, c`, or `None` iff they are collinear (or a coordinate is
+/// not finite).
+///
+/// ```
+/// use num_rational::BigRational;
+/// use wdm_crust::predicates::exact::circumcenter_exact;
+/// let o = circumcenter_exact([0.0, 0.0], [1.0, 0.0], [0.0, 1.0]).unwrap();
+/// assert_eq!(o.x, BigRational::from_float(0.5).unwrap());
+/// assert!(circumcenter_exact([0.0, 0.0], [1.0, 1.0], [2.0, 2.0]).is_none());
+/// ```
+pub fn circumcenter_exact(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<ExactPoint> {
+    if [a, b, c].iter().flatten().any(|x| !x.is_finite()) {
+        return None;
+    }
+    // In integer units of 2^shift: O = t0 + u/d.
+    let ([t0, t1, t2], shift) = lift_exact([a, b, c]);
+    let circ = circ(&[t0.clone(), t1, t2]);
+    if circ.d.is_zero() {
+        return None;
+    }
+    let coordinate = |t: &BigInt, u: &BigInt| {
+        let numer = t * &circ.d + u;
+        if shift >= 0 {
+            BigRational::new(numer << shift.unsigned_abs(), circ.d.clone())
+        } else {
+            BigRational::new(numer, &circ.d << shift.unsigned_abs())
+        }
+    };
+    Some(ExactPoint {
+        x: coordinate(&t0[0], &circ.ux),
+        y: coordinate(&t0[1], &circ.uy),
+    })
+}
+
+/// The fast path accepts a circumcenter coordinate whose proven error is at most this many
+/// units in the last place (a relative error below 2^-44); otherwise the exact circumcenter
+/// is rounded. The running bound is pessimistic: on well-shaped triangles it is typically
+/// 2–20 ulps while the actual error is about one.
+const CIRCUMCENTER_ULPS: f64 = 256.0;
+
+/// One coordinate `t0 + u/d` of the circumcenter from scaled filter values, rescaled by
+/// `2^k`, if its proven error is at most [`CIRCUMCENTER_ULPS`] ulps.
+fn fast_coordinate(u: &Bounded, d: &Bounded, t0: f64, k: i32) -> Option<f64> {
+    let o = Bounded::from_f64(t0).add(&u.div(d)?);
+    if o.v == 0.0 && o.e == 0.0 {
+        return Some(0.0);
+    }
+    let v = o.v * pow2(k);
+    // Both `o.v` and `v` normal: the rescaling is exact and scales the ulp by the same 2^k.
+    let normal = o.v.is_normal() && v.is_normal();
+    (normal && o.e <= CIRCUMCENTER_ULPS * ulp(o.v)).then_some(v)
+}
+
+/// The circumcenter of `a, b, c` in `f64`, or `None` iff they are exactly collinear.
+///
+/// The result is within 256 units in the last place (relative error below 2^-44) of the exact
+/// circumcenter, as proven by the running error bound of a formula translated to `a` with a
+/// single division; where that bound is larger (nearly collinear triangles, a circumcenter
+/// much closer to the origin than to `a`) the exact circumcenter is computed and correctly
+/// rounded instead. A coordinate beyond the `f64` range (a nearly collinear triangle of huge
+/// points) is infinite.
+///
+/// ```
+/// use wdm_crust::predicates::exact::circumcenter;
+/// assert_eq!(circumcenter([1.0, 1.0], [3.0, 1.0], [1.0, 5.0]), Some([2.0, 3.0]));
+/// assert_eq!(circumcenter([0.0, 0.0], [1.0, 2.0], [2.0, 4.0]), None);
+/// ```
+pub fn circumcenter(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<[f64; 2]> {
+    CIRCUMCENTER.call();
+    let ([sa, sb, sc], k) = normalize([a, b, c]);
+    let circ = circ(&lift_filter([sa, sb, sc]));
+    match circ.d.sign() {
+        Some(Sign::Zero) => return None,
+        Some(_) => {
+            let x = fast_coordinate(&circ.ux, &circ.d, sa[0], k);
+            let y = fast_coordinate(&circ.uy, &circ.d, sa[1], k);
+            if let (Some(x), Some(y)) = (x, y) {
+                return Some([x, y]);
+            }
+        }
+        None => {}
+    }
+    CIRCUMCENTER.fallback();
+    circumcenter_exact(a, b, c).map(|o| o.to_f64())
+}
+
+/// Exact orientation of `(a, b, O)` where `O` is the circumcenter of `tri`: on which side of
+/// the directed line `a → b` the circumcenter lies.
+///
+/// `tri` may be given in either orientation. If `tri` is collinear (no circumcenter) the
+/// answer is unspecified. If `a == b` the answer is [`Orientation::Collinear`].
+///
+/// ```
+/// use wdm_crust::predicates::{exact::orient2d_circumcenter, Orientation};
+/// // Right angle at (0, 0): the circumcenter (1, 1) is the midpoint of the hypotenuse.
+/// let tri = [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]];
+/// assert_eq!(orient2d_circumcenter([2.0, 0.0], [0.0, 2.0], tri), Orientation::Collinear);
+/// assert_eq!(orient2d_circumcenter([0.0, 0.0], [2.0, 0.0], tri), Orientation::CounterClockwise);
+/// ```
+pub fn orient2d_circumcenter(a: [f64; 2], b: [f64; 2], tri: [[f64; 2]; 3]) -> Orientation {
+    ORIENT.call();
+    let (o, exact) = orient_circumcenter_impl(a, b, tri);
+    if exact {
+        ORIENT.fallback();
+    }
+    o.unwrap_or(Orientation::Collinear)
+}
+
+/// Exact sign of `(O(other) − p) · (O(source) − p)`, where `O(t)` is the circumcenter of `t`.
+///
+/// This is the test of the water flow's state transition: [`Sign::Negative`] means that the
+/// circumcenter of `other` lies strictly on the far side of the line through `p` orthogonal
+/// to `O(source) − p`. Triangles may be given in either orientation; if either is collinear
+/// the answer is unspecified.
+///
+/// ```
+/// use wdm_crust::predicates::exact::{dot_sign_circumcenters, Sign};
+/// let p = [0.0, 0.0];
+/// let source = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]]; // circumcenter (2, 2)
+/// let other = [[0.0, 0.0], [-4.0, 0.0], [0.0, 4.0]]; // circumcenter (-2, 2)
+/// assert_eq!(dot_sign_circumcenters(p, source, other), Sign::Zero);
+/// ```
+pub fn dot_sign_circumcenters(p: [f64; 2], source: [[f64; 2]; 3], other: [[f64; 2]; 3]) -> Sign {
+    DOT.call();
+    let (s, o) = (rotate_to(source, p), rotate_to(other, p));
+    let points = [p, s[0], s[1], s[2], o[0], o[1], o[2]];
+    let [fp, f0, f1, f2, g0, g1, g2] = lift_filter(normalize(points).0);
+    let ([ds, dother, v], exact) = signs(dot_terms(&fp, &[f0, f1, f2], &[g0, g1, g2]), || {
+        let ([ep, e0, e1, e2, h0, h1, h2], _) = lift_exact(points);
+        dot_terms(&ep, &[e0, e1, e2], &[h0, h1, h2])
+    });
+    if exact {
+        DOT.fallback();
+    }
+    v.times(ds).times(dother)
+}
+
+/// Exact comparison of the circumradii of `t1` and `t2` (`Greater` iff `t1`'s is larger).
+///
+/// Triangles may be given in either orientation; if either is collinear the answer is
+/// unspecified.
+///
+/// ```
+/// use std::cmp::Ordering;
+/// use wdm_crust::predicates::exact::compare_circumradius;
+/// let small = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+/// let large = [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]];
+/// assert_eq!(compare_circumradius(small, large), Ordering::Less);
+/// ```
+pub fn compare_circumradius(t1: [[f64; 2]; 3], t2: [[f64; 2]; 3]) -> Ordering {
+    RADIUS.call();
+    let points = [t1[0], t1[1], t1[2], t2[0], t2[1], t2[2]];
+    let [f0, f1, f2, g0, g1, g2] = lift_filter(normalize(points).0);
+    let ([v], exact) = signs(radius_terms(&[f0, f1, f2], &[g0, g1, g2]), || {
+        let ([e0, e1, e2, h0, h1, h2], _) = lift_exact(points);
+        radius_terms(&[e0, e1, e2], &[h0, h1, h2])
+    });
+    if exact {
+        RADIUS.fallback();
+    }
+    match v {
+        Sign::Negative => Ordering::Less,
+        Sign::Zero => Ordering::Equal,
+        Sign::Positive => Ordering::Greater,
+    }
+}
+
+/// Exact position of the circumcenter of `tri` relative to the closed convex polygon `hull`.
+///
+/// `hull` lists the vertices counterclockwise, at least 3 of them, not all collinear; it may
+/// contain collinear boundary points (also next to `hull[0]`). [`HullPosition::OnBoundary`]
+/// means the circumcenter lies exactly on an edge or a vertex. The search takes `O(log h)`
+/// orientation tests in the fan of `hull[0]`. If `tri` is collinear the answer is
+/// [`HullPosition::Outside`] (its "circumcenter" is at infinity); if `hull` violates the
+/// requirements above the answer is unspecified.
+///
+/// ```
+/// use wdm_crust::predicates::exact::{circumcenter_in_convex_hull, HullPosition};
+/// let hull = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
+/// // Circumcenter (2, 0): the midpoint of the hypotenuse, on the bottom edge.
+/// let tri = [[0.0, 0.0], [4.0, 0.0], [2.0, 2.0]];
+/// assert_eq!(circumcenter_in_convex_hull(&hull, tri), HullPosition::OnBoundary);
+/// ```
+pub fn circumcenter_in_convex_hull(hull: &[[f64; 2]], tri: [[f64; 2]; 3]) -> HullPosition {
+    HULL.call();
+    let mut exact = false;
+    let position = hull_position(hull, |a, b| {
+        let (o, ex) = orient_circumcenter_impl(a, b, tri);
+        exact |= ex;
+        o
+    });
+    if exact {
+        HULL.fallback();
+    }
+    position
+}
+
+/// Whether `p` lies on the open ray from `o` through `dir` (`dir ≠ o`), exactly.
+fn on_ray(o: [f64; 2], dir: [f64; 2], p: [f64; 2]) -> bool {
+    if orient2d(o, dir, p) != Orientation::Collinear {
+        return false;
+    }
+    // p − o = t·(dir − o); the sign of t shows in any coordinate where dir differs from o.
+    let axis = usize::from(dir[0] == o[0]);
+    p[axis] != o[axis] && (p[axis] > o[axis]) == (dir[axis] > o[axis])
+}
+
+/// Position of a point `q` relative to the closed convex CCW polygon `hull`, where
+/// `side(a, b)` is the exact orientation of `(a, b, q)` (`None` if `q` does not exist).
+fn hull_position(
+    hull: &[[f64; 2]],
+    mut side: impl FnMut([f64; 2], [f64; 2]) -> Option<Orientation>,
+) -> HullPosition {
+    use Orientation::{Clockwise as Cw, Collinear, CounterClockwise as Ccw};
+    let n = hull.len();
+    if n < 3 {
+        return HullPosition::Outside;
+    }
+    let h0 = hull[0];
+    // The lines through h0 and its two neighbours support the polygon (they coincide when h0
+    // is in the middle of an edge).
+    let Some(first) = side(h0, hull[1]) else {
+        return HullPosition::Outside;
+    };
+    let Some(last) = side(h0, hull[n - 1]) else {
+        return HullPosition::Outside;
+    };
+    if first == Cw || last == Ccw {
+        return HullPosition::Outside;
+    }
+    if first == Ccw && last == Cw {
+        // q is strictly inside the cone at h0, where the ray directions of the fan are
+        // ordered by angle: find the fan triangle (h0, h_i, h_i+1) whose sector holds q.
+        // Invariant: q is not right of h0 → h_lo and strictly right of h0 → h_hi.
+        let (mut lo, mut hi) = (1, n - 1);
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if side(h0, hull[mid]) == Some(Cw) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        return match side(hull[lo], hull[lo + 1]) {
+            Some(Ccw) => HullPosition::Inside,
+            Some(Collinear) => HullPosition::OnBoundary,
+            _ => HullPosition::Outside,
+        };
+    }
+    // q lies on the line of the first or the last edge. The polygon meets those lines in the
+    // runs of boundary points collinear with h0: h0, h1, …, h_k on the first ray and
+    // h_m, …, h_n-1, h0 on the last one. q is in the polygon iff it is on the inner side of
+    // the edges leaving those runs, (h_k, h_k+1) and (h_m-1, h_m).
+    let (a, b) = (hull[1], hull[n - 1]);
+    if on_ray(h0, a, b) || on_ray(h0, b, a) {
+        return HullPosition::Outside; // all points on one ray: not a valid hull
+    }
+    let (mut lo, mut hi) = (1, n - 1); // on_ray(h0, a, h_lo) and not on_ray(h0, a, h_hi)
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if on_ray(h0, a, hull[mid]) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let k = lo;
+    let (mut lo, mut hi) = (1, n - 1); // not on_ray(h0, b, h_lo) and on_ray(h0, b, h_hi)
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if on_ray(h0, b, hull[mid]) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    let m = hi;
+    let inner = |s: Option<Orientation>| matches!(s, Some(Ccw | Collinear));
+    if inner(side(hull[k], hull[k + 1])) && inner(side(hull[m - 1], hull[m])) {
+        HullPosition::OnBoundary
+    } else {
+        HullPosition::Outside
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,195 @@
+//! Assembly of reconstructed edges into curves: closed loops and open chains.
+
+/// One reconstructed curve.
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
+pub struct Curve {
+    /// True for a closed loop (the last point connects back to the first).
+    pub closed: bool,
+    /// Point indices along the curve. A closed loop lists each point once and runs
+    /// counterclockwise, starting at its smallest index.
+    pub points: Vec<u32>,
+}
+
+/// Splits the edge graph into maximal paths between points of degree ≠ 2 (open chains) and
+/// cycles of degree-2 points (closed loops). Every edge is in exactly one curve.
+pub fn assemble(point_count: usize, edges: &[[u32; 2]], points: &[[f64; 2]]) -> Vec<Curve> {
+    let adjacency = Adjacency::new(point_count, edges);
+    let mut used = vec![false; edges.len()];
+    let mut curves = Vec::new();
+    // Open chains: start at every end or junction, along every unused edge.
+    for start in 0..point_count as u32 {
+        if adjacency.degree(start) == 2 || adjacency.degree(start) == 0 {
+            continue;
+        }
+        for &(first_edge, _) in adjacency.neighbours(start) {
+            if used[first_edge as usize] {
+                continue;
+            }
+            let chain = walk(&adjacency, &mut used, start, first_edge, |p| {
+                adjacency.degree(p) != 2
+            });
+            curves.push(Curve {
+                closed: false,
+                points: chain,
+            });
+        }
+    }
+    // What remains are disjoint cycles of degree-2 points.
+    for start in 0..point_count as u32 {
+        if let Some(&(first_edge, _)) = adjacency
+            .neighbours(start)
+            .iter()
+            .find(|&&(e, _)| !used[e as usize])
+        {
+            let mut cycle = walk(&adjacency, &mut used, start, first_edge, |p| p == start);
+            cycle.pop(); // the walk ends back at the start
+            orient_counterclockwise(&mut cycle, points);
+            curves.push(Curve {
+                closed: true,
+                points: cycle,
+            });
+        }
+    }
+    curves
+}
+
+/// Points with a degree other than 2 among those with at least one edge, plus isolated
+/// points are not included: the caller decides what an untouched point means.
+pub fn irregular_points(point_count: usize, edges: &[[u32; 2]]) -> Vec<u32> {
+    let adjacency = Adjacency::new(point_count, edges);
+    (0..point_count as u32)
+        .filter(|&p| {
+            let d = adjacency.degree(p);
+            d != 0 && d != 2
+        })
+        .collect()
+}
+
+/// Follows unused edges from `start` until `stop` says so; returns the visited points.
+fn walk(
+    adjacency: &Adjacency,
+    used: &mut [bool],
+    start: u32,
+    first_edge: u32,
+    stop: impl Fn(u32) -> bool,
+) -> Vec<u32> {
+    let mut chain = vec![start];
+    let mut at = start;
+    let mut edge = first_edge;
+    loop {
+        used[edge as usize] = true;
+        let next = adjacency
+            .neighbours(at)
+            .iter()
+            .find(|&&(e, _)| e == edge)
+            .map(|&(_, q)| q)
+            .unwrap_or(at);
+        chain.push(next);
+        at = next;
+        if stop(at) {
+            break;
+        }
+        match adjacency
+            .neighbours(at)
+            .iter()
+            .find(|&&(e, _)| !used[e as usize])
+        {
+            Some(&(e, _)) => edge = e,
+            None => break,
+        }
+    }
+    chain
+}
+
+/// Reverses a loop if its signed area is negative, then rotates it to start at its smallest
+/// index. (Presentation only: no decision depends on it.)
+fn orient_counterclockwise(cycle: &mut Vec<u32>, points: &[[f64; 2]]) {
+    let n = cycle.len();
+    let mut twice_area = 0.0;
+    for i in 0..n {
+        let a = points[cycle[i] as usize];
+        let b = points[cycle[(i + 1) % n] as usize];
+        twice_area += a[0] * b[1] - a[1] * b[0];
+    }
+    if twice_area < 0.0 {
+        cycle.reverse();
+    }
+    if let Some(min_at) = (0..n).min_by_key(|&i| cycle[i]) {
+        cycle.rotate_left(min_at);
+    }
+}
+
+/// Compressed adjacency lists: for each point, `(edge index, other end)`.
+struct Adjacency {
+    start: Vec<u32>,
+    entries: Vec<(u32, u32)>,
+}
+
+impl Adjacency {
+    fn new(point_count: usize, edges: &[[u32; 2]]) -> Self {
+        let mut start = vec![0u32; point_count + 1];
+        for &[a, b] in edges {
+            start[a as usize + 1] += 1;
+            start[b as usize + 1] += 1;
+        }
+        for i in 0..point_count {
+            start[i + 1] += start[i];
+        }
+        let mut fill = start.clone();
+        let mut entries = vec![(0, 0); 2 * edges.len()];
+        for (i, &[a, b]) in edges.iter().enumerate() {
+            entries[fill[a as usize] as usize] = (i as u32, b);
+            fill[a as usize] += 1;
+            entries[fill[b as usize] as usize] = (i as u32, a);
+            fill[b as usize] += 1;
+        }
+        Adjacency { start, entries }
+    }
+
+    fn neighbours(&self, p: u32) -> &[(u32, u32)] {
+        &self.entries[self.start[p as usize] as usize..self.start[p as usize + 1] as usize]
+    }
+
+    fn degree(&self, p: u32) -> usize {
+        self.neighbours(p).len()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn square() -> Vec<[f64; 2]> {
+        vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [5.0, 5.0], [6.0, 5.0]]
+    }
+
+    #[test]
+    fn a_loop_and_a_chain() {
+        let edges = [[0, 3], [2, 3], [1, 2], [0, 1], [4, 5]];
+        let curves = assemble(6, &edges, &square());
+        assert_eq!(curves.len(), 2);
+        assert_eq!(curves[0], Curve { closed: false, points: vec![4, 5] });
+        assert_eq!(curves[1], Curve { closed: true, points: vec![0, 1, 2, 3] });
+        assert!(irregular_points(6, &edges) == vec![4, 5]);
+    }
+
+    #[test]
+    fn clockwise_loop_is_turned() {
+        let edges = [[0, 1], [1, 3], [3, 2], [0, 2]];
+        // 0-1-3-2 with these coordinates is a bow-tie; use a real clockwise square instead.
+        let pts = vec![[0.0, 0.0], [0.0, 1.0], [1.0, 0.0], [1.0, 1.0]];
+        let curves = assemble(4, &edges, &pts);
+        assert_eq!(curves, vec![Curve { closed: true, points: vec![0, 2, 3, 1] }]);
+    }
+
+    #[test]
+    fn junction_splits_chains() {
+        // A "T": 0-1-2 and 1-3.
+        let edges = [[0, 1], [1, 2], [1, 3]];
+        let pts = vec![[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [1.0, 1.0]];
+        let curves = assemble(4, &edges, &pts);
+        assert_eq!(curves.len(), 3);
+        assert!(curves.iter().all(|c| !c.closed && c.points.len() == 2));
+        assert_eq!(irregular_points(4, &edges), vec![0, 1, 2, 3]);
+    }
+}

@@ -1,0 +1,349 @@
+//! Curve reconstruction and medial axis from unordered points.
+//!
+//! [`reconstruct`] runs WDM_CRUST with the default [`Options`]: triangulate, build the merged
+//! Voronoi dual, label its vertices by the water flow ([`wdm`]), keep the Delaunay edges whose
+//! dual Voronoi edge joins an inner and an outer vertex (the crust) and the finite Voronoi
+//! edges joining two inner vertices (the medial axis), assemble the crust into curves
+//! ([`curves`]). Shapes with holes are handled by peeling (see [`Options::peeling`]).
+
+pub mod curves;
+pub mod wdm;
+
+pub use curves::Curve;
+pub use wdm::{Label, LabelRule, WaterFlow};
+
+use crate::delaunay::{triangulate, Triangulation};
+use crate::error::Error;
+use crate::voronoi::{EdgeEnd, Voronoi};
+
+/// Which reconstruction algorithm to run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Algorithm {
+    /// WDM_CRUST (Peethambaran, Parakkat, Muthuganapathy): water-flow labeling.
+    #[default]
+    Wdm,
+}
+
+impl Algorithm {
+    /// The name used on the command line and in JSON output.
+    pub fn name(self) -> &'static str {
+        match self {
+            Algorithm::Wdm => "wdm",
+        }
+    }
+}
+
+/// Reconstruction options.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Options {
+    /// The algorithm.
+    pub algorithm: Algorithm,
+    /// Nested curves (holes): rerun on the points the crust left untouched until none (or
+    /// fewer than three) remain, and take the union. The paper's single pass never reaches
+    /// a hole, so its inner curve would be lost. On by default.
+    pub peeling: bool,
+    /// How water-flow states become labels (see [`LabelRule`]).
+    pub label_rule: LabelRule,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            algorithm: Algorithm::Wdm,
+            peeling: true,
+            label_rule: LabelRule::WaterReached,
+        }
+    }
+}
+
+/// The class of a Voronoi edge by the labels of its ends (Section 3.3 of the paper).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum EdgeClass {
+    /// Both ends outer: a pipe the water runs through.
+    Carrier,
+    /// One end inner, one outer: its dual Delaunay edge is a crust edge.
+    Branch,
+    /// Both ends inner: a medial-axis edge.
+    Neutral,
+}
+
+impl EdgeClass {
+    /// The class of an edge whose ends carry labels `a` and `b`.
+    pub fn of(a: Label, b: Label) -> EdgeClass {
+        match (a, b) {
+            (Label::Outer, Label::Outer) => EdgeClass::Carrier,
+            (Label::Inner, Label::Inner) => EdgeClass::Neutral,
+            _ => EdgeClass::Branch,
+        }
+    }
+}
+
+/// The medial axis approximation: segments between inner Voronoi vertices.
+#[derive(Debug, Clone, Default, PartialEq, serde::Serialize)]
+pub struct MedialAxis {
+    /// Circumcenters (rounded to f64) of the inner vertices that have a medial-axis edge.
+    pub vertices: Vec<[f64; 2]>,
+    /// Segments as index pairs into `vertices`, `[a, b]` with `a < b`, sorted.
+    pub edges: Vec<[u32; 2]>,
+}
+
+/// The result of a reconstruction.
+#[derive(Debug, Clone)]
+pub struct Reconstruction {
+    algorithm: Algorithm,
+    triangulation: Triangulation,
+    labels: Vec<Label>,
+    edges: Vec<[u32; 2]>,
+    curves: Vec<Curve>,
+    medial_axis: MedialAxis,
+    passes: usize,
+}
+
+impl Reconstruction {
+    /// The algorithm that produced this result.
+    pub fn algorithm(&self) -> Algorithm {
+        self.algorithm
+    }
+
+    /// Reconstructed edges `[i, j]` with `i < j`, sorted, over the caller's indices.
+    pub fn edges(&self) -> &[[u32; 2]] {
+        &self.edges
+    }
+
+    /// Closed loops and open chains assembled from [`Self::edges`].
+    pub fn curves(&self) -> &[Curve] {
+        &self.curves
+    }
+
+    /// WDM_MAT: segments between inner Voronoi vertices.
+    pub fn medial_axis(&self) -> &MedialAxis {
+        &self.medial_axis
+    }
+
+    /// The Delaunay triangulation of all the points.
+    pub fn triangulation(&self) -> &Triangulation {
+        &self.triangulation
+    }
+
+    /// The label of every vertex of `self.triangulation().voronoi()` from the first pass.
+    pub fn labels(&self) -> &[Label] {
+        &self.labels
+    }
+
+    /// Distinct points with a degree other than 0 or 2 in the reconstruction: curve ends and
+    /// junctions.
+    pub fn irregular_points(&self) -> Vec<u32> {
+        curves::irregular_points(self.triangulation.points().len(), &self.edges)
+    }
+
+    /// Distinct points that no reconstructed edge touches.
+    pub fn untouched_points(&self) -> Vec<u32> {
+        untouched(&self.triangulation, &self.edges)
+    }
+
+    /// How many passes ran (more than one when peeling found nested curves).
+    pub fn passes(&self) -> usize {
+        self.passes
+    }
+}
+
+/// WDM_CRUST and WDM_MAT of `points` with the default [`Options`].
+///
+/// ```
+/// // Twelve points on a circle, in scrambled order: one closed curve through all of them.
+/// let points: Vec<[f64; 2]> = [0, 5, 10, 3, 8, 1, 6, 11, 4, 9, 2, 7]
+///     .iter()
+///     .map(|&k| {
+///         let t = k as f64 * std::f64::consts::TAU / 12.0;
+///         [t.cos(), t.sin()]
+///     })
+///     .collect();
+/// let rec = wdm_crust::reconstruct(&points)?;
+/// assert_eq!(rec.edges().len(), 12);
+/// assert_eq!(rec.curves().len(), 1);
+/// assert!(rec.curves()[0].closed);
+/// # Ok::<(), wdm_crust::Error>(())
+/// ```
+pub fn reconstruct(points: &[[f64; 2]]) -> Result<Reconstruction, Error> {
+    reconstruct_with(points, &Options::default())
+}
+
+/// Reconstruction with explicit [`Options`].
+pub fn reconstruct_with(points: &[[f64; 2]], options: &Options) -> Result<Reconstruction, Error> {
+    let triangulation = triangulate(points)?;
+    let (labels, mut edges, first_pass_axis) = {
+        let vor = triangulation.voronoi();
+        let flow = wdm::label_vertices(&vor, options.label_rule);
+        let edges = if triangulation.is_degenerate() {
+            chain_edges(&triangulation)
+        } else {
+            crust_edges(&vor, &flow.labels)
+        };
+        let axis = medial_axis(&vor, &flow.labels);
+        (flow.labels, edges, axis)
+    };
+    let mut passes = 1;
+    if options.peeling {
+        passes += peel(points, &triangulation, &mut edges, options);
+    }
+    edges.sort_unstable();
+    edges.dedup();
+    let medial_axis = if passes > 1 {
+        let vor = triangulation.voronoi();
+        let inside = crate::reconstruct::parity_inside(&vor, &edges);
+        let combined: Vec<Label> = labels
+            .iter()
+            .zip(&inside)
+            .map(|(&l, &i)| if l == Label::Inner && i { Label::Inner } else { Label::Outer })
+            .collect();
+        medial_axis(&vor, &combined)
+    } else {
+        first_pass_axis
+    };
+    let curves = curves::assemble(points.len(), &edges, points);
+    Ok(Reconstruction {
+        algorithm: options.algorithm,
+        triangulation,
+        labels,
+        edges,
+        curves,
+        medial_axis,
+        passes,
+    })
+}
+
+/// Delaunay edges dual to branch edges. A ray's far end is the root vertex, always outer.
+fn crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
+    let mut edges = Vec::new();
+    for v in 0..vor.vertex_count() as u32 {
+        for edge in vor.vertex_edges(v) {
+            let far = match edge.to {
+                EdgeEnd::Vertex(u) if u < v => continue, // each finite edge once
+                EdgeEnd::Vertex(u) => labels[u as usize],
+                EdgeEnd::Infinity => Label::Outer,
+            };
+            if EdgeClass::of(labels[v as usize], far) == EdgeClass::Branch {
+                let [a, b] = edge.sites;
+                edges.push([a.min(b), a.max(b)]);
+            }
+        }
+    }
+    edges.sort_unstable();
+    edges
+}
+
+/// Finite Voronoi edges with both ends inner, with the used vertices renumbered.
+fn medial_axis(vor: &Voronoi<'_>, labels: &[Label]) -> MedialAxis {
+    let mut index = vec![u32::MAX; vor.vertex_count()];
+    let mut axis = MedialAxis::default();
+    let mut renumber = |v: u32, axis: &mut MedialAxis| {
+        if index[v as usize] == u32::MAX {
+            index[v as usize] = axis.vertices.len() as u32;
+            axis.vertices.push(vor.vertex_position(v));
+        }
+        index[v as usize]
+    };
+    for (_, a, b) in vor.finite_edges() {
+        if labels[a as usize] == Label::Inner && labels[b as usize] == Label::Inner {
+            let (ia, ib) = (renumber(a, &mut axis), renumber(b, &mut axis));
+            axis.edges.push([ia.min(ib), ia.max(ib)]);
+        }
+    }
+    axis.edges.sort_unstable();
+    axis
+}
+
+/// Collinear or tiny input: the chain along the line is the reconstruction.
+fn chain_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
+    tri.hull()
+        .windows(2)
+        .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
+        .collect()
+}
+
+/// Distinct points without an edge.
+fn untouched(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<u32> {
+    let n = tri.points().len();
+    let mut touched = vec![false; n];
+    for &[a, b] in edges {
+        touched[a as usize] = true;
+        touched[b as usize] = true;
+    }
+    for &[dup, _] in tri.duplicates() {
+        touched[dup as usize] = true;
+    }
+    (0..n as u32).filter(|&p| !touched[p as usize]).collect()
+}
+
+/// Reruns WDM_CRUST on the points the crust left untouched, adding what each pass finds,
+/// until a pass finds nothing or fewer than three points remain. Returns the extra passes.
+fn peel(
+    points: &[[f64; 2]],
+    tri: &Triangulation,
+    edges: &mut Vec<[u32; 2]>,
+    options: &Options,
+) -> usize {
+    let mut extra = 0;
+    loop {
+        let rest = untouched(tri, edges);
+        if rest.len() < 3 {
+            return extra;
+        }
+        let subset: Vec<[f64; 2]> = rest.iter().map(|&i| points[i as usize]).collect();
+        // The subset is a selection of already validated points: this cannot fail.
+        let Ok(sub) = triangulate(&subset) else {
+            return extra;
+        };
+        if sub.is_degenerate() {
+            return extra;
+        }
+        let vor = sub.voronoi();
+        let flow = wdm::label_vertices(&vor, options.label_rule);
+        let found = crust_edges(&vor, &flow.labels);
+        if found.is_empty() {
+            return extra;
+        }
+        edges.extend(found.iter().map(|&[a, b]| {
+            let (a, b) = (rest[a as usize], rest[b as usize]);
+            [a.min(b), a.max(b)]
+        }));
+        extra += 1;
+    }
+}
+
+/// Inside/outside of every Voronoi vertex by the parity of crust edges crossed on the way
+/// from infinity (breadth first; the first path found decides where the crust is not a set
+/// of closed curves).
+fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
+    let tri = vor.triangulation();
+    let is_crust = |e: u32| {
+        let (a, b) = (
+            tri.halfedge_origin(e as usize),
+            tri.halfedge_destination(e as usize),
+        );
+        edges.binary_search(&[a.min(b), a.max(b)]).is_ok()
+    };
+    let n = vor.vertex_count();
+    let mut inside = vec![false; n];
+    let mut seen = vec![false; n];
+    let mut queue = std::collections::VecDeque::new();
+    for (e, v, _) in vor.rays() {
+        if !seen[v as usize] {
+            seen[v as usize] = true;
+            inside[v as usize] = is_crust(e);
+            queue.push_back(v);
+        }
+    }
+    while let Some(v) = queue.pop_front() {
+        for edge in vor.vertex_edges(v) {
+            if let EdgeEnd::Vertex(u) = edge.to {
+                if !seen[u as usize] {
+                    seen[u as usize] = true;
+                    inside[u as usize] = inside[v as usize] ^ is_crust(edge.halfedge);
+                    queue.push_back(u);
+                }
+            }
+        }
+    }
+    inside
+}

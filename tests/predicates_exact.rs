@@ -1,0 +1,602 @@
+//! Property tests of `wdm_crust::predicates::exact` against an independently written rational
+//! reference, on random input and on adversarial input built to hit exact zeros (lattice
+//! points on circles, right angles, shared circumcenters, circumcenters on hull edges), the
+//! same perturbed by one ulp, translated far from the origin and scaled by 2^k over the whole
+//! input envelope.
+
+use std::sync::{RwLock, RwLockReadGuard, RwLockWriteGuard};
+
+use num_rational::BigRational;
+use num_traits::{Signed, Zero};
+use proptest::prelude::*;
+use wdm_crust::predicates::exact::{
+    circumcenter, circumcenter_exact, circumcenter_in_convex_hull, compare_circumradius,
+    dot_sign_circumcenters, fallback_counts, orient2d_circumcenter, FallbackCounts, HullPosition,
+    Sign,
+};
+use wdm_crust::predicates::Orientation;
+
+type P = [f64; 2];
+type T = [P; 3];
+
+/// Tests that only call predicates share this lock; the test reading the global counters
+/// takes it exclusively so that no other test of this binary adds calls meanwhile.
+static COUNTERS: RwLock<()> = RwLock::new(());
+
+fn shared() -> RwLockReadGuard<'static, ()> {
+    COUNTERS.read().unwrap_or_else(|e| e.into_inner())
+}
+
+fn exclusive() -> RwLockWriteGuard<'static, ()> {
+    COUNTERS.write().unwrap_or_else(|e| e.into_inner())
+}
+
+// ----------------------------------------------------------------------------------------
+// The reference: rational arithmetic, written without the library's formulas.
+
+mod reference {
+    use super::*;
+
+    pub fn rat(x: f64) -> BigRational {
+        BigRational::from_float(x).expect("finite")
+    }
+
+    pub fn sign(x: &BigRational) -> Sign {
+        if x.is_positive() {
+            Sign::Positive
+        } else if x.is_negative() {
+            Sign::Negative
+        } else {
+            Sign::Zero
+        }
+    }
+
+    /// The circumcenter as the solution of the two perpendicular-bisector equations
+    /// `2 (b − a)·X = |b|² − |a|²`, `2 (c − a)·X = |c|² − |a|²`, by Cramer's rule.
+    pub fn circumcenter(t: T) -> Option<[BigRational; 2]> {
+        let [a, b, c] = t.map(|p| [rat(p[0]), rat(p[1])]);
+        let two = BigRational::from_integer(2.into());
+        let sq = |p: &[BigRational; 2]| &p[0] * &p[0] + &p[1] * &p[1];
+        let (a11, a12) = (&two * (&b[0] - &a[0]), &two * (&b[1] - &a[1]));
+        let (a21, a22) = (&two * (&c[0] - &a[0]), &two * (&c[1] - &a[1]));
+        let (r1, r2) = (sq(&b) - sq(&a), sq(&c) - sq(&a));
+        let det = &a11 * &a22 - &a12 * &a21;
+        if det.is_zero() {
+            return None;
+        }
+        let x = (&r1 * &a22 - &a12 * &r2) / &det;
+        let y = (&a11 * &r2 - &r1 * &a21) / &det;
+        Some([x, y])
+    }
+
+    /// Orientation of `(a, b, o)`.
+    pub fn orient(a: P, b: P, o: &[BigRational; 2]) -> Orientation {
+        let (ax, ay) = (rat(a[0]), rat(a[1]));
+        let det = (rat(b[0]) - &ax) * (&o[1] - &ay) - (rat(b[1]) - &ay) * (&o[0] - &ax);
+        match sign(&det) {
+            Sign::Positive => Orientation::CounterClockwise,
+            Sign::Negative => Orientation::Clockwise,
+            Sign::Zero => Orientation::Collinear,
+        }
+    }
+
+    /// Sign of `(o_other − p)·(o_source − p)`.
+    pub fn dot(p: P, source: &[BigRational; 2], other: &[BigRational; 2]) -> Sign {
+        let (px, py) = (rat(p[0]), rat(p[1]));
+        sign(&((&other[0] - &px) * (&source[0] - &px) + (&other[1] - &py) * (&source[1] - &py)))
+    }
+
+    /// Squared distance from the circumcenter to a vertex.
+    pub fn radius2(t: T, o: &[BigRational; 2]) -> BigRational {
+        let dx = &o[0] - rat(t[1][0]);
+        let dy = &o[1] - rat(t[1][1]);
+        &dx * &dx + &dy * &dy
+    }
+
+    /// Position of `o` in the closed CCW polygon, by testing every edge.
+    pub fn hull(hull: &[P], o: &[BigRational; 2]) -> HullPosition {
+        let mut on_edge_line = false;
+        for i in 0..hull.len() {
+            match orient(hull[i], hull[(i + 1) % hull.len()], o) {
+                Orientation::Clockwise => return HullPosition::Outside,
+                Orientation::Collinear => on_edge_line = true,
+                Orientation::CounterClockwise => {}
+            }
+        }
+        if on_edge_line {
+            HullPosition::OnBoundary
+        } else {
+            HullPosition::Inside
+        }
+    }
+}
+
+use reference::rat;
+
+// ----------------------------------------------------------------------------------------
+// Scenes: one input for every predicate.
+
+/// The inputs of one test case: a query point `p`, a directed line `a → b`, two triangles and
+/// a convex hull.
+#[derive(Debug, Clone)]
+struct Scene {
+    p: P,
+    a: P,
+    b: P,
+    t1: T,
+    t2: T,
+    hull: Vec<P>,
+}
+
+/// A small deterministic generator (xorshift64*), seeded by proptest.
+struct Rng(u64);
+
+impl Rng {
+    fn new(seed: u64) -> Rng {
+        Rng(seed | 1)
+    }
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
+    }
+    fn range(&mut self, lo: i64, hi: i64) -> i64 {
+        lo + (self.next() % (hi - lo + 1) as u64) as i64
+    }
+    fn chance(&mut self, num: u64, den: u64) -> bool {
+        self.next() % den < num
+    }
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+fn pow2(k: i32) -> f64 {
+    assert!((-1022..=1023).contains(&k));
+    f64::from_bits(((k + 1023) as u64) << 52)
+}
+
+type I = [i64; 2];
+
+fn add(p: I, q: I) -> I {
+    [p[0] + q[0], p[1] + q[1]]
+}
+
+fn mul(p: I, s: i64) -> I {
+    [p[0] * s, p[1] * s]
+}
+
+/// The 20 lattice points on the circle of radius 25 about the origin.
+fn circle25() -> Vec<I> {
+    let mut v = Vec::new();
+    for x in -25i64..=25 {
+        for y in -25i64..=25 {
+            if x * x + y * y == 625 {
+                v.push([x, y]);
+            }
+        }
+    }
+    v
+}
+
+/// Three distinct lattice points on the circle of radius `25·s` about `c`, in random order.
+fn lattice_triangle(rng: &mut Rng, circle: &[I], c: I, s: i64, first: Option<I>) -> [I; 3] {
+    let n = circle.len() as i64;
+    let mut idx = [0usize; 3];
+    loop {
+        for i in &mut idx {
+            *i = rng.range(0, n - 1) as usize;
+        }
+        if idx[0] != idx[1] && idx[1] != idx[2] && idx[0] != idx[2] {
+            break;
+        }
+    }
+    let mut t = idx.map(|i| add(c, mul(circle[i], s)));
+    if let Some(f) = first {
+        // Make the requested point (on the circle) a vertex, unless it already is one.
+        if t[1] != f && t[2] != f {
+            t[0] = f;
+        }
+    }
+    let r = rng.range(0, 2) as usize;
+    t.rotate_left(r);
+    if rng.chance(1, 2) {
+        t.swap(1, 2);
+    }
+    t
+}
+
+/// Boundary lattice points of a rectangle or a diamond, counterclockwise, from a random start.
+fn lattice_hull(rng: &mut Rng, near: I) -> Vec<I> {
+    let mut h = Vec::new();
+    if rng.chance(1, 2) {
+        let (w, hh) = (rng.range(1, 5), rng.range(1, 5));
+        let x0 = near[0] + rng.range(-w - 1, 1);
+        let y0 = near[1] + rng.range(-hh - 1, 1);
+        for x in 0..w {
+            h.push([x0 + x, y0]);
+        }
+        for y in 0..hh {
+            h.push([x0 + w, y0 + y]);
+        }
+        for x in (1..=w).rev() {
+            h.push([x0 + x, y0 + hh]);
+        }
+        for y in (1..=hh).rev() {
+            h.push([x0, y0 + y]);
+        }
+    } else {
+        let n = rng.range(1, 4);
+        let m = add(near, [rng.range(-3, 3), rng.range(-3, 3)]);
+        for i in 0..n {
+            h.push([m[0] + i, m[1] - n + i]);
+        }
+        for i in 0..n {
+            h.push([m[0] + n - i, m[1] + i]);
+        }
+        for i in 0..n {
+            h.push([m[0] - i, m[1] + n - i]);
+        }
+        for i in 0..n {
+            h.push([m[0] - n + i, m[1] - i]);
+        }
+    }
+    let r = rng.range(0, h.len() as i64 - 1) as usize;
+    h.rotate_left(r);
+    h
+}
+
+/// An integer scene built to make the predicates vanish exactly, or nearly.
+fn lattice_scene(rng: &mut Rng) -> (I, I, I, [I; 3], [I; 3], Vec<I>) {
+    let circle = circle25();
+    let s1 = rng.range(1, 3);
+    let s2 = if rng.chance(1, 2) {
+        s1
+    } else {
+        rng.range(1, 3)
+    };
+    let p = [rng.range(-30, 30), rng.range(-30, 30)];
+    let (c1, c2, t1, t2);
+    if rng.chance(1, 2) {
+        // As in the water flow: p is a vertex of both triangles; the dot product vanishes
+        // when the two radius vectors at p are perpendicular.
+        let n = circle.len() as i64;
+        let u1 = mul(circle[rng.range(0, n - 1) as usize], s1);
+        let u2 = mul(circle[rng.range(0, n - 1) as usize], s2);
+        c1 = add(p, mul(u1, -1));
+        c2 = add(p, mul(u2, -1));
+        t1 = lattice_triangle(rng, &circle, c1, s1, Some(p));
+        t2 = lattice_triangle(rng, &circle, c2, s2, Some(p));
+    } else {
+        let v = [rng.range(-6, 6), rng.range(-6, 6)];
+        c1 = add(p, v);
+        c2 = if rng.chance(2, 3) {
+            add(p, mul([-v[1], v[0]], rng.range(-2, 2)))
+        } else {
+            [rng.range(-30, 30), rng.range(-30, 30)]
+        };
+        t1 = lattice_triangle(rng, &circle, c1, s1, None);
+        t2 = lattice_triangle(rng, &circle, c2, s2, None);
+    }
+    let (a, b) = match rng.range(0, 2) {
+        0 => {
+            // A line through the circumcenter of t1.
+            let d = [rng.range(-5, 5), rng.range(1, 5)];
+            let (i, j) = (rng.range(-3, 3), rng.range(4, 6));
+            (add(c1, mul(d, i)), add(c1, mul(d, j)))
+        }
+        1 => (t1[0], t1[rng.range(1, 2) as usize]),
+        _ => (
+            [rng.range(-40, 40), rng.range(-40, 40)],
+            [rng.range(-40, 40), rng.range(-40, 40)],
+        ),
+    };
+    let hull = lattice_hull(rng, c1);
+    (p, a, b, t1, t2, hull)
+}
+
+/// Nudges a non-zero coordinate by one ulp up or down.
+fn nudge(x: f64, up: bool) -> f64 {
+    if x == 0.0 {
+        x
+    } else if up {
+        f64::from_bits(x.to_bits() + 1)
+    } else {
+        f64::from_bits(x.to_bits() - 1)
+    }
+}
+
+/// An adversarial scene: a lattice scene, translated (exactly) far from the origin, scaled by
+/// 2^k anywhere in the input envelope, and in a third of the cases one coordinate off by one
+/// ulp.
+fn adversarial_scene(seed: u64) -> Scene {
+    let mut rng = Rng::new(seed);
+    let (p, a, b, t1, t2, hull) = lattice_scene(&mut rng);
+    let offset = if rng.chance(1, 3) {
+        [0, 0]
+    } else {
+        let e = [4u32, 20, 40][rng.range(0, 2) as usize];
+        let m = 1i64 << e;
+        [rng.range(-m, m), rng.range(-m, m)]
+    };
+    let mut pts: Vec<I> = vec![p, a, b];
+    pts.extend(t1);
+    pts.extend(t2);
+    pts.extend(hull.iter().copied());
+    let pts: Vec<I> = pts.into_iter().map(|q| add(q, offset)).collect();
+    let max = pts
+        .iter()
+        .flatten()
+        .map(|c| c.unsigned_abs())
+        .max()
+        .unwrap_or(1)
+        .max(1);
+    let bits = 64 - max.leading_zeros() as i32; // max < 2^bits
+    let k = if rng.chance(1, 3) {
+        0
+    } else {
+        rng.range(-140, i64::from(200 - bits)) as i32
+    };
+    let s = pow2(k);
+    let mut f: Vec<P> = pts
+        .iter()
+        .map(|q| [q[0] as f64 * s, q[1] as f64 * s])
+        .collect();
+    if rng.chance(1, 3) {
+        // One coordinate of p, a, b, t1 or t2 (not of the hull, which must stay convex).
+        let i = rng.range(0, 8) as usize;
+        let c = rng.range(0, 1) as usize;
+        let up = rng.chance(1, 2);
+        f[i][c] = nudge(f[i][c], up);
+    }
+    Scene {
+        p: f[0],
+        a: f[1],
+        b: f[2],
+        t1: [f[3], f[4], f[5]],
+        t2: [f[6], f[7], f[8]],
+        hull: f[9..].to_vec(),
+    }
+}
+
+/// Ordinary input: random coordinates of moderate or random magnitude.
+fn random_scene(seed: u64) -> Scene {
+    let mut rng = Rng::new(seed);
+    let wide = rng.chance(1, 4);
+    let mut coord = |rng: &mut Rng| {
+        if wide {
+            let k = rng.range(-140, 199) as i32;
+            (rng.unit() * 2.0 - 1.0) * pow2(k)
+        } else {
+            rng.unit() * 200.0 - 100.0
+        }
+    };
+    let mut point = |rng: &mut Rng| [coord(rng), coord(rng)];
+    let p = point(&mut rng);
+    let a = point(&mut rng);
+    let b = point(&mut rng);
+    let t1 = [point(&mut rng), point(&mut rng), point(&mut rng)];
+    let t2 = [point(&mut rng), point(&mut rng), point(&mut rng)];
+    let r = rng.unit() * 150.0 + 1.0;
+    let hull = vec![[-r, -r], [r, -r], [r, r], [0.0, r], [-r, r]];
+    Scene {
+        p,
+        a,
+        b,
+        t1,
+        t2,
+        hull,
+    }
+}
+
+// ----------------------------------------------------------------------------------------
+// The checks.
+
+fn ulp(x: f64) -> f64 {
+    let a = x.abs();
+    f64::from_bits(a.to_bits() + 1) - a
+}
+
+fn reversed(t: T) -> T {
+    [t[0], t[2], t[1]]
+}
+
+/// Every predicate on the scene agrees with the reference.
+fn check(s: &Scene) -> Result<(), TestCaseError> {
+    let o1 = reference::circumcenter(s.t1);
+    let o2 = reference::circumcenter(s.t2);
+    let (Some(o1), Some(o2)) = (o1, o2) else {
+        // Collinear: unspecified answers, but no panic.
+        let _ = orient2d_circumcenter(s.a, s.b, s.t1);
+        let _ = dot_sign_circumcenters(s.p, s.t1, s.t2);
+        let _ = compare_circumradius(s.t1, s.t2);
+        let _ = circumcenter_in_convex_hull(&s.hull, s.t1);
+        return Ok(());
+    };
+    let expected = reference::orient(s.a, s.b, &o1);
+    prop_assert_eq!(orient2d_circumcenter(s.a, s.b, s.t1), expected);
+    prop_assert_eq!(orient2d_circumcenter(s.a, s.b, reversed(s.t1)), expected);
+
+    let expected = reference::dot(s.p, &o1, &o2);
+    prop_assert_eq!(dot_sign_circumcenters(s.p, s.t1, s.t2), expected);
+    prop_assert_eq!(dot_sign_circumcenters(s.p, reversed(s.t1), s.t2), expected);
+    prop_assert_eq!(dot_sign_circumcenters(s.p, s.t1, reversed(s.t2)), expected);
+
+    let expected = reference::radius2(s.t1, &o1).cmp(&reference::radius2(s.t2, &o2));
+    prop_assert_eq!(compare_circumradius(s.t1, s.t2), expected);
+    prop_assert_eq!(
+        compare_circumradius(s.t2, reversed(s.t1)),
+        expected.reverse()
+    );
+
+    let expected = reference::hull(&s.hull, &o1);
+    prop_assert_eq!(circumcenter_in_convex_hull(&s.hull, s.t1), expected);
+    prop_assert_eq!(
+        circumcenter_in_convex_hull(&s.hull, reversed(s.t1)),
+        expected
+    );
+
+    let exact = circumcenter_exact(s.t1[0], s.t1[1], s.t1[2]).expect("not collinear");
+    prop_assert_eq!(&exact.x, &o1[0]);
+    prop_assert_eq!(&exact.y, &o1[1]);
+    check_circumcenter(s.t1, &exact.to_f64(), &o1)?;
+    check_circumcenter(
+        s.t2,
+        &circumcenter_exact(s.t2[0], s.t2[1], s.t2[2])
+            .unwrap()
+            .to_f64(),
+        &o2,
+    )?;
+    Ok(())
+}
+
+/// `circumcenter` is within 256 ulps of the exact circumcenter (its documented bound), and
+/// `rounded`, from `ExactPoint::to_f64`, within half an ulp.
+fn check_circumcenter(
+    t: T,
+    rounded: &[f64; 2],
+    exact: &[BigRational; 2],
+) -> Result<(), TestCaseError> {
+    let got = circumcenter(t[0], t[1], t[2]).expect("not collinear");
+    for i in 0..2 {
+        let (g, r) = (got[i], rounded[i]);
+        prop_assert!(g.is_finite());
+        // The correctly rounded value is within half an ulp of the exact one.
+        prop_assert!(
+            (rat(r) - &exact[i]).abs() * BigRational::from_integer(2.into()) <= rat(ulp(r))
+        );
+        // The returned value is within 256 ulps of it.
+        prop_assert!(
+            (rat(g) - &exact[i]).abs() <= rat(256.0 * ulp(g)),
+            "{:?} vs exact {:?}",
+            got,
+            rounded
+        );
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    #[test]
+    fn predicates_match_reference_on_adversarial_input(seed in any::<u64>()) {
+        let _guard = shared();
+        let scene = adversarial_scene(seed);
+        check(&scene)?;
+    }
+
+    #[test]
+    fn predicates_match_reference_on_random_input(seed in any::<u64>()) {
+        let _guard = shared();
+        check(&random_scene(seed))?;
+    }
+
+    /// The same triangle pair at every scale of the envelope gives the same answers.
+    #[test]
+    fn answers_are_scale_invariant(seed in any::<u64>(), fraction in 0.0f64..1.0) {
+        let _guard = shared();
+        let s = adversarial_scene(seed);
+        // Scale by 2^k with every coordinate staying in the envelope [2^-142, 2^201].
+        let exponent = |x: f64| ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+        let all = [s.p, s.a, s.b].into_iter().chain(s.t1).chain(s.t2).flatten().filter(|&x| x != 0.0);
+        let (lo, hi) = all.fold((i32::MAX, i32::MIN), |(lo, hi), x| (lo.min(exponent(x)), hi.max(exponent(x))));
+        prop_assume!(lo <= hi);
+        let (kmin, kmax) = (-142 - lo, 200 - hi);
+        let k = kmin + ((kmax - kmin + 1) as f64 * fraction) as i32;
+        let k = k.min(kmax);
+        let f = |p: P| [p[0] * pow2(k), p[1] * pow2(k)];
+        let (t1, t2) = (s.t1.map(f), s.t2.map(f));
+        prop_assert_eq!(orient2d_circumcenter(f(s.a), f(s.b), t1), orient2d_circumcenter(s.a, s.b, s.t1));
+        prop_assert_eq!(dot_sign_circumcenters(f(s.p), t1, t2), dot_sign_circumcenters(s.p, s.t1, s.t2));
+        prop_assert_eq!(compare_circumradius(t1, t2), compare_circumradius(s.t1, s.t2));
+    }
+}
+
+/// Right triangles: the circumcenter is the midpoint of the hypotenuse, so the hypotenuse line
+/// passes exactly through it; one ulp off, it does not.
+#[test]
+fn right_triangles_on_lattices() {
+    let _guard = shared();
+    let mut rng = Rng::new(7);
+    for _ in 0..300 {
+        let c = [rng.range(-1000, 1000), rng.range(-1000, 1000)];
+        let d = [rng.range(-50, 50), rng.range(1, 50)];
+        let m = rng.range(1, 7);
+        let a = add(c, d);
+        let b = add(c, mul([-d[1], d[0]], m));
+        let k = rng.range(-140, 180) as i32;
+        let f = |q: I| [q[0] as f64 * pow2(k), q[1] as f64 * pow2(k)];
+        let (a, b, c) = (f(a), f(b), f(c));
+        let tri = [a, b, c];
+        assert_eq!(orient2d_circumcenter(a, b, tri), Orientation::Collinear);
+        assert_eq!(
+            orient2d_circumcenter(b, a, reversed(tri)),
+            Orientation::Collinear
+        );
+        let mid = [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0];
+        assert_eq!(circumcenter(a, b, c), Some(mid));
+        // The circumcenter is the point the hypotenuse passes through; a line through c and
+        // the midpoint is a median.
+        assert_eq!(orient2d_circumcenter(c, mid, tri), Orientation::Collinear);
+        let up = [nudge(a[0], true), a[1]];
+        let o = orient2d_circumcenter(up, b, tri);
+        let expected = reference::orient(up, b, &reference::circumcenter(tri).unwrap());
+        assert_eq!(o, expected);
+        assert_ne!(o, Orientation::Collinear);
+    }
+}
+
+fn rate(c: wdm_crust::predicates::exact::PredicateCounts) -> f64 {
+    c.exact as f64 / c.calls.max(1) as f64
+}
+
+fn run_scenes(scene: fn(u64) -> Scene, n: u64) -> FallbackCounts {
+    let before = fallback_counts();
+    for seed in 0..n {
+        let s = scene(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ 0x1234_5678);
+        let _ = orient2d_circumcenter(s.a, s.b, s.t1);
+        let _ = dot_sign_circumcenters(s.p, s.t1, s.t2);
+        let _ = compare_circumradius(s.t1, s.t2);
+        let _ = circumcenter_in_convex_hull(&s.hull, s.t1);
+        let _ = circumcenter(s.t1[0], s.t1[1], s.t1[2]);
+    }
+    fallback_counts().since(&before)
+}
+
+/// The filter decides ordinary input alone, and the adversarial input really exercises the
+/// exact fallback (read from the global counters, with this binary's other tests excluded).
+#[test]
+fn fallback_rates() {
+    let _guard = exclusive();
+    let random = run_scenes(random_scene, 2000);
+    let adversarial = run_scenes(adversarial_scene, 2000);
+    eprintln!("random:      {random:?}");
+    eprintln!("adversarial: {adversarial:?}");
+    let all = |c: &FallbackCounts| {
+        [
+            c.orient2d_circumcenter,
+            c.dot_sign_circumcenters,
+            c.compare_circumradius,
+            c.circumcenter_in_convex_hull,
+            c.circumcenter,
+        ]
+    };
+    for c in all(&random) {
+        assert_eq!(c.calls, 2000);
+        assert!(
+            rate(c) < 0.02,
+            "random input falls back too often: {random:?}"
+        );
+    }
+    for c in all(&adversarial) {
+        assert_eq!(c.calls, 2000);
+    }
+    for c in all(&adversarial).into_iter().take(4) {
+        assert!(
+            rate(c) > 0.2,
+            "adversarial input rarely reaches the exact path: {adversarial:?}"
+        );
+    }
+}

@@ -25,14 +25,20 @@ fn bench_uniform(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("wdm_crust", n), &points, |b, p| {
             b.iter(|| wdm_crust::triangulate(p).unwrap())
         });
-        let spade_points: Vec<spade::Point2<f64>> =
-            points.iter().map(|p| spade::Point2::new(p[0], p[1])).collect();
+        let spade_points: Vec<spade::Point2<f64>> = points
+            .iter()
+            .map(|p| spade::Point2::new(p[0], p[1]))
+            .collect();
         group.bench_with_input(BenchmarkId::new("spade_bulk", n), &spade_points, |b, p| {
             use spade::Triangulation as _;
-            b.iter(|| spade::DelaunayTriangulation::<spade::Point2<f64>>::bulk_load(p.clone()).unwrap())
+            b.iter(|| {
+                spade::DelaunayTriangulation::<spade::Point2<f64>>::bulk_load(p.clone()).unwrap()
+            })
         });
-        let del_points: Vec<delaunator::Point> =
-            points.iter().map(|p| delaunator::Point { x: p[0], y: p[1] }).collect();
+        let del_points: Vec<delaunator::Point> = points
+            .iter()
+            .map(|p| delaunator::Point { x: p[0], y: p[1] })
+            .collect();
         group.bench_with_input(BenchmarkId::new("delaunator", n), &del_points, |b, p| {
             b.iter(|| delaunator::triangulate(p))
         });

@@ -131,7 +131,12 @@ mod tests {
 
     #[test]
     fn first_bad_point_is_named() {
-        let pts = [[0.0, 0.0], [1.0, 2.0], [f64::NAN, 0.0], [f64::INFINITY, 1.0]];
+        let pts = [
+            [0.0, 0.0],
+            [1.0, 2.0],
+            [f64::NAN, 0.0],
+            [f64::INFINITY, 1.0],
+        ];
         assert!(matches!(
             check_points(&pts),
             Err(Error::NotFinite { index: 2, .. })

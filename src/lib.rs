@@ -25,5 +25,3 @@ pub use delaunay::{triangulate, Triangulation};
 pub use error::Error;
 pub use reconstruct::{reconstruct, reconstruct_with, Reconstruction};
 pub use voronoi::Voronoi;
-
-

@@ -86,8 +86,7 @@ impl<'a> Voronoi<'a> {
     fn new(tri: &'a Triangulation) -> Self {
         let vertex_of_triangle = merge_cocircular_triangles(tri);
         let vertex_count = vertex_of_triangle.iter().map(|&v| v + 1).max().unwrap_or(0) as usize;
-        let (boundary_start, boundary) =
-            face_boundaries(tri, &vertex_of_triangle, vertex_count);
+        let (boundary_start, boundary) = face_boundaries(tri, &vertex_of_triangle, vertex_count);
         let mut circumcenters = vec![[0.0; 2]; vertex_count];
         for (v, c) in circumcenters.iter_mut().enumerate() {
             let e = boundary[boundary_start[v] as usize] as usize;
@@ -225,10 +224,10 @@ impl<'a> Voronoi<'a> {
     /// Rays: `(dual hull half-edge, vertex, outward direction)`. The direction is the
     /// outward normal of the hull edge, `(b − a)` turned clockwise, rounded to f64.
     pub fn rays(&self) -> impl Iterator<Item = (u32, u32, [f64; 2])> + '_ {
-        self.boundary.iter().filter_map(move |&e| {
-            (self.tri.halfedges()[e as usize] == NO_TWIN)
-                .then(|| (e, self.vertex_of_halfedge(e), self.ray_direction(e)))
-        })
+        self.boundary
+            .iter()
+            .filter(move |&&e| self.tri.halfedges()[e as usize] == NO_TWIN)
+            .map(move |&e| (e, self.vertex_of_halfedge(e), self.ray_direction(e)))
     }
 
     /// Outward normal of the hull half-edge `e` (interior on its left).
@@ -344,7 +343,10 @@ fn merge_cocircular_triangles(tri: &Triangulation) -> Vec<u32> {
         let opposite = tri.points()
             [tri.halfedge_origin(crate::delaunay::prev_in_triangle(twin as usize)) as usize];
         if incircle(a, b, c, opposite) == CirclePosition::On {
-            let (ra, rb) = (find(&mut parent, (e / 3) as u32), find(&mut parent, twin / 3));
+            let (ra, rb) = (
+                find(&mut parent, (e / 3) as u32),
+                find(&mut parent, twin / 3),
+            );
             if ra != rb {
                 parent[ra.max(rb) as usize] = ra.min(rb);
             }

@@ -14,7 +14,7 @@ use wdm_crust::predicates::exact::{
     dot_sign_circumcenters, fallback_counts, orient2d_circumcenter, FallbackCounts, HullPosition,
     Sign,
 };
-use wdm_crust::predicates::Orientation;
+use wdm_crust::predicates::{orient2d, Orientation};
 
 type P = [f64; 2];
 type T = [P; 3];
@@ -307,9 +307,23 @@ fn nudge(x: f64, up: bool) -> f64 {
     }
 }
 
-/// An adversarial scene: a lattice scene, translated (exactly) far from the origin, scaled by
-/// 2^k anywhere in the input envelope, and in a third of the cases one coordinate off by one
-/// ulp.
+/// The binary exponent of a non-zero finite `x`: `2^e ≤ |x| < 2^(e+1)` for normal `x`.
+fn exponent(x: f64) -> i32 {
+    ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023
+}
+
+/// Whether the CCW polygon makes no clockwise turn (exactly).
+fn weakly_convex(h: &[P]) -> bool {
+    let n = h.len();
+    (0..n).all(|i| orient2d(h[i], h[(i + 1) % n], h[(i + 2) % n]) != Orientation::Clockwise)
+}
+
+/// An adversarial scene: a lattice scene, translated (exactly) far from the origin; then
+/// either kept on the integer lattice, multiplied by a large odd integer (so that the
+/// polynomials leave the 53-bit range and exact zeros need the exact path), or put on a
+/// lattice of non-dyadic spacing such as 0.1 (rounded: zeros become near-zeros below the
+/// filter's resolution); scaled by 2^k anywhere in the input envelope; and in a third of the
+/// cases one coordinate moved by one ulp.
 fn adversarial_scene(seed: u64) -> Scene {
     let mut rng = Rng::new(seed);
     let (p, a, b, t1, t2, hull) = lattice_scene(&mut rng);
@@ -320,29 +334,55 @@ fn adversarial_scene(seed: u64) -> Scene {
         let m = 1i64 << e;
         [rng.range(-m, m), rng.range(-m, m)]
     };
+    let n = hull.len();
+    let corner: Vec<bool> = (0..n)
+        .map(|i| {
+            let (u, v, w) = (hull[(i + n - 1) % n], hull[i], hull[(i + 1) % n]);
+            (v[0] - u[0]) * (w[1] - v[1]) != (v[1] - u[1]) * (w[0] - v[0])
+        })
+        .collect();
     let mut pts: Vec<I> = vec![p, a, b];
     pts.extend(t1);
     pts.extend(t2);
     pts.extend(hull.iter().copied());
-    let pts: Vec<I> = pts.into_iter().map(|q| add(q, offset)).collect();
-    let max = pts
+    // Integers below 2^42: exact in f64.
+    let mut f: Vec<P> = pts
+        .into_iter()
+        .map(|q| add(q, offset))
+        .map(|q| [q[0] as f64, q[1] as f64])
+        .collect();
+    let max = |f: &[P]| f.iter().flatten().fold(0.0f64, |m, c| m.max(c.abs()));
+    match rng.range(0, 2) {
+        0 => {}
+        1 => {
+            // An odd factor keeping every product below 2^53 (exact).
+            let limit = ((1u64 << 52) as f64 / max(&f).max(1.0)).min((1u64 << 20) as f64);
+            let factor = (rng.range(1, (limit as i64 / 2).max(1)) * 2 + 1) as f64;
+            if factor < limit {
+                f.iter_mut().flatten().for_each(|c| *c *= factor);
+            }
+        }
+        _ => {
+            let h = [0.1, 1.0 / 3.0, 0.7, 1.1][rng.range(0, 3) as usize];
+            f.iter_mut().flatten().for_each(|c| *c *= h);
+        }
+    }
+    // Scale by 2^k keeping every non-zero magnitude in [2^-142, 2^201).
+    let emin = f
         .iter()
         .flatten()
-        .map(|c| c.unsigned_abs())
-        .max()
-        .unwrap_or(1)
-        .max(1);
-    let bits = 64 - max.leading_zeros() as i32; // max < 2^bits
+        .filter(|c| **c != 0.0)
+        .map(|c| exponent(*c))
+        .min()
+        .unwrap_or(0);
+    let emax = exponent(max(&f).max(1.0));
     let k = if rng.chance(1, 3) {
         0
     } else {
-        rng.range(-140, i64::from(200 - bits)) as i32
+        rng.range(i64::from(-142 - emin), i64::from(200 - emax)) as i32
     };
     let s = pow2(k);
-    let mut f: Vec<P> = pts
-        .iter()
-        .map(|q| [q[0] as f64 * s, q[1] as f64 * s])
-        .collect();
+    f.iter_mut().flatten().for_each(|c| *c *= s);
     if rng.chance(1, 3) {
         // One coordinate of p, a, b, t1 or t2 (not of the hull, which must stay convex).
         let i = rng.range(0, 8) as usize;
@@ -350,21 +390,39 @@ fn adversarial_scene(seed: u64) -> Scene {
         let up = rng.chance(1, 2);
         f[i][c] = nudge(f[i][c], up);
     }
+    let mut hull: Vec<P> = f[9..].to_vec();
+    if !weakly_convex(&hull) {
+        // Rounding bent a straight run of boundary points: keep the corners only.
+        hull = hull
+            .iter()
+            .zip(&corner)
+            .filter(|(_, &c)| c)
+            .map(|(p, _)| *p)
+            .collect();
+    }
     Scene {
         p: f[0],
         a: f[1],
         b: f[2],
         t1: [f[3], f[4], f[5]],
         t2: [f[6], f[7], f[8]],
-        hull: f[9..].to_vec(),
+        hull,
     }
 }
 
-/// Ordinary input: random coordinates of moderate or random magnitude.
+/// Ordinary input: uniform random coordinates in [-100, 100].
 fn random_scene(seed: u64) -> Scene {
+    random_scene_of(seed, false)
+}
+
+/// Wild input: every coordinate of independent random magnitude in [2^-140, 2^200).
+fn wide_scene(seed: u64) -> Scene {
+    random_scene_of(seed, true)
+}
+
+fn random_scene_of(seed: u64, wide: bool) -> Scene {
     let mut rng = Rng::new(seed);
-    let wide = rng.chance(1, 4);
-    let mut coord = |rng: &mut Rng| {
+    let coord = |rng: &mut Rng| {
         if wide {
             let k = rng.range(-140, 199) as i32;
             (rng.unit() * 2.0 - 1.0) * pow2(k)
@@ -372,7 +430,7 @@ fn random_scene(seed: u64) -> Scene {
             rng.unit() * 200.0 - 100.0
         }
     };
-    let mut point = |rng: &mut Rng| [coord(rng), coord(rng)];
+    let point = |rng: &mut Rng| [coord(rng), coord(rng)];
     let p = point(&mut rng);
     let a = point(&mut rng);
     let b = point(&mut rng);
@@ -451,24 +509,21 @@ fn check(s: &Scene) -> Result<(), TestCaseError> {
     Ok(())
 }
 
-/// `circumcenter` is within 256 ulps of the exact circumcenter (its documented bound), and
-/// `rounded`, from `ExactPoint::to_f64`, within half an ulp.
+/// `circumcenter` is within its documented bound of the exact circumcenter (256 ulps of the
+/// larger coordinate), and `rounded`, from `ExactPoint::to_f64`, within half an ulp.
 fn check_circumcenter(
     t: T,
     rounded: &[f64; 2],
     exact: &[BigRational; 2],
 ) -> Result<(), TestCaseError> {
     let got = circumcenter(t[0], t[1], t[2]).expect("not collinear");
+    let two = BigRational::from_integer(2.into());
+    let tolerance = rat(256.0 * ulp(got[0].abs().max(got[1].abs())));
     for i in 0..2 {
-        let (g, r) = (got[i], rounded[i]);
-        prop_assert!(g.is_finite());
-        // The correctly rounded value is within half an ulp of the exact one.
+        prop_assert!(got[i].is_finite());
+        prop_assert!((rat(rounded[i]) - &exact[i]).abs() * &two <= rat(ulp(rounded[i])));
         prop_assert!(
-            (rat(r) - &exact[i]).abs() * BigRational::from_integer(2.into()) <= rat(ulp(r))
-        );
-        // The returned value is within 256 ulps of it.
-        prop_assert!(
-            (rat(g) - &exact[i]).abs() <= rat(256.0 * ulp(g)),
+            (rat(got[i]) - &exact[i]).abs() <= tolerance,
             "{:?} vs exact {:?}",
             got,
             rounded
@@ -478,7 +533,7 @@ fn check_circumcenter(
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(400))]
+    #![proptest_config(ProptestConfig { cases: 400, failure_persistence: None, ..ProptestConfig::default() })]
 
     #[test]
     fn predicates_match_reference_on_adversarial_input(seed in any::<u64>()) {
@@ -491,6 +546,7 @@ proptest! {
     fn predicates_match_reference_on_random_input(seed in any::<u64>()) {
         let _guard = shared();
         check(&random_scene(seed))?;
+        check(&wide_scene(seed))?;
     }
 
     /// The same triangle pair at every scale of the envelope gives the same answers.
@@ -540,7 +596,14 @@ fn right_triangles_on_lattices() {
         // The circumcenter is the point the hypotenuse passes through; a line through c and
         // the midpoint is a median.
         assert_eq!(orient2d_circumcenter(c, mid, tri), Orientation::Collinear);
-        let up = [nudge(a[0], true), a[1]];
+        // Move a off the line (along x unless the line is horizontal).
+        let up = if a[1] != b[1] && a[0] != 0.0 {
+            [nudge(a[0], true), a[1]]
+        } else if a[0] != b[0] && a[1] != 0.0 {
+            [a[0], nudge(a[1], true)]
+        } else {
+            continue;
+        };
         let o = orient2d_circumcenter(up, b, tri);
         let expected = reference::orient(up, b, &reference::circumcenter(tri).unwrap());
         assert_eq!(o, expected);
@@ -571,8 +634,10 @@ fn run_scenes(scene: fn(u64) -> Scene, n: u64) -> FallbackCounts {
 fn fallback_rates() {
     let _guard = exclusive();
     let random = run_scenes(random_scene, 2000);
+    let wide = run_scenes(wide_scene, 2000);
     let adversarial = run_scenes(adversarial_scene, 2000);
     eprintln!("random:      {random:?}");
+    eprintln!("wide:        {wide:?}");
     eprintln!("adversarial: {adversarial:?}");
     let all = |c: &FallbackCounts| {
         [
@@ -583,19 +648,29 @@ fn fallback_rates() {
             c.circumcenter,
         ]
     };
-    for c in all(&random) {
-        assert_eq!(c.calls, 2000);
-        assert!(
-            rate(c) < 0.02,
-            "random input falls back too often: {random:?}"
-        );
+    for c in all(&random)
+        .into_iter()
+        .chain(all(&wide))
+        .chain(all(&adversarial))
+    {
+        assert_eq!(c.calls, 2000, "another test ran predicates concurrently");
     }
-    for c in all(&adversarial) {
-        assert_eq!(c.calls, 2000);
+    // Ordinary input: the filter alone decides the predicates, and the construction is
+    // accepted almost always (measured: 0 and 0.85 %).
+    let [orient, dot, radius, hull, construction] = all(&random);
+    for c in [orient, dot, radius, hull] {
+        assert!(rate(c) < 0.005, "random input falls back: {random:?}");
     }
+    assert!(
+        rate(construction) < 0.02,
+        "random input falls back: {random:?}"
+    );
+    // Adversarial input reaches the exact path in a good share of the cases (measured:
+    // 17 %, 20 %, 39 % and 23 %); the other cases are decided by the filter, either as
+    // clear signs or as zeros computed exactly in f64.
     for c in all(&adversarial).into_iter().take(4) {
         assert!(
-            rate(c) > 0.2,
+            rate(c) > 0.1,
             "adversarial input rarely reaches the exact path: {adversarial:?}"
         );
     }

@@ -561,10 +561,10 @@ fn svg_files_parse_and_sample() {
         let text = std::fs::read_to_string(dir.join(format!("{name}.svg"))).unwrap();
         let curves = svg_dense_curves(&text, 20_000).unwrap();
         let set = CurveSet::new(curves);
-        // A floor stops the grading at corners and at strokes that touch.
-        let diag = 1.0;
+        // A floor stops the grading at corners and where strokes touch (the drawings are
+        // about 100 units across).
         let cfg = SampleConfig {
-            lfs_floor: 0.5 * diag,
+            lfs_floor: 0.5,
             ..SampleConfig::new(0.3)
         };
         let sample = set.eps_sample_with(&cfg, &mut rng);

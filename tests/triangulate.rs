@@ -52,7 +52,11 @@ fn empty_single_and_pair() {
     let one = checked(&[[1.0, 2.0]]);
     assert_eq!(one.hull(), &[0]);
     let two = checked(&[[3.0, 0.0], [1.0, 0.0]]);
-    assert_eq!(two.hull(), &[1, 0], "hull of a chain is in lexicographic order");
+    assert_eq!(
+        two.hull(),
+        &[1, 0],
+        "hull of a chain is in lexicographic order"
+    );
     let same = checked(&[[3.0, 0.0], [3.0, 0.0], [3.0, 0.0]]);
     assert_eq!(same.hull(), &[0]);
     assert_eq!(same.duplicates(), &[[1, 0], [2, 0]]);
@@ -72,7 +76,10 @@ fn single_triangle_is_ccw_whatever_the_input_order() {
 
 #[test]
 fn collinear_points_give_the_chain() {
-    let pts: Vec<[f64; 2]> = [5, 0, 3, 9, 1, 3].iter().map(|&i| [i as f64, 2.0 * i as f64]).collect();
+    let pts: Vec<[f64; 2]> = [5, 0, 3, 9, 1, 3]
+        .iter()
+        .map(|&i| [i as f64, 2.0 * i as f64])
+        .collect();
     let tri = checked(&pts);
     assert!(tri.triangles().is_empty());
     assert_eq!(tri.hull(), &[1, 4, 2, 0, 3]);
@@ -84,7 +91,14 @@ fn collinear_points_give_the_chain() {
 
 #[test]
 fn square_with_duplicates_and_negative_zero() {
-    let pts = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [-0.0, 0.0], [1.0, 1.0]];
+    let pts = [
+        [0.0, 0.0],
+        [1.0, 0.0],
+        [1.0, 1.0],
+        [0.0, 1.0],
+        [-0.0, 0.0],
+        [1.0, 1.0],
+    ];
     let tri = checked(&pts);
     assert_eq!(tri.triangles().len(), 2);
     assert_eq!(tri.duplicates(), &[[4, 0], [5, 2]]);
@@ -94,9 +108,15 @@ fn square_with_duplicates_and_negative_zero() {
 #[test]
 fn integer_grid_is_delaunay_with_collinear_hull_points() {
     let k = 12;
-    let pts: Vec<[f64; 2]> = (0..k * k).map(|i| [(i % k) as f64, (i / k) as f64]).collect();
+    let pts: Vec<[f64; 2]> = (0..k * k)
+        .map(|i| [(i % k) as f64, (i / k) as f64])
+        .collect();
     let tri = checked(&pts);
-    assert_eq!(tri.hull().len(), 4 * (k - 1), "every boundary lattice point is on the hull");
+    assert_eq!(
+        tri.hull().len(),
+        4 * (k - 1),
+        "every boundary lattice point is on the hull"
+    );
     assert_eq!(tri.triangles().len(), 2 * (k - 1) * (k - 1));
     assert_empty_circles(&tri);
 }
@@ -172,13 +192,15 @@ fn ulp_step(x: f64, k: i64) -> f64 {
 
 /// Points on a few lines through lattice points (many collinear runs, also on the hull).
 fn points_on_lines() -> impl Strategy<Value = Vec<[f64; 2]>> {
-    prop::collection::vec(((-5i32..5, -5i32..5), (-3i32..4, -3i32..4), -20i32..20), 3..80).prop_map(
-        |v| {
-            v.into_iter()
-                .map(|((x0, y0), (dx, dy), t)| [(x0 + t * dx) as f64, (y0 + t * dy) as f64])
-                .collect()
-        },
+    prop::collection::vec(
+        ((-5i32..5, -5i32..5), (-3i32..4, -3i32..4), -20i32..20),
+        3..80,
     )
+    .prop_map(|v| {
+        v.into_iter()
+            .map(|((x0, y0), (dx, dy), t)| [(x0 + t * dx) as f64, (y0 + t * dy) as f64])
+            .collect()
+    })
 }
 
 proptest! {

@@ -5,8 +5,8 @@ use num_rational::BigRational;
 use proptest::prelude::*;
 use wdm_crust::predicates::exact::{circumcenter_exact, ExactPoint};
 use wdm_crust::predicates::{in_circumcircle, CirclePosition};
-use wdm_crust::voronoi::{EdgeEnd, Voronoi};
 use wdm_crust::triangulate;
+use wdm_crust::voronoi::{EdgeEnd, Voronoi};
 
 fn rational(x: f64) -> BigRational {
     BigRational::from_float(x).expect("finite")
@@ -29,11 +29,18 @@ fn check_dual(vor: &Voronoi<'_>) {
         assert!(sites.len() >= 3, "vertex {v} has {} sites", sites.len());
         let r2 = squared_distance(&centre, tri.points()[sites[0] as usize]);
         for &p in &sites {
-            assert_eq!(squared_distance(&centre, tri.points()[p as usize]), r2, "vertex {v} not equidistant");
+            assert_eq!(
+                squared_distance(&centre, tri.points()[p as usize]),
+                r2,
+                "vertex {v} not equidistant"
+            );
         }
         // No point strictly inside the circle: it is a Delaunay face.
         for (i, &p) in tri.points().iter().enumerate() {
-            assert!(squared_distance(&centre, p) >= r2, "point {i} inside circle of vertex {v}");
+            assert!(
+                squared_distance(&centre, p) >= r2,
+                "point {i} inside circle of vertex {v}"
+            );
         }
         degree_sum += vor.degree(v);
         for (k, edge) in vor.vertex_edges(v).enumerate() {
@@ -60,9 +67,16 @@ fn check_dual(vor: &Voronoi<'_>) {
         let mut sorted = cell.clone();
         sorted.sort_unstable();
         sorted.dedup();
-        assert_eq!(sorted.len(), cell.len(), "cell {p} repeats a vertex: {cell:?}");
+        assert_eq!(
+            sorted.len(),
+            cell.len(),
+            "cell {p} repeats a vertex: {cell:?}"
+        );
         for &v in &cell {
-            assert!(vor.vertex_sites(v).any(|s| s == p), "cell {p} lists vertex {v}");
+            assert!(
+                vor.vertex_sites(v).any(|s| s == p),
+                "cell {p} lists vertex {v}"
+            );
         }
         cell_sum += cell.len();
     }
@@ -78,7 +92,9 @@ fn check_dual(vor: &Voronoi<'_>) {
 #[test]
 fn integer_grid_vertices_are_square_centres() {
     let k = 9;
-    let pts: Vec<[f64; 2]> = (0..k * k).map(|i| [(i % k) as f64, (i / k) as f64]).collect();
+    let pts: Vec<[f64; 2]> = (0..k * k)
+        .map(|i| [(i % k) as f64, (i / k) as f64])
+        .collect();
     let tri = triangulate(&pts).unwrap();
     let vor = tri.voronoi();
     assert_eq!(vor.vertex_count(), (k - 1) * (k - 1));
@@ -122,7 +138,10 @@ fn lattice_points_on_a_circle_make_one_vertex() {
     assert_eq!(vor.vertex_position(0), [3.0, -7.0]);
     assert_eq!(
         vor.vertex_exact(0),
-        ExactPoint { x: BigRational::from_integer(BigInt::from(3)), y: BigRational::from_integer(BigInt::from(-7)) }
+        ExactPoint {
+            x: BigRational::from_integer(BigInt::from(3)),
+            y: BigRational::from_integer(BigInt::from(-7))
+        }
     );
     assert_eq!(vor.degree(0), pts.len());
     assert_eq!(vor.rays().count(), pts.len());

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 
 use wdm_crust::io::{format_from_path, read_points, ParseError, ParseErrorKind};
 
+use super::timings::{Timings, PROGRESS_BYTES, PROGRESS_POINTS};
 use super::CliError;
 
 /// The input of a subcommand: a file, or standard input for an absent INPUT or `-`.
@@ -29,6 +30,12 @@ impl Input {
         }
     }
 
+    /// The size of the input file in bytes (`None` for standard input or an unreadable file).
+    pub fn file_size(&self) -> Option<u64> {
+        let path = self.path.as_ref()?;
+        std::fs::metadata(path).ok().map(|m| m.len())
+    }
+
     /// Reads all points, in the format implied by the extension or detected from the content.
     pub fn read_points(&self) -> Result<Vec<[f64; 2]>, CliError> {
         let result = match &self.path {
@@ -50,6 +57,17 @@ impl Input {
             }
         };
         result.map_err(|e| self.parse_error(&e))
+    }
+
+    /// Reads all points as the `parse` phase of `timings`, with a progress line for a large
+    /// file; afterwards progress lines are on for the next phases if there are many points.
+    pub fn read_points_timed(&self, timings: &mut Timings) -> Result<Vec<[f64; 2]>, CliError> {
+        timings.progress_if(self.file_size().is_some_and(|bytes| bytes > PROGRESS_BYTES));
+        timings.begin(|| format!("reading {}", self.name()));
+        let points = self.read_points()?;
+        timings.phase("parse", || format!("{} points", points.len()));
+        timings.progress_if(points.len() > PROGRESS_POINTS);
+        Ok(points)
     }
 
     /// `<file>:<line>: <problem>`; exit 2, except for a failing read (exit 1).

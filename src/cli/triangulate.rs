@@ -60,9 +60,9 @@ pub fn run(args: &TriangulateArgs) -> Result<(), CliError> {
     let input = Input::new(args.input.as_deref());
     let output = Output::new(args.output.as_deref())?;
 
-    let points = input.read_points()?;
-    timings.phase("parse", || format!("{} points", points.len()));
+    let points = input.read_points_timed(&mut timings)?;
 
+    timings.begin(|| format!("triangulating {} points", points.len()));
     let tri = wdm_crust::triangulate(&points).map_err(|e| input.library_error(&e))?;
     timings.phase("triangulate", || {
         format!(
@@ -72,6 +72,7 @@ pub fn run(args: &TriangulateArgs) -> Result<(), CliError> {
         )
     });
 
+    timings.begin(|| "writing".to_string());
     output.write(|out| match args.format {
         TriangulateFormat::Json => write_triangulation_json(&tri, out),
         TriangulateFormat::Text => write_triangulation_text(&tri, out),

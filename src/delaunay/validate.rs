@@ -238,9 +238,8 @@ impl Triangulation {
                 continue;
             }
             let t = twin as usize;
-            let opposite = self.points[self.halfedge_origin(
-                next_in_triangle(next_in_triangle(t)),
-            ) as usize];
+            let opposite =
+                self.points[self.halfedge_origin(next_in_triangle(next_in_triangle(t))) as usize];
             let [a, b, c] = self.triangle_points(e / 3);
             if incircle(a, b, c, opposite) == CirclePosition::Inside {
                 return Err(ValidationError::NotLocallyDelaunay { halfedge: e });
@@ -304,6 +303,9 @@ mod tests {
         );
         let mut tri = square_with_centre();
         tri.hull.reverse();
-        assert!(matches!(tri.validate(), Err(ValidationError::HullMismatch(_))));
+        assert!(matches!(
+            tri.validate(),
+            Err(ValidationError::HullMismatch(_))
+        ));
     }
 }

@@ -2,15 +2,24 @@
 //!
 //! * [`read_points`] / [`read_points_from_path`] read plain text, CSV and Triangle `.node` /
 //!   Dey `.gtn` point files (see [`parse`] for the formats and the errors, each with its line).
-//! * [`write_triangulation_json`] and [`write_triangulation_text`] write a
-//!   [`Triangulation`](crate::Triangulation) (see [`output`] for the formats).
+//! * [`write_triangulation_json`] / [`write_triangulation_text`],
+//!   [`write_voronoi_json`] / [`write_voronoi_text`] and
+//!   [`write_reconstruction_json`] / [`write_reconstruction_text`] write a
+//!   [`Triangulation`](crate::Triangulation), a [`Voronoi`](crate::Voronoi) diagram and a
+//!   [`Reconstruction`](crate::Reconstruction) (see [`output`] for the formats).
+//! * [`write_reconstruction_svg`] draws a reconstruction as an SVG picture (see [`svg`]).
 
 mod lines;
 pub mod output;
 pub mod parse;
+pub mod svg;
 
-pub use output::{write_triangulation_json, write_triangulation_text};
+pub use output::{
+    write_reconstruction_json, write_reconstruction_text, write_triangulation_json,
+    write_triangulation_text, write_voronoi_json, write_voronoi_text,
+};
 pub use parse::{
     detect_format, format_from_path, read_points, read_points_from_path, Axis, InputFormat,
     ParseError, ParseErrorKind,
 };
+pub use svg::{write_reconstruction_svg, SvgOptions};

@@ -25,13 +25,57 @@
 //! line, omitted when empty); one `# duplicate d k` line per duplicate `d` of the earlier
 //! point `k`; then one counterclockwise triangle `a b c` per line.
 //!
+//! # Voronoi diagram, JSON
+//!
+//! `{"vertices":[[x,y],...],"edges":[[a,b],...],"rays":[[a,dx,dy],...],"cells":[[v0,v1,...],...]}`
+//! on one line. `vertices` are the circumcenters of the merged Delaunay faces (rounded to
+//! f64); `edges` join two finite vertices; a ray starts at vertex `a` and runs to infinity
+//! along `(dx, dy)`, the outward normal of its hull edge (not normalised); `cells[i]` lists the
+//! vertices of the cell of point `i` counterclockwise (for a hull point: from the vertex of
+//! its outgoing ray to the vertex of its incoming ray). The cell of a duplicate is empty.
+//! Collinear input (and fewer than three distinct points) has no vertex: every array is
+//! empty except `cells`, which holds one empty list per point.
+//!
+//! # Voronoi diagram, text
+//!
+//! One record per line, a letter first, so that `grep '^v '` (etc.) picks one kind:
+//!
+//! ```text
+//! # wdm-crust voronoi: 5 points, 4 vertices, 4 edges, 4 rays
+//! v 1.0 -0.25
+//! e 0 1
+//! r 0 0.0 -1.0
+//! c 0 0 3
+//! ```
+//!
+//! `v x y` is a vertex (numbered from 0 in the order of the `v` lines), `e a b` a finite edge,
+//! `r a dx dy` a ray, `c p v0 v1 ...` the cell of point `p` (one `c` line per point, in order;
+//! just `c p` when the cell is empty). Coordinates are written in Rust's shortest round-trip
+//! form (`0.5`, `1e-7`). For collinear input a `# collinear: ...` comment line follows the
+//! first, then one `# bisector i j` line per pair of consecutive points along the line: the
+//! diagram is their perpendicular bisectors, which have no vertex.
+//!
+//! # Reconstruction, JSON
+//!
+//! `{"algorithm":"wdm","points":N,"edges":[[i,j],...],"curves":[{"closed":true,"points":[...]},...],
+//! "medial_axis":{"vertices":[[x,y],...],"edges":[[a,b],...]}}` on one line: the fields of
+//! [`Reconstruction`] (`edges` with `i < j`, sorted; `curves` as in
+//! [`Curve`](crate::reconstruct::Curve); the medial axis as in
+//! [`MedialAxis`](crate::reconstruct::MedialAxis), empty for the baseline algorithms).
+//!
+//! # Reconstruction, text
+//!
+//! One reconstructed edge `i j` (`i < j`) per line, sorted, nothing else.
+//!
 //! Every writer buffers internally and flushes before returning, so any [`Write`] will do.
 
 use std::io::{self, BufWriter, Write};
 
+use serde::ser::{SerializeSeq, Serializer};
 use serde::Serialize;
 
-use crate::Triangulation;
+use crate::reconstruct::{Curve, MedialAxis};
+use crate::{Reconstruction, Triangulation, Voronoi};
 
 /// Size of the buffer every writer puts in front of its output.
 const BUFFER_BYTES: usize = 1 << 16;
@@ -124,6 +168,206 @@ pub fn write_triangulation_text<W: Write>(tri: &Triangulation, out: W) -> io::Re
         for &i in triangle {
             line.push(i);
         }
+        line.end();
+        out.write_all(&line.as_bytes()[1..])?;
+    }
+    out.flush()
+}
+
+/// The JSON shape of a Voronoi diagram, in the order of the public contract.
+#[derive(Serialize)]
+struct VoronoiJson<'v, 'a> {
+    vertices: &'v [[f64; 2]],
+    edges: Vec<[u32; 2]>,
+    rays: Vec<(u32, f64, f64)>,
+    cells: Cells<'v, 'a>,
+}
+
+/// Serializes the cells one at a time, without holding them all.
+struct Cells<'v, 'a>(&'v Voronoi<'a>);
+
+impl Serialize for Cells<'_, '_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let n = self.0.triangulation().points().len();
+        let mut seq = serializer.serialize_seq(Some(n))?;
+        let mut cell = Vec::new();
+        for p in 0..n as u32 {
+            cell.clear();
+            cell.extend(self.0.cell(p));
+            seq.serialize_element(&cell)?;
+        }
+        seq.end()
+    }
+}
+
+/// Writes `vor` as the contract's JSON object, followed by a newline (see the
+/// [module docs](self)).
+///
+/// # Errors
+/// Any error of `out`.
+///
+/// ```
+/// // A square and its centre: four vertices, four edges, four rays.
+/// let pts = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 0.5]];
+/// let tri = wdm_crust::triangulate(&pts)?;
+/// let mut out = Vec::new();
+/// wdm_crust::io::write_voronoi_json(&tri.voronoi(), &mut out)?;
+/// let json: serde_json::Value = serde_json::from_slice(&out)?;
+/// assert_eq!(json["vertices"].as_array().unwrap().len(), 4);
+/// assert_eq!(json["edges"].as_array().unwrap().len(), 4);
+/// assert_eq!(json["rays"].as_array().unwrap().len(), 4);
+/// assert_eq!(json["cells"][4].as_array().unwrap().len(), 4);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn write_voronoi_json<W: Write>(vor: &Voronoi<'_>, out: W) -> io::Result<()> {
+    let mut out = BufWriter::with_capacity(BUFFER_BYTES, out);
+    let json = VoronoiJson {
+        vertices: vor.vertex_positions(),
+        edges: vor.finite_edges().map(|(_, a, b)| [a, b]).collect(),
+        rays: vor.rays().map(|(_, v, [dx, dy])| (v, dx, dy)).collect(),
+        cells: Cells(vor),
+    };
+    serde_json::to_writer(&mut out, &json)?;
+    out.write_all(b"\n")?;
+    out.flush()
+}
+
+/// Writes `vor` in the line-oriented text format of the [module docs](self).
+///
+/// # Errors
+/// Any error of `out`.
+///
+/// ```
+/// let tri = wdm_crust::triangulate(&[[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]])?;
+/// let mut out = Vec::new();
+/// wdm_crust::io::write_voronoi_text(&tri.voronoi(), &mut out)?;
+/// let text = String::from_utf8(out)?;
+/// let lines: Vec<&str> = text.lines().collect();
+/// assert_eq!(lines[0], "# wdm-crust voronoi: 3 points, 1 vertices, 0 edges, 3 rays");
+/// assert_eq!(lines[1], "v 1.0 1.0");
+/// assert_eq!(lines.iter().filter(|l| l.starts_with("r 0 ")).count(), 3);
+/// assert_eq!(lines.iter().filter(|l| l.starts_with("c ")).count(), 3);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn write_voronoi_text<W: Write>(vor: &Voronoi<'_>, out: W) -> io::Result<()> {
+    let mut out = BufWriter::with_capacity(BUFFER_BYTES, out);
+    let tri = vor.triangulation();
+    let edges: Vec<(u32, u32)> = vor.finite_edges().map(|(_, a, b)| (a, b)).collect();
+    writeln!(
+        out,
+        "# wdm-crust voronoi: {} points, {} vertices, {} edges, {} rays",
+        tri.points().len(),
+        vor.vertex_count(),
+        edges.len(),
+        vor.rays().count()
+    )?;
+    let bisectors = vor.collinear_bisectors();
+    if !bisectors.is_empty() {
+        out.write_all(
+            b"# collinear: no vertices; the diagram is the perpendicular bisectors of these pairs\n",
+        )?;
+        for [a, b] in bisectors {
+            writeln!(out, "# bisector {a} {b}")?;
+        }
+    }
+    for &[x, y] in vor.vertex_positions() {
+        writeln!(out, "v {x:?} {y:?}")?;
+    }
+    let mut line = IndexLine::default();
+    for (a, b) in edges {
+        line.clear();
+        line.push(a);
+        line.push(b);
+        line.end();
+        out.write_all(b"e")?;
+        out.write_all(line.as_bytes())?;
+    }
+    for (_, v, [dx, dy]) in vor.rays() {
+        writeln!(out, "r {v} {dx:?} {dy:?}")?;
+    }
+    for p in 0..tri.points().len() as u32 {
+        line.clear();
+        line.push(p);
+        for v in vor.cell(p) {
+            line.push(v);
+        }
+        line.end();
+        out.write_all(b"c")?;
+        out.write_all(line.as_bytes())?;
+    }
+    out.flush()
+}
+
+/// The JSON shape of a reconstruction, in the order of the public contract.
+#[derive(Serialize)]
+struct ReconstructionJson<'a> {
+    algorithm: &'static str,
+    points: usize,
+    edges: &'a [[u32; 2]],
+    curves: &'a [Curve],
+    medial_axis: &'a MedialAxis,
+}
+
+/// Writes `rec` as the contract's JSON object, followed by a newline (see the
+/// [module docs](self)).
+///
+/// # Errors
+/// Any error of `out`.
+///
+/// ```
+/// // Eight points on a circle: one closed curve.
+/// let octagon: Vec<[f64; 2]> = (0..8)
+///     .map(|k| [(k as f64 * 0.785).cos(), (k as f64 * 0.785).sin()])
+///     .collect();
+/// let rec = wdm_crust::reconstruct(&octagon)?;
+/// let mut out = Vec::new();
+/// wdm_crust::io::write_reconstruction_json(&rec, &mut out)?;
+/// let json = String::from_utf8(out)?;
+/// assert!(json.starts_with("{\"algorithm\":\"wdm\",\"points\":5,\"edges\":[["));
+/// let value: serde_json::Value = serde_json::from_str(&json)?;
+/// assert_eq!(value["edges"].as_array().unwrap().len(), rec.edges().len());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn write_reconstruction_json<W: Write>(rec: &Reconstruction, out: W) -> io::Result<()> {
+    let mut out = BufWriter::with_capacity(BUFFER_BYTES, out);
+    let json = ReconstructionJson {
+        algorithm: rec.algorithm().name(),
+        points: rec.triangulation().points().len(),
+        edges: rec.edges(),
+        curves: rec.curves(),
+        medial_axis: rec.medial_axis(),
+    };
+    serde_json::to_writer(&mut out, &json)?;
+    out.write_all(b"\n")?;
+    out.flush()
+}
+
+/// Writes the edges of `rec`, one `i j` per line (see the [module docs](self)).
+///
+/// # Errors
+/// Any error of `out`.
+///
+/// ```
+/// // Eight points on a circle: one closed curve.
+/// let octagon: Vec<[f64; 2]> = (0..8)
+///     .map(|k| [(k as f64 * 0.785).cos(), (k as f64 * 0.785).sin()])
+///     .collect();
+/// let rec = wdm_crust::reconstruct(&octagon)?;
+/// let mut out = Vec::new();
+/// wdm_crust::io::write_reconstruction_text(&rec, &mut out)?;
+/// let text = String::from_utf8(out)?;
+/// assert_eq!(text.lines().count(), rec.edges().len());
+/// let [i, j] = rec.edges()[0];
+/// assert!(text.starts_with(&format!("{i} {j}\n")));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn write_reconstruction_text<W: Write>(rec: &Reconstruction, out: W) -> io::Result<()> {
+    let mut out = BufWriter::with_capacity(BUFFER_BYTES, out);
+    let mut line = IndexLine::default();
+    for &[i, j] in rec.edges() {
+        line.clear();
+        line.push(i);
+        line.push(j);
         line.end();
         out.write_all(&line.as_bytes()[1..])?;
     }

@@ -130,7 +130,10 @@ mod tests {
         assert_eq!(incircle(a, b, c, [5.0, 5.0]), CirclePosition::Outside);
         // Clockwise input mirrors the answer.
         assert_eq!(incircle(a, c, b, [1.0, 1.0]), CirclePosition::Outside);
-        assert_eq!(in_circumcircle(a, c, b, [1.0, 1.0]), Some(CirclePosition::Inside));
+        assert_eq!(
+            in_circumcircle(a, c, b, [1.0, 1.0]),
+            Some(CirclePosition::Inside)
+        );
         assert_eq!(in_circumcircle(a, b, [4.0, 0.0], [1.0, 1.0]), None);
     }
 }

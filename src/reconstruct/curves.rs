@@ -53,8 +53,8 @@ pub fn assemble(point_count: usize, edges: &[[u32; 2]], points: &[[f64; 2]]) -> 
     curves
 }
 
-/// Points with a degree other than 2 among those with at least one edge, plus isolated
-/// points are not included: the caller decides what an untouched point means.
+/// Points with at least one edge and a degree other than 2: curve ends and junctions.
+/// (Points without any edge are not listed: the caller decides what those mean.)
 pub fn irregular_points(point_count: usize, edges: &[[u32; 2]]) -> Vec<u32> {
     let adjacency = Adjacency::new(point_count, edges);
     (0..point_count as u32)
@@ -103,7 +103,7 @@ fn walk(
 
 /// Reverses a loop if its signed area is negative, then rotates it to start at its smallest
 /// index. (Presentation only: no decision depends on it.)
-fn orient_counterclockwise(cycle: &mut Vec<u32>, points: &[[f64; 2]]) {
+fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]]) {
     let n = cycle.len();
     let mut twice_area = 0.0;
     for i in 0..n {
@@ -160,7 +160,14 @@ mod tests {
     use super::*;
 
     fn square() -> Vec<[f64; 2]> {
-        vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [5.0, 5.0], [6.0, 5.0]]
+        vec![
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 1.0],
+            [0.0, 1.0],
+            [5.0, 5.0],
+            [6.0, 5.0],
+        ]
     }
 
     #[test]
@@ -168,8 +175,20 @@ mod tests {
         let edges = [[0, 3], [2, 3], [1, 2], [0, 1], [4, 5]];
         let curves = assemble(6, &edges, &square());
         assert_eq!(curves.len(), 2);
-        assert_eq!(curves[0], Curve { closed: false, points: vec![4, 5] });
-        assert_eq!(curves[1], Curve { closed: true, points: vec![0, 1, 2, 3] });
+        assert_eq!(
+            curves[0],
+            Curve {
+                closed: false,
+                points: vec![4, 5]
+            }
+        );
+        assert_eq!(
+            curves[1],
+            Curve {
+                closed: true,
+                points: vec![0, 1, 2, 3]
+            }
+        );
         assert!(irregular_points(6, &edges) == vec![4, 5]);
     }
 
@@ -179,7 +198,13 @@ mod tests {
         // 0-1-3-2 with these coordinates is a bow-tie; use a real clockwise square instead.
         let pts = vec![[0.0, 0.0], [0.0, 1.0], [1.0, 0.0], [1.0, 1.0]];
         let curves = assemble(4, &edges, &pts);
-        assert_eq!(curves, vec![Curve { closed: true, points: vec![0, 2, 3, 1] }]);
+        assert_eq!(
+            curves,
+            vec![Curve {
+                closed: true,
+                points: vec![0, 2, 3, 1]
+            }]
+        );
     }
 
     #[test]

@@ -6,7 +6,9 @@
 //! edges joining two inner vertices (the medial axis), assemble the crust into curves
 //! ([`curves`]). Shapes with holes are handled by peeling (see [`Options::peeling`]).
 
+pub mod crust;
 pub mod curves;
+pub mod nn_crust;
 pub mod wdm;
 
 pub use curves::Curve;
@@ -22,6 +24,12 @@ pub enum Algorithm {
     /// WDM_CRUST (Peethambaran, Parakkat, Muthuganapathy): water-flow labeling.
     #[default]
     Wdm,
+    /// The crust of Amenta, Bern and Eppstein: Delaunay edges between samples that survive
+    /// when the Voronoi vertices are added to the point set.
+    Crust,
+    /// The nearest-neighbour crust of Dey and Kumar: each sample's nearest neighbour, plus
+    /// its nearest "half neighbour" on the other side.
+    NnCrust,
 }
 
 impl Algorithm {
@@ -29,6 +37,8 @@ impl Algorithm {
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Wdm => "wdm",
+            Algorithm::Crust => "crust",
+            Algorithm::NnCrust => "nn-crust",
         }
     }
 }
@@ -125,7 +135,8 @@ impl Reconstruction {
         &self.triangulation
     }
 
-    /// The label of every vertex of `self.triangulation().voronoi()` from the first pass.
+    /// The label of every vertex of `self.triangulation().voronoi()` from the first pass
+    /// (empty for the baseline algorithms, which do not label).
     pub fn labels(&self) -> &[Label] {
         &self.labels
     }
@@ -171,6 +182,23 @@ pub fn reconstruct(points: &[[f64; 2]]) -> Result<Reconstruction, Error> {
 /// Reconstruction with explicit [`Options`].
 pub fn reconstruct_with(points: &[[f64; 2]], options: &Options) -> Result<Reconstruction, Error> {
     let triangulation = triangulate(points)?;
+    if options.algorithm != Algorithm::Wdm {
+        let edges = if triangulation.is_degenerate() {
+            chain_edges(&triangulation)
+        } else if options.algorithm == Algorithm::Crust {
+            crust::crust_edges(&triangulation)
+        } else {
+            nn_crust::nn_crust_edges(&triangulation)
+        };
+        return Ok(finish(
+            options.algorithm,
+            triangulation,
+            Vec::new(),
+            edges,
+            MedialAxis::default(),
+            1,
+        ));
+    }
     let (labels, mut edges, first_pass_axis) = {
         let vor = triangulation.voronoi();
         let flow = wdm::label_vertices(&vor, options.label_rule);
@@ -194,22 +222,50 @@ pub fn reconstruct_with(points: &[[f64; 2]], options: &Options) -> Result<Recons
         let combined: Vec<Label> = labels
             .iter()
             .zip(&inside)
-            .map(|(&l, &i)| if l == Label::Inner && i { Label::Inner } else { Label::Outer })
+            .map(|(&l, &i)| {
+                if l == Label::Inner && i {
+                    Label::Inner
+                } else {
+                    Label::Outer
+                }
+            })
             .collect();
         medial_axis(&vor, &combined)
     } else {
         first_pass_axis
     };
+    Ok(finish(
+        options.algorithm,
+        triangulation,
+        labels,
+        edges,
+        medial_axis,
+        passes,
+    ))
+}
+
+/// Sorts the edges and assembles the curves.
+fn finish(
+    algorithm: Algorithm,
+    triangulation: Triangulation,
+    labels: Vec<Label>,
+    mut edges: Vec<[u32; 2]>,
+    medial_axis: MedialAxis,
+    passes: usize,
+) -> Reconstruction {
+    edges.sort_unstable();
+    edges.dedup();
+    let points = triangulation.points();
     let curves = curves::assemble(points.len(), &edges, points);
-    Ok(Reconstruction {
-        algorithm: options.algorithm,
+    Reconstruction {
+        algorithm,
         triangulation,
         labels,
         edges,
         curves,
         medial_axis,
         passes,
-    })
+    }
 }
 
 /// Delaunay edges dual to branch edges. A ray's far end is the root vertex, always outer.

@@ -10,8 +10,7 @@
 use std::cmp::Ordering;
 
 use crate::predicates::exact::{
-    circumcenter_in_convex_hull, compare_circumradius, dot_sign_circumcenters, HullPosition,
-    Sign,
+    circumcenter_in_convex_hull, compare_circumradius, dot_sign_circumcenters, HullPosition, Sign,
 };
 use crate::voronoi::{EdgeEnd, Voronoi};
 
@@ -119,7 +118,11 @@ pub fn label_vertices(vor: &Voronoi<'_>, rule: LabelRule) -> WaterFlow {
 /// depend on the input order). FVVs inside the closed hull are deactivated.
 fn inlets(vor: &Voronoi<'_>, activated: &mut [bool], complement: bool) -> Vec<u32> {
     let tri = vor.triangulation();
-    let hull: Vec<[f64; 2]> = tri.hull().iter().map(|&i| tri.points()[i as usize]).collect();
+    let hull: Vec<[f64; 2]> = tri
+        .hull()
+        .iter()
+        .map(|&i| tri.points()[i as usize])
+        .collect();
     let mut list: Vec<(u32, [f64; 2])> = Vec::new();
     for v in 0..vor.vertex_count() as u32 {
         if !vor.has_ray(v) {

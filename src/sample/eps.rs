@@ -102,6 +102,9 @@ impl CurveSet {
     /// yet the sample is irregular and not much denser than needed. A closed curve gets at
     /// least 3 samples (steps are capped at a third of its dense points).
     ///
+    /// The guarantee holds on the dense points; between two of them the curve is at most half
+    /// a dense spacing farther from a sample.
+    ///
     /// # Panics
     /// If `eps` is not positive.
     pub fn eps_sample_with(&self, config: &SampleConfig, rng: &mut Rng) -> Sample {

@@ -91,7 +91,7 @@ pub fn medial_balls(curves: &[DenseCurve]) -> Vec<MedialBall> {
 /// from 1.1 to 4), i.e. the slack dominates, and `< 1e-15` on a circle (see the tests).
 ///
 /// Cost: `O(N log N)` for generic curves (20 000 points of an ellipse: about 50 ms at
-/// opt-level 2); near-circular arcs are the worst case (a 20 000-point circle: about 0.5 s).
+/// opt-level 2); near-circular arcs are the worst case (a 20 000-point circle: about 0.5–0.9 s).
 ///
 /// ```
 /// use wdm_crust::sample::{local_feature_size, ClosedCurve, Ellipse};

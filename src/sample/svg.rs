@@ -480,7 +480,9 @@ impl Builder {
     }
 }
 
-/// Parses the `d` attribute of a path into subpaths, mapping every point through `m`.
+/// Parses the `d` attribute of a path into subpaths, mapping every point through the affine
+/// map `m = [a, b, c, d, e, f]` in SVG's order (`x' = a x + c y + e`, `y' = b x + d y + f`;
+/// `[1, 0, 0, 1, 0, 0]` is the identity).
 pub fn parse_path_data(d: &str, m: &[f64; 6]) -> Result<Vec<SvgSubpath>, SvgError> {
     let mut lex = Lexer {
         s: d.as_bytes(),

@@ -2,7 +2,10 @@
 //!
 //! Each predicate's polynomial is written once, generic over [`Arith`], and evaluated first
 //! with [`Bounded`] (an `f64` value with a proven bound on its distance from the exact value)
-//! and, only when that bound cannot decide the sign, again with [`BigRational`] (exact).
+//! and, only when that bound cannot decide the sign, again exactly: every finite `f64` is
+//! `m·2^e` with an integer `m`, so the inputs of one call, taken in units of the smallest
+//! `2^e` among them ([`lift_exact`]), are integers, and the (homogeneous) polynomials are
+//! evaluated in [`BigInt`] with no rational normalization at all.
 //!
 //! # The error bound of [`Bounded`]
 //!
@@ -26,7 +29,7 @@
 //! has the sign of `v`; if `v = e = 0`, the exact value is zero; otherwise the caller falls
 //! back to exact arithmetic.
 
-use num_bigint::Sign as BigSign;
+use num_bigint::{BigInt, Sign as BigSign};
 use num_rational::BigRational;
 use num_traits::{ToPrimitive, Zero};
 
@@ -45,8 +48,6 @@ const TWO_SUM_MAX: f64 = 1.0715086071862673e301; // 2^1000
 
 /// Ring operations shared by the filter type and the exact type.
 pub(super) trait Arith: Sized {
-    /// The exact value of a finite `f64` (non-finite inputs map to an unspecified value).
-    fn from_f64(x: f64) -> Self;
     /// `self + other`.
     fn add(&self, other: &Self) -> Self;
     /// `self − other`.
@@ -206,12 +207,15 @@ impl Bounded {
     }
 }
 
-impl Arith for Bounded {
+impl Bounded {
+    /// The exact value `x`.
     #[inline]
-    fn from_f64(x: f64) -> Self {
+    pub(super) fn from_f64(x: f64) -> Bounded {
         Bounded { v: x, e: 0.0 }
     }
+}
 
+impl Arith for Bounded {
     #[inline]
     fn add(&self, other: &Self) -> Self {
         self.add_signed(other, false)
@@ -263,11 +267,31 @@ impl Arith for Bounded {
     }
 }
 
-impl Arith for BigRational {
-    fn from_f64(x: f64) -> Self {
-        BigRational::from_float(x).unwrap_or_else(BigRational::zero)
+impl Arith for BigInt {
+    fn add(&self, other: &Self) -> Self {
+        self + other
     }
 
+    fn sub(&self, other: &Self) -> Self {
+        self - other
+    }
+
+    fn mul(&self, other: &Self) -> Self {
+        self * other
+    }
+
+    fn twice(&self) -> Self {
+        self << 1u32
+    }
+
+    fn sign(&self) -> Option<Sign> {
+        Some(integer_sign(self))
+    }
+}
+
+/// Exact rationals, for the tests: an evaluation independent of [`lift_exact`].
+#[cfg(test)]
+impl Arith for BigRational {
     fn add(&self, other: &Self) -> Self {
         self + other
     }
@@ -281,18 +305,75 @@ impl Arith for BigRational {
     }
 
     fn sign(&self) -> Option<Sign> {
-        Some(rational_sign(self))
+        Some(integer_sign(self.numer()))
     }
 }
 
-/// The exact sign of a rational.
-pub(super) fn rational_sign(x: &BigRational) -> Sign {
-    // The denominator of a `Ratio` is kept positive.
-    match x.numer().sign() {
+/// The exact sign of an integer.
+pub(super) fn integer_sign(x: &BigInt) -> Sign {
+    match x.sign() {
         BigSign::Minus => Sign::Negative,
         BigSign::NoSign => Sign::Zero,
         BigSign::Plus => Sign::Positive,
     }
+}
+
+/// The points as exact filter values.
+pub(super) fn lift_filter<const N: usize>(points: [[f64; 2]; N]) -> [[Bounded; 2]; N] {
+    points.map(|p| p.map(Bounded::from_f64))
+}
+
+/// `x = ±m·2^e` with an odd `m` (or `m = 0`); non-finite values give an unspecified result.
+fn decompose(x: f64) -> (bool, u64, i32) {
+    let bits = x.to_bits();
+    let negative = bits >> 63 == 1;
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    let fraction = bits & ((1u64 << 52) - 1);
+    let (m, e) = if biased == 0 {
+        (fraction, -1074)
+    } else {
+        (fraction | (1u64 << 52), biased - 1075)
+    };
+    if m == 0 {
+        return (negative, 0, 0);
+    }
+    let zeros = m.trailing_zeros();
+    (negative, m >> zeros, e + zeros as i32)
+}
+
+/// The points as integers in units of `2^shift`, the smallest power of two among their
+/// coordinates: `x = X · 2^shift` exactly. Non-finite coordinates become zero.
+pub(super) fn lift_exact<const N: usize>(points: [[f64; 2]; N]) -> ([[BigInt; 2]; N], i32) {
+    let parts = points.map(|p| {
+        p.map(|x| {
+            if x.is_finite() {
+                decompose(x)
+            } else {
+                (false, 0, 0)
+            }
+        })
+    });
+    let shift = parts
+        .iter()
+        .flatten()
+        .filter(|&&(_, m, _)| m != 0)
+        .map(|&(_, _, e)| e)
+        .min()
+        .unwrap_or(0);
+    let lifted = parts.map(|p| {
+        p.map(|(negative, m, e)| {
+            if m == 0 {
+                return BigInt::zero();
+            }
+            let magnitude = BigInt::from(m) << (e - shift).unsigned_abs();
+            if negative {
+                -magnitude
+            } else {
+                magnitude
+            }
+        })
+    });
+    (lifted, shift)
 }
 
 /// `2^k` for `k` in `-1074..=1023` (exactly representable).

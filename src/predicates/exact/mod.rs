@@ -458,33 +458,45 @@ pub fn circumcenter_exact(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Exact
     })
 }
 
-/// The fast path accepts a circumcenter coordinate whose proven error is at most this many
-/// units in the last place (a relative error below 2^-44); otherwise the exact circumcenter
-/// is rounded. The running bound is pessimistic: on well-shaped triangles it is typically
-/// 2–20 ulps while the actual error is about one.
+/// The fast path accepts a circumcenter whose proven error is, in each coordinate, at most
+/// this many units in the last place of its larger coordinate (a normwise relative error of
+/// at most 2^-44); otherwise the exact circumcenter is rounded. The running bound is
+/// pessimistic: on well-shaped triangles it is typically 2–20 ulps while the actual error is
+/// about one.
 const CIRCUMCENTER_ULPS: f64 = 256.0;
 
-/// One coordinate `t0 + u/d` of the circumcenter from scaled filter values, rescaled by
-/// `2^k`, if its proven error is at most [`CIRCUMCENTER_ULPS`] ulps.
-fn fast_coordinate(u: &Bounded, d: &Bounded, t0: f64, k: i32) -> Option<f64> {
-    let o = Bounded::from_f64(t0).add(&u.div(d)?);
-    if o.v == 0.0 && o.e == 0.0 {
-        return Some(0.0);
+/// The circumcenter `t0 + u/d` from filter values of points scaled by `2^-k`, rescaled, if
+/// its proven error is within [`CIRCUMCENTER_ULPS`].
+fn fast_circumcenter(c: &Circ<Bounded>, t0: [f64; 2], k: i32) -> Option<[f64; 2]> {
+    let x = Bounded::from_f64(t0[0]).add(&c.ux.div(&c.d)?);
+    let y = Bounded::from_f64(t0[1]).add(&c.uy.div(&c.d)?);
+    let norm = x.v.abs().max(y.v.abs());
+    if norm == 0.0 {
+        return (x.e == 0.0 && y.e == 0.0).then_some([0.0, 0.0]);
     }
-    let v = o.v * pow2(k);
-    // Both `o.v` and `v` normal: the rescaling is exact and scales the ulp by the same 2^k.
-    let normal = o.v.is_normal() && v.is_normal();
-    (normal && o.e <= CIRCUMCENTER_ULPS * ulp(o.v)).then_some(v)
+    // `!(a <= b)` also rejects NaN.
+    if !norm.is_normal() || !(x.e.max(y.e) <= CIRCUMCENTER_ULPS * ulp(norm)) {
+        return None;
+    }
+    // Undo the scaling; it is exact (and scales the ulp alike) unless a coordinate leaves the
+    // normal range, which the round trip detects.
+    let out = [x.v * pow2(k), y.v * pow2(k)];
+    let exact = out
+        .iter()
+        .zip([x.v, y.v])
+        .all(|(o, v)| o.is_finite() && *o * pow2(-k) == v);
+    (exact && (out[0].abs().max(out[1].abs())).is_normal()).then_some(out)
 }
 
 /// The circumcenter of `a, b, c` in `f64`, or `None` iff they are exactly collinear.
 ///
-/// The result is within 256 units in the last place (relative error below 2^-44) of the exact
-/// circumcenter, as proven by the running error bound of a formula translated to `a` with a
-/// single division; where that bound is larger (nearly collinear triangles, a circumcenter
-/// much closer to the origin than to `a`) the exact circumcenter is computed and correctly
-/// rounded instead. A coordinate beyond the `f64` range (a nearly collinear triangle of huge
-/// points) is infinite.
+/// Each coordinate is within 256 units in the last place of the larger coordinate magnitude
+/// of the exact circumcenter `O` (a normwise relative error of at most 2^-44), as proven by
+/// the running error bound of a formula translated to `a` with one division; where that
+/// bound is larger (nearly collinear triangles, a circumcenter much closer to the origin
+/// than to `a`) the exact circumcenter is computed and correctly rounded instead. A
+/// coordinate beyond the `f64` range (a nearly collinear triangle of huge points) is
+/// infinite.
 ///
 /// ```
 /// use wdm_crust::predicates::exact::circumcenter;
@@ -498,10 +510,8 @@ pub fn circumcenter(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<[f64; 2]> {
     match circ.d.sign() {
         Some(Sign::Zero) => return None,
         Some(_) => {
-            let x = fast_coordinate(&circ.ux, &circ.d, sa[0], k);
-            let y = fast_coordinate(&circ.uy, &circ.d, sa[1], k);
-            if let (Some(x), Some(y)) = (x, y) {
-                return Some([x, y]);
+            if let Some(o) = fast_circumcenter(&circ, sa, k) {
+                return Some(o);
             }
         }
         None => {}

@@ -1,0 +1,66 @@
+//! `reconstruct` never panics. The single pass (no peeling) returns exactly the Delaunay edges
+//! whose dual Voronoi edge joins an inner and an outer vertex, and exactly the inner–inner
+//! finite Voronoi edges as medial axis; peeling only adds edges between points the first pass
+//! left untouched; curves partition the edges; and the result does not depend on the order of
+//! the input points (edges mapped back through the permutation, duplicates to their first
+//! occurrence).
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use wdm_crust::reconstruct::{reconstruct_with, Options};
+use wdm_crust_fuzz::checks::{
+    check_peeled, check_permuted, check_single_pass, expected_error, permute, same_error,
+};
+use wdm_crust_fuzz::fail;
+use wdm_crust_fuzz::scene::{permutation, Scene};
+
+const MAX_POINTS: usize = 600;
+
+fuzz_target!(|scene: Scene| {
+    let points = scene.points(MAX_POINTS);
+    let single_options = Options {
+        peeling: false,
+        ..Options::default()
+    };
+    let single = reconstruct_with(&points, &single_options);
+    let full = wdm_crust::reconstruct(&points);
+    let (single, full) = match (single, full, expected_error(&points)) {
+        (Err(a), Err(b), Some(x)) => {
+            if !same_error(&a, &x) || !same_error(&b, &x) {
+                fail("reconstruct", &points, &format!("errors {a:?}, {b:?}, expected {x:?}"));
+            }
+            return;
+        }
+        (Ok(single), Ok(full), None) => (single, full),
+        (a, b, x) => fail(
+            "reconstruct",
+            &points,
+            &format!("results {:?} / {:?}, expected error {x:?}", a.err(), b.err()),
+        ),
+    };
+    if let Err(e) = check_single_pass(&points, &single) {
+        fail("reconstruct (single pass)", &points, &e);
+    }
+    if let Err(e) = check_peeled(&points, &single, &full) {
+        fail("reconstruct (peeling)", &points, &e);
+    }
+    let perm = permutation(points.len(), scene.order);
+    let shuffled = permute(&points, &perm);
+    for (options, rec, what) in [
+        (single_options, &single, "single pass"),
+        (Options::default(), &full, "peeling"),
+    ] {
+        match reconstruct_with(&shuffled, &options) {
+            Ok(other) => {
+                if let Err(e) = check_permuted(&points, &perm, rec, &other) {
+                    fail(
+                        &format!("reconstruct ({what}) under permutation"),
+                        &points,
+                        &format!("{e}\npermutation: {perm:?}"),
+                    );
+                }
+            }
+            Err(e) => fail("reconstruct (permuted)", &points, &format!("{e}")),
+        }
+    }
+});

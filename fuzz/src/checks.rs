@@ -1,0 +1,1048 @@
+//! Exact oracles for the fuzz targets, shared with `tests/fuzz_regressions.rs` (which includes
+//! this file by path, so it depends only on `wdm_crust`, `num-bigint`, `num-rational`,
+//! `num-traits` and `std`).
+//!
+//! Every checker returns `Err(description)` at the first broken property. References are
+//! written directly in [`BigRational`] arithmetic, independently of the library's filtered,
+//! integer-scaled implementation.
+
+use std::cmp::Ordering;
+use std::collections::{HashMap, HashSet};
+
+use num_rational::BigRational;
+use num_traits::{Signed, ToPrimitive, Zero};
+use wdm_crust::delaunay::NO_TWIN;
+use wdm_crust::predicates::exact::{ExactPoint, HullPosition, Sign};
+use wdm_crust::predicates::{orient2d, CirclePosition, Orientation};
+use wdm_crust::reconstruct::{Curve, Label};
+use wdm_crust::voronoi::{EdgeEnd, Voronoi};
+use wdm_crust::{Error, Reconstruction, Triangulation};
+
+/// The result of a checker.
+pub type Check = Result<(), String>;
+
+macro_rules! ensure {
+    ($cond:expr, $($fmt:tt)+) => {
+        if !$cond {
+            return Err(format!($($fmt)+));
+        }
+    };
+}
+
+// ---------------------------------------------------------------------------------------
+// Reference arithmetic.
+
+/// A point with rational coordinates.
+pub type RPoint = [BigRational; 2];
+
+/// The exact value of a finite `f64`.
+pub fn rat(x: f64) -> BigRational {
+    BigRational::from_float(x).expect("finite coordinate")
+}
+
+/// The exact value of a finite point.
+pub fn rpoint(p: [f64; 2]) -> RPoint {
+    [rat(p[0]), rat(p[1])]
+}
+
+/// The sign of a rational.
+pub fn sign(x: &BigRational) -> Sign {
+    if x.is_positive() {
+        Sign::Positive
+    } else if x.is_negative() {
+        Sign::Negative
+    } else {
+        Sign::Zero
+    }
+}
+
+fn sub(p: &RPoint, q: &RPoint) -> RPoint {
+    [&p[0] - &q[0], &p[1] - &q[1]]
+}
+
+fn cross(v: &RPoint, w: &RPoint) -> BigRational {
+    &v[0] * &w[1] - &v[1] * &w[0]
+}
+
+fn dot(v: &RPoint, w: &RPoint) -> BigRational {
+    &v[0] * &w[0] + &v[1] * &w[1]
+}
+
+/// Squared distance.
+pub fn dist2(p: &RPoint, q: &RPoint) -> BigRational {
+    let d = sub(p, q);
+    dot(&d, &d)
+}
+
+/// The sign of `(b − a) × (c − a)`: positive iff `a, b, c` turn counterclockwise.
+pub fn ref_orient(a: &RPoint, b: &RPoint, c: &RPoint) -> Sign {
+    sign(&cross(&sub(b, a), &sub(c, a)))
+}
+
+/// [`Orientation`] of a reference sign.
+pub fn orientation(s: Sign) -> Orientation {
+    match s {
+        Sign::Positive => Orientation::CounterClockwise,
+        Sign::Negative => Orientation::Clockwise,
+        Sign::Zero => Orientation::Collinear,
+    }
+}
+
+/// The sign of the incircle determinant: positive iff `d` is inside the circle through the
+/// counterclockwise `a, b, c` (mirrored for clockwise ones, as Shewchuk's).
+pub fn ref_incircle(a: &RPoint, b: &RPoint, c: &RPoint, d: &RPoint) -> Sign {
+    let rows = [sub(a, d), sub(b, d), sub(c, d)];
+    let lift = |r: &RPoint| dot(r, r);
+    let det = lift(&rows[0]) * cross(&rows[1], &rows[2]) - lift(&rows[1]) * cross(&rows[0], &rows[2])
+        + lift(&rows[2]) * cross(&rows[0], &rows[1]);
+    sign(&det)
+}
+
+/// [`CirclePosition`] of a reference incircle sign.
+pub fn circle_position(s: Sign) -> CirclePosition {
+    match s {
+        Sign::Positive => CirclePosition::Inside,
+        Sign::Negative => CirclePosition::Outside,
+        Sign::Zero => CirclePosition::On,
+    }
+}
+
+/// The exact circumcenter of a triangle, `None` if it is collinear: the solution of
+/// `2 (p_i − p_0) · O = |p_i|² − |p_0|²` for `i = 1, 2` by Cramer's rule.
+pub fn ref_circumcenter(t: &[[f64; 2]; 3]) -> Option<RPoint> {
+    let [p0, p1, p2] = [rpoint(t[0]), rpoint(t[1]), rpoint(t[2])];
+    let two = BigRational::from_integer(2.into());
+    let r1 = sub(&p1, &p0);
+    let r2 = sub(&p2, &p0);
+    let det = cross(&r1, &r2) * &two;
+    if det.is_zero() {
+        return None;
+    }
+    let n0 = dot(&p0, &p0);
+    let rhs1 = dot(&p1, &p1) - &n0;
+    let rhs2 = dot(&p2, &p2) - &n0;
+    // [2 r1; 2 r2] O = [rhs1; rhs2]
+    let x = (&rhs1 * &r2[1] - &rhs2 * &r1[1]) * &two / &det;
+    let y = (&rhs2 * &r1[0] - &rhs1 * &r2[0]) * &two / &det;
+    Some([x, y])
+}
+
+/// The library's exact point as a reference point.
+pub fn from_exact(p: &ExactPoint) -> RPoint {
+    [p.x.clone(), p.y.clone()]
+}
+
+/// Position of `q` relative to the closed convex counterclockwise polygon `hull` (collinear
+/// boundary points allowed): outside if strictly right of an edge line, inside if strictly
+/// left of all of them, else on the boundary.
+pub fn ref_hull_position(hull: &[RPoint], q: &RPoint) -> HullPosition {
+    let h = hull.len();
+    let mut on = false;
+    for i in 0..h {
+        match ref_orient(&hull[i], &hull[(i + 1) % h], q) {
+            Sign::Negative => return HullPosition::Outside,
+            Sign::Zero => on = true,
+            Sign::Positive => {}
+        }
+    }
+    if on {
+        HullPosition::OnBoundary
+    } else {
+        HullPosition::Inside
+    }
+}
+
+/// The convex hull of the distinct `points`, counterclockwise, by Andrew's monotone chain in
+/// exact arithmetic; with `keep_collinear` the points in the middle of hull edges are kept.
+/// Points outside the exact envelope are ignored. `None` when fewer than three distinct
+/// points or all collinear.
+pub fn exact_hull(points: &[[f64; 2]], keep_collinear: bool) -> Option<Vec<[f64; 2]>> {
+    let mut pts: Vec<[f64; 2]> = points
+        .iter()
+        .copied()
+        .filter(|&p| expected_error(&[p]).is_none())
+        .collect();
+    pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+    pts.dedup_by(|a, b| a[0] == b[0] && a[1] == b[1]);
+    if pts.len() < 3 {
+        return None;
+    }
+    let r: Vec<RPoint> = pts.iter().map(|&p| rpoint(p)).collect();
+    if (2..r.len()).all(|i| ref_orient(&r[0], &r[1], &r[i]) == Sign::Zero) {
+        return None;
+    }
+    let pops = |s: Sign| s == Sign::Negative || (!keep_collinear && s == Sign::Zero);
+    let mut chain = |order: &mut dyn Iterator<Item = usize>| {
+        let mut out: Vec<usize> = Vec::new();
+        for i in order {
+            while out.len() >= 2
+                && pops(ref_orient(&r[out[out.len() - 2]], &r[out[out.len() - 1]], &r[i]))
+            {
+                out.pop();
+            }
+            out.push(i);
+        }
+        out.pop();
+        out
+    };
+    let mut hull = chain(&mut (0..r.len()));
+    hull.extend(chain(&mut (0..r.len()).rev()));
+    Some(hull.into_iter().map(|i| pts[i]).collect())
+}
+
+// ---------------------------------------------------------------------------------------
+// Input validation and duplicates.
+
+/// The error `triangulate` must return for `points`, if any: the first coordinate (x before
+/// y) that is not finite or outside `{0} ∪ [2^-142, 2^201]`.
+pub fn expected_error(points: &[[f64; 2]]) -> Option<Error> {
+    let min = f64::from_bits((1023 - 142) << 52);
+    let max = f64::from_bits((1023 + 201) << 52);
+    for (index, p) in points.iter().enumerate() {
+        for &value in p {
+            if !value.is_finite() {
+                return Some(Error::NotFinite { index, value });
+            }
+            if value != 0.0 && value.abs() < min {
+                return Some(Error::TooSmall { index, value });
+            }
+            if value.abs() > max {
+                return Some(Error::TooLarge { index, value });
+            }
+        }
+    }
+    None
+}
+
+/// Equal errors, with NaN values compared by bits.
+pub fn same_error(a: &Error, b: &Error) -> bool {
+    use Error::*;
+    match (a, b) {
+        (NotFinite { index: i, value: x }, NotFinite { index: j, value: y })
+        | (TooSmall { index: i, value: x }, TooSmall { index: j, value: y })
+        | (TooLarge { index: i, value: x }, TooLarge { index: j, value: y }) => {
+            i == j && x.to_bits() == y.to_bits()
+        }
+        _ => a == b,
+    }
+}
+
+/// For every point, the index of the first point with the same coordinates (`-0.0 == 0.0`).
+pub fn first_occurrence(points: &[[f64; 2]]) -> Vec<usize> {
+    let key = |p: [f64; 2]| ((p[0] + 0.0).to_bits(), (p[1] + 0.0).to_bits());
+    let mut seen: HashMap<(u64, u64), usize> = HashMap::new();
+    points
+        .iter()
+        .enumerate()
+        .map(|(i, &p)| *seen.entry(key(p)).or_insert(i))
+        .collect()
+}
+
+// ---------------------------------------------------------------------------------------
+// Triangulation.
+
+/// `triangulate(points)` gave `result`: the right error, or a valid triangulation of exactly
+/// these points with every duplicate reported against its first occurrence.
+pub fn check_triangulate(points: &[[f64; 2]], result: &Result<Triangulation, Error>) -> Check {
+    let tri = match (result, expected_error(points)) {
+        (Err(e), Some(x)) => {
+            ensure!(same_error(e, &x), "error {e:?}, expected {x:?}");
+            return Ok(());
+        }
+        (Err(e), None) => return Err(format!("unexpected error {e:?}")),
+        (Ok(_), Some(x)) => return Err(format!("accepted points, expected {x:?}")),
+        (Ok(tri), None) => tri,
+    };
+    ensure!(
+        tri.points().len() == points.len()
+            && tri
+                .points()
+                .iter()
+                .zip(points)
+                .all(|(a, b)| a[0].to_bits() == b[0].to_bits() && a[1].to_bits() == b[1].to_bits()),
+        "points() differ from the input"
+    );
+    tri.validate().map_err(|e| format!("validate: {e}"))?;
+    let first = first_occurrence(points);
+    let expected: Vec<[u32; 2]> = first
+        .iter()
+        .enumerate()
+        .filter(|&(i, &k)| i != k)
+        .map(|(i, &k)| [i as u32, k as u32])
+        .collect();
+    ensure!(
+        tri.duplicates() == expected.as_slice(),
+        "duplicates {:?}, expected {:?}",
+        tri.duplicates(),
+        expected
+    );
+    let distinct: Vec<usize> = (0..points.len()).filter(|&i| first[i] == i).collect();
+    ensure!(
+        tri.distinct_point_count() == distinct.len(),
+        "distinct_point_count"
+    );
+    let collinear = distinct.len() < 3 || {
+        let r: Vec<RPoint> = distinct.iter().map(|&i| rpoint(points[i])).collect();
+        (2..r.len()).all(|i| ref_orient(&r[0], &r[1], &r[i]) == Sign::Zero)
+    };
+    ensure!(
+        tri.is_degenerate() == collinear,
+        "is_degenerate() = {}, collinear = {collinear}",
+        tri.is_degenerate()
+    );
+    if !tri.is_degenerate() {
+        // Every distinct point is a corner (validate checks it too) and the half-edge
+        // accessors agree with the arrays.
+        for e in 0..tri.halfedges().len() {
+            let [a, b, c] = tri.triangles()[e / 3];
+            let (o, d) = match e % 3 {
+                0 => (a, b),
+                1 => (b, c),
+                _ => (c, a),
+            };
+            ensure!(
+                tri.halfedge_origin(e) == o && tri.halfedge_destination(e) == d,
+                "half-edge {e} endpoints"
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Two triangulations are identical arrays (used for exact scaling and for permutations
+/// mapped back).
+pub fn check_same_triangulation(a: &Triangulation, b: &Triangulation) -> Check {
+    ensure!(a.triangles() == b.triangles(), "triangles differ");
+    ensure!(a.halfedges() == b.halfedges(), "halfedges differ");
+    ensure!(a.hull() == b.hull(), "hulls differ: {:?} vs {:?}", a.hull(), b.hull());
+    ensure!(a.duplicates() == b.duplicates(), "duplicates differ");
+    Ok(())
+}
+
+/// Scales every coordinate by `2^k` exactly, or `None` if some coordinate would round or
+/// leave the envelope.
+pub fn scaled(points: &[[f64; 2]], k: i32) -> Option<Vec<[f64; 2]>> {
+    let s = f64::from_bits(((k + 1023) as u64) << 52);
+    let back = f64::from_bits(((1023 - k) as u64) << 52);
+    let out: Vec<[f64; 2]> = points.iter().map(|p| [p[0] * s, p[1] * s]).collect();
+    let exact = out
+        .iter()
+        .zip(points)
+        .all(|(q, p)| q[0] * back == p[0] && q[1] * back == p[1]);
+    (exact && expected_error(&out).is_none()).then_some(out)
+}
+
+// ---------------------------------------------------------------------------------------
+// Voronoi.
+
+fn same_point(a: &RPoint, b: &RPoint) -> bool {
+    a[0] == b[0] && a[1] == b[1]
+}
+
+/// Distance in units in the last place of `expected`, for finite normal values.
+fn ulps_apart(got: f64, expected: f64) -> f64 {
+    if got == expected {
+        return 0.0;
+    }
+    let ulp = f64::from_bits(expected.abs().to_bits() + 1) - expected.abs();
+    ((got - expected) / ulp).abs()
+}
+
+/// The Voronoi dual is consistent with its triangulation, both ways, exactly: every vertex is
+/// the common circumcenter of its merged face and equidistant from its sites; adjacent
+/// vertices have different circles; edges, rays and cells agree with each other and with the
+/// half-edges; Euler's formula holds.
+pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
+    let tri = vor.triangulation();
+    let n = tri.points().len();
+    let pts = tri.points();
+    let first = first_occurrence(pts);
+    let halfedges = tri.halfedges();
+    let vcount = vor.vertex_count();
+    if tri.is_degenerate() {
+        ensure!(vcount == 0, "degenerate input with {vcount} vertices");
+        ensure!(vor.finite_edges().count() == 0, "degenerate: finite edges");
+        ensure!(vor.rays().count() == 0, "degenerate: rays");
+        for p in 0..n as u32 {
+            ensure!(vor.cell(p).count() == 0, "degenerate: cell {p} not empty");
+            ensure!(!vor.is_cell_bounded(p), "degenerate: cell {p} bounded");
+        }
+        let expected: Vec<[u32; 2]> = tri.hull().windows(2).map(|w| [w[0], w[1]]).collect();
+        ensure!(vor.collinear_bisectors() == expected, "collinear bisectors");
+        return Ok(());
+    }
+    ensure!(vor.collinear_bisectors().is_empty(), "bisectors on a 2D input");
+
+    // Centres: the exact circumcenter of every triangle is the one of its vertex.
+    let centres: Vec<RPoint> = (0..vcount as u32)
+        .map(|v| from_exact(&vor.vertex_exact(v)))
+        .collect();
+    let mut triangles_of = vec![0usize; vcount];
+    for t in 0..tri.triangles().len() {
+        let v = vor.vertex_of_triangle(t) as usize;
+        ensure!(v < vcount, "triangle {t} has vertex {v} of {vcount}");
+        triangles_of[v] += 1;
+        let c = ref_circumcenter(&tri.triangle_points(t))
+            .ok_or_else(|| format!("triangle {t} is collinear"))?;
+        ensure!(
+            same_point(&c, &centres[v]),
+            "triangle {t}: circumcenter differs from vertex_exact({v})"
+        );
+    }
+
+    // Vertices: sites, positions, edges.
+    let mut seen_halfedge = vec![false; halfedges.len()];
+    let mut incidences = 0usize;
+    let mut cell_edges: HashSet<(u32, u32, u32)> = HashSet::new();
+    let mut ray_of_origin: HashMap<u32, u32> = HashMap::new();
+    let mut ray_of_destination: HashMap<u32, u32> = HashMap::new();
+    for v in 0..vcount as u32 {
+        let c = &centres[v as usize];
+        let sites: Vec<u32> = vor.vertex_sites(v).collect();
+        let k = sites.len();
+        ensure!(k >= 3, "vertex {v} has {k} sites");
+        ensure!(vor.degree(v) == k, "vertex {v}: degree {} vs {k} sites", vor.degree(v));
+        ensure!(
+            triangles_of[v as usize] == k - 2,
+            "vertex {v}: {} triangles for a {k}-gon",
+            triangles_of[v as usize]
+        );
+        incidences += k;
+        let r2 = dist2(c, &rpoint(pts[sites[0] as usize]));
+        for (i, &s) in sites.iter().enumerate() {
+            ensure!((s as usize) < n && first[s as usize] == s as usize, "vertex {v}: bad site {s}");
+            ensure!(
+                dist2(c, &rpoint(pts[s as usize])) == r2,
+                "vertex {v}: site {s} not on the circle"
+            );
+            let (a, b, d) = (
+                pts[s as usize],
+                pts[sites[(i + 1) % k] as usize],
+                pts[sites[(i + 2) % k] as usize],
+            );
+            ensure!(
+                orient2d(a, b, d) == Orientation::CounterClockwise,
+                "vertex {v}: sites not strictly convex counterclockwise at {i}"
+            );
+        }
+        let pos = vor.vertex_position(v);
+        let rounded = [
+            c[0].to_f64().unwrap_or(f64::NAN),
+            c[1].to_f64().unwrap_or(f64::NAN),
+        ];
+        for axis in 0..2 {
+            let (g, x) = (pos[axis], rounded[axis]);
+            let ok = if x.is_finite() && x.abs() >= f64::MIN_POSITIVE {
+                ulps_apart(g, x) <= 256.0
+            } else {
+                // Subnormal, zero or beyond the range: only require the same rounding class.
+                g == x || (x.abs() < f64::MIN_POSITIVE && g.abs() <= f64::MIN_POSITIVE)
+            };
+            ensure!(ok, "vertex {v}: position {pos:?} far from exact {rounded:?}");
+        }
+        let own = ref_circumcenter(&vor.vertex_triangle(v))
+            .ok_or_else(|| format!("vertex {v}: vertex_triangle is collinear"))?;
+        ensure!(same_point(&own, c), "vertex {v}: vertex_triangle has another circle");
+        let mut has_ray = false;
+        for (i, edge) in vor.vertex_edges(v).enumerate() {
+            let e = edge.halfedge as usize;
+            ensure!(e < halfedges.len(), "vertex {v}: half-edge {e} out of range");
+            ensure!(!seen_halfedge[e], "half-edge {e} is the dual of two Voronoi edges");
+            seen_halfedge[e] = true;
+            ensure!(edge.from == v, "edge {e}: from {} at vertex {v}", edge.from);
+            ensure!(vor.vertex_of_halfedge(edge.halfedge) == v, "edge {e}: face is not {v}");
+            ensure!(
+                edge.sites == [sites[i], sites[(i + 1) % k]]
+                    && edge.sites
+                        == [tri.halfedge_origin(e), tri.halfedge_destination(e)],
+                "edge {e}: sites {:?}",
+                edge.sites
+            );
+            ensure!(vor.has_dual(edge.halfedge), "edge {e}: has_dual false");
+            ensure!(vor.edge(edge.halfedge) == edge, "edge({e}) differs from vertex_edges");
+            let [s0, s1] = edge.sites;
+            match edge.to {
+                EdgeEnd::Infinity => {
+                    ensure!(halfedges[e] == NO_TWIN, "edge {e}: ray but the half-edge has a twin");
+                    has_ray = true;
+                    ensure!(
+                        ray_of_origin.insert(s0, v).is_none()
+                            && ray_of_destination.insert(s1, v).is_none(),
+                        "two rays out of one hull point"
+                    );
+                }
+                EdgeEnd::Vertex(u) => {
+                    let twin = halfedges[e];
+                    ensure!(twin != NO_TWIN, "edge {e}: finite but on the hull");
+                    ensure!((u as usize) < vcount && u != v, "edge {e}: to {u} from {v}");
+                    ensure!(vor.vertex_of_halfedge(twin) == u, "edge {e}: twin not in {u}");
+                    let back = vor.edge(twin);
+                    ensure!(
+                        back.from == u && back.to == EdgeEnd::Vertex(v) && back.sites == [s1, s0],
+                        "edge {e}: the reverse edge does not match"
+                    );
+                    ensure!(
+                        !same_point(c, &centres[u as usize]),
+                        "adjacent vertices {v} and {u} share their circumcenter: not merged"
+                    );
+                    for s in [s0, s1] {
+                        cell_edges.insert((v.min(u), v.max(u), s));
+                    }
+                }
+            }
+        }
+        ensure!(vor.has_ray(v) == has_ray, "vertex {v}: has_ray");
+    }
+    for (e, &twin) in halfedges.iter().enumerate() {
+        let dual = twin == NO_TWIN
+            || vor.vertex_of_halfedge(e as u32) != vor.vertex_of_halfedge(twin);
+        ensure!(vor.has_dual(e as u32) == dual, "has_dual({e})");
+        ensure!(
+            seen_halfedge[e] == dual,
+            "half-edge {e}: dual {dual} but listed {}",
+            seen_halfedge[e]
+        );
+    }
+
+    // Finite edges and rays.
+    let mut finite = 0usize;
+    for (e, a, b) in vor.finite_edges() {
+        let twin = halfedges[e as usize];
+        ensure!(twin != NO_TWIN && e < twin, "finite edge {e}: twin {twin}");
+        ensure!(
+            a == vor.vertex_of_halfedge(e) && b == vor.vertex_of_halfedge(twin) && a != b,
+            "finite edge {e}: ends"
+        );
+        finite += 1;
+    }
+    let dual_interior = (0..halfedges.len())
+        .filter(|&e| seen_halfedge[e] && halfedges[e] != NO_TWIN)
+        .count();
+    ensure!(2 * finite == dual_interior, "finite_edges lists {finite} of {dual_interior}/2");
+    let mut rays = 0usize;
+    for (e, v, dir) in vor.rays() {
+        ensure!(halfedges[e as usize] == NO_TWIN, "ray {e} has a twin");
+        ensure!(vor.vertex_of_halfedge(e) == v, "ray {e}: vertex");
+        let a = pts[tri.halfedge_origin(e as usize) as usize];
+        let b = pts[tri.halfedge_destination(e as usize) as usize];
+        ensure!(
+            dir == [b[1] - a[1], a[0] - b[0]] && dir == vor.ray_direction(e),
+            "ray {e}: direction"
+        );
+        rays += 1;
+    }
+    ensure!(rays == tri.hull().len(), "{rays} rays for {} hull edges", tri.hull().len());
+    let distinct = tri.distinct_point_count();
+    ensure!(
+        (vcount + 1) + distinct == (finite + rays) + 2,
+        "Euler: V={vcount} E={finite}+{rays} F={distinct}"
+    );
+
+    // Cells, both ways.
+    let mut on_hull = vec![false; n];
+    for &h in tri.hull() {
+        on_hull[h as usize] = true;
+    }
+    let mut vertices_of_site: Vec<Vec<u32>> = vec![Vec::new(); n];
+    for v in 0..vcount as u32 {
+        for s in vor.vertex_sites(v) {
+            vertices_of_site[s as usize].push(v);
+        }
+    }
+    let mut cell_incidences = 0usize;
+    for p in 0..n as u32 {
+        let cell: Vec<u32> = vor.cell(p).collect();
+        if first[p as usize] != p as usize {
+            ensure!(cell.is_empty(), "duplicate {p} has a cell");
+            ensure!(!vor.is_cell_bounded(p), "duplicate {p} has a bounded cell");
+            continue;
+        }
+        let bounded = vor.is_cell_bounded(p);
+        ensure!(bounded == !on_hull[p as usize], "point {p}: is_cell_bounded {bounded}");
+        let mut sorted = cell.clone();
+        sorted.sort_unstable();
+        let mut expected = vertices_of_site[p as usize].clone();
+        expected.sort_unstable();
+        ensure!(
+            sorted == expected,
+            "cell {p} lists {cell:?}, its vertices are {expected:?}"
+        );
+        cell_incidences += cell.len();
+        let m = cell.len();
+        let links = if bounded { m } else { m.saturating_sub(1) };
+        for i in 0..links {
+            let (a, b) = (cell[i], cell[(i + 1) % m]);
+            ensure!(
+                cell_edges.contains(&(a.min(b), a.max(b), p)),
+                "cell {p}: no Voronoi edge of p between consecutive {a} and {b}"
+            );
+        }
+        if bounded {
+            ensure!(m >= 3, "bounded cell {p} has {m} vertices");
+        } else {
+            ensure!(
+                cell.first() == ray_of_origin.get(&p) && cell.last() == ray_of_destination.get(&p),
+                "unbounded cell {p}: {cell:?} does not run from the outgoing ray to the incoming one"
+            );
+        }
+    }
+    ensure!(cell_incidences == incidences, "cells and vertex sites disagree");
+    Ok(())
+}
+
+// ---------------------------------------------------------------------------------------
+// Reconstruction.
+
+fn key(a: u32, b: u32) -> [u32; 2] {
+    [a.min(b), a.max(b)]
+}
+
+/// Curves partition the edges: every edge in exactly one curve, loops of degree-2 points,
+/// chains between points of degree ≠ 2; every point with an edge is in a curve.
+pub fn check_curves(n: usize, edges: &[[u32; 2]], curves: &[Curve]) -> Check {
+    let mut degree = vec![0usize; n];
+    for &[a, b] in edges {
+        degree[a as usize] += 1;
+        degree[b as usize] += 1;
+    }
+    let mut from_curves: Vec<[u32; 2]> = Vec::new();
+    let mut in_curve = vec![false; n];
+    for (ci, c) in curves.iter().enumerate() {
+        let m = c.points.len();
+        ensure!(m >= if c.closed { 3 } else { 2 }, "curve {ci}: {m} points");
+        for &p in &c.points {
+            ensure!((p as usize) < n, "curve {ci}: point {p} out of range");
+            in_curve[p as usize] = true;
+        }
+        let links = if c.closed { m } else { m - 1 };
+        for i in 0..links {
+            from_curves.push(key(c.points[i], c.points[(i + 1) % m]));
+        }
+        if c.closed {
+            let mut s = c.points.clone();
+            s.sort_unstable();
+            s.dedup();
+            ensure!(s.len() == m, "closed curve {ci} repeats a point");
+            ensure!(
+                c.points.iter().all(|&p| degree[p as usize] == 2),
+                "closed curve {ci} has a point of degree ≠ 2"
+            );
+        } else {
+            ensure!(
+                c.points[1..m - 1].iter().all(|&p| degree[p as usize] == 2),
+                "open curve {ci}: inner point of degree ≠ 2"
+            );
+            ensure!(
+                degree[c.points[0] as usize] != 2 && degree[c.points[m - 1] as usize] != 2,
+                "open curve {ci} ends at a point of degree 2"
+            );
+        }
+    }
+    from_curves.sort_unstable();
+    ensure!(
+        from_curves == edges,
+        "curves cover {} edges, {} expected (or differ)",
+        from_curves.len(),
+        edges.len()
+    );
+    ensure!(
+        (0..n).all(|p| degree[p] == 0 || in_curve[p]),
+        "a point with an edge is in no curve"
+    );
+    Ok(())
+}
+
+/// Edges sorted, unique, `i < j`, between distinct (kept) points in range.
+fn check_edge_list(points: &[[f64; 2]], edges: &[[u32; 2]]) -> Check {
+    let first = first_occurrence(points);
+    ensure!(edges.windows(2).all(|w| w[0] < w[1]), "edges not sorted and unique");
+    for &[a, b] in edges {
+        ensure!(a < b && (b as usize) < points.len(), "edge [{a}, {b}]");
+        ensure!(
+            first[a as usize] == a as usize && first[b as usize] == b as usize,
+            "edge [{a}, {b}] touches a duplicate"
+        );
+    }
+    Ok(())
+}
+
+/// The API's untouched and irregular points agree with the edges.
+fn check_point_classes(rec: &Reconstruction, points: &[[f64; 2]]) -> Check {
+    let n = points.len();
+    let first = first_occurrence(points);
+    let mut degree = vec![0usize; n];
+    for &[a, b] in rec.edges() {
+        degree[a as usize] += 1;
+        degree[b as usize] += 1;
+    }
+    let untouched: Vec<u32> = (0..n as u32)
+        .filter(|&p| first[p as usize] == p as usize && degree[p as usize] == 0)
+        .collect();
+    ensure!(rec.untouched_points() == untouched, "untouched_points()");
+    let irregular: Vec<u32> = (0..n as u32)
+        .filter(|&p| degree[p as usize] != 0 && degree[p as usize] != 2)
+        .collect();
+    ensure!(rec.irregular_points() == irregular, "irregular_points()");
+    Ok(())
+}
+
+/// A single-pass reconstruction (`peeling: false`) of `points`: its triangulation is
+/// `triangulate(points)`; with triangles, its edges are exactly the Delaunay edges whose dual
+/// Voronoi edge joins an inner and an outer vertex (a ray counting as outer at infinity), and
+/// its medial axis exactly the finite Voronoi edges between inner vertices; without, the chain
+/// along the line. Curves partition the edges.
+pub fn check_single_pass(points: &[[f64; 2]], rec: &Reconstruction) -> Check {
+    let tri = rec.triangulation();
+    let fresh = wdm_crust::triangulate(points).map_err(|e| format!("triangulate: {e}"))?;
+    check_same_triangulation(tri, &fresh)?;
+    check_edge_list(points, rec.edges())?;
+    ensure!(rec.passes() == 1, "single pass ran {} passes", rec.passes());
+    check_curves(points.len(), rec.edges(), rec.curves())?;
+    check_point_classes(rec, points)?;
+    let vor = tri.voronoi();
+    let labels = rec.labels();
+    ensure!(
+        labels.len() == vor.vertex_count(),
+        "{} labels for {} vertices",
+        labels.len(),
+        vor.vertex_count()
+    );
+    if tri.is_degenerate() {
+        let mut chain: Vec<[u32; 2]> = tri.hull().windows(2).map(|w| key(w[0], w[1])).collect();
+        chain.sort_unstable();
+        ensure!(rec.edges() == chain, "collinear input: edges are not the chain");
+        ensure!(rec.medial_axis().edges.is_empty(), "collinear input: medial axis");
+        return Ok(());
+    }
+    let mut delaunay: HashSet<[u32; 2]> = HashSet::new();
+    for e in 0..tri.halfedges().len() {
+        delaunay.insert(key(tri.halfedge_origin(e), tri.halfedge_destination(e)));
+    }
+    for &[a, b] in rec.edges() {
+        ensure!(delaunay.contains(&[a, b]), "edge [{a}, {b}] is not a Delaunay edge");
+    }
+    let mut crust: Vec<[u32; 2]> = Vec::new();
+    let mut axis_positions: Vec<[u64; 4]> = Vec::new();
+    let bits = |p: [f64; 2]| [p[0].to_bits(), p[1].to_bits()];
+    for (e, a, b) in vor.finite_edges() {
+        let (la, lb) = (labels[a as usize], labels[b as usize]);
+        if la != lb {
+            crust.push(key(
+                tri.halfedge_origin(e as usize),
+                tri.halfedge_destination(e as usize),
+            ));
+        } else if la == Label::Inner {
+            let (pa, pb) = (bits(vor.vertex_position(a)), bits(vor.vertex_position(b)));
+            let (lo, hi) = if pa <= pb { (pa, pb) } else { (pb, pa) };
+            axis_positions.push([lo[0], lo[1], hi[0], hi[1]]);
+        }
+    }
+    for (e, v, _) in vor.rays() {
+        if labels[v as usize] == Label::Inner {
+            crust.push(key(
+                tri.halfedge_origin(e as usize),
+                tri.halfedge_destination(e as usize),
+            ));
+        }
+    }
+    crust.sort_unstable();
+    ensure!(
+        crust.windows(2).all(|w| w[0] != w[1]),
+        "a Delaunay edge is dual to two branch edges"
+    );
+    if crust != rec.edges() {
+        let got: HashSet<[u32; 2]> = rec.edges().iter().copied().collect();
+        let want: HashSet<[u32; 2]> = crust.iter().copied().collect();
+        let extra: Vec<_> = got.difference(&want).collect();
+        let missing: Vec<_> = want.difference(&got).collect();
+        return Err(format!(
+            "edges are not the branch edges: extra {extra:?}, missing {missing:?}"
+        ));
+    }
+    let axis = rec.medial_axis();
+    let mut got: Vec<[u64; 4]> = Vec::new();
+    for &[a, b] in &axis.edges {
+        ensure!(
+            a < b && (b as usize) < axis.vertices.len(),
+            "medial axis edge [{a}, {b}]"
+        );
+        let (pa, pb) = (
+            bits(axis.vertices[a as usize]),
+            bits(axis.vertices[b as usize]),
+        );
+        let (lo, hi) = if pa <= pb { (pa, pb) } else { (pb, pa) };
+        got.push([lo[0], lo[1], hi[0], hi[1]]);
+    }
+    got.sort_unstable();
+    axis_positions.sort_unstable();
+    ensure!(
+        got == axis_positions,
+        "medial axis: {} segments, {} finite inner-inner edges (or different)",
+        got.len(),
+        axis_positions.len()
+    );
+    Ok(())
+}
+
+/// The default reconstruction (peeling) extends the single pass: same triangulation and
+/// labels, a superset of its edges, new edges only between points the first pass left
+/// untouched; curves partition the edges.
+pub fn check_peeled(points: &[[f64; 2]], single: &Reconstruction, full: &Reconstruction) -> Check {
+    check_same_triangulation(single.triangulation(), full.triangulation())?;
+    check_edge_list(points, full.edges())?;
+    check_curves(points.len(), full.edges(), full.curves())?;
+    check_point_classes(full, points)?;
+    ensure!(single.labels() == full.labels(), "labels differ from the single pass");
+    let base: HashSet<[u32; 2]> = single.edges().iter().copied().collect();
+    let untouched: HashSet<u32> = single.untouched_points().into_iter().collect();
+    for e in single.edges() {
+        ensure!(full.edges().binary_search(e).is_ok(), "peeling lost edge {e:?}");
+    }
+    for e in full.edges().iter().filter(|e| !base.contains(*e)) {
+        ensure!(
+            untouched.contains(&e[0]) && untouched.contains(&e[1]),
+            "peeled edge {e:?} touches a point of an earlier pass"
+        );
+    }
+    ensure!(
+        full.passes() > 1 || full.edges() == single.edges(),
+        "one pass but different edges"
+    );
+    if full.passes() == 1 {
+        ensure!(
+            full.medial_axis() == single.medial_axis(),
+            "one pass but a different medial axis"
+        );
+    }
+    Ok(())
+}
+
+/// Sorted medial-axis segments as coordinate bits, independent of vertex numbering.
+pub fn axis_segments(rec: &Reconstruction) -> Vec<[u64; 4]> {
+    let axis = rec.medial_axis();
+    let bits = |p: [f64; 2]| [p[0].to_bits(), p[1].to_bits()];
+    let mut out: Vec<[u64; 4]> = axis
+        .edges
+        .iter()
+        .map(|&[a, b]| {
+            let (pa, pb) = (
+                bits(axis.vertices[a as usize]),
+                bits(axis.vertices[b as usize]),
+            );
+            let (lo, hi) = if pa <= pb { (pa, pb) } else { (pb, pa) };
+            [lo[0], lo[1], hi[0], hi[1]]
+        })
+        .collect();
+    out.sort_unstable();
+    out
+}
+
+/// `permuted[i] = points[perm[i]]` reconstructs to the same curves: its edges mapped back
+/// through `perm` (and each duplicate to its first occurrence in `points`) are `rec`'s edges;
+/// the medial axis and the label counts are the same.
+pub fn check_permuted(
+    points: &[[f64; 2]],
+    perm: &[usize],
+    rec: &Reconstruction,
+    permuted: &Reconstruction,
+) -> Check {
+    let first = first_occurrence(points);
+    let back = |i: u32| first[perm[i as usize]] as u32;
+    let mut mapped: Vec<[u32; 2]> = permuted
+        .edges()
+        .iter()
+        .map(|&[a, b]| key(back(a), back(b)))
+        .collect();
+    mapped.sort_unstable();
+    if mapped != rec.edges() {
+        let got: HashSet<[u32; 2]> = mapped.iter().copied().collect();
+        let want: HashSet<[u32; 2]> = rec.edges().iter().copied().collect();
+        let extra: Vec<_> = got.difference(&want).collect();
+        let missing: Vec<_> = want.difference(&got).collect();
+        return Err(format!(
+            "permuted input: extra edges {extra:?}, missing {missing:?} (original indices)"
+        ));
+    }
+    ensure!(
+        permuted.passes() == rec.passes(),
+        "permuted input: {} passes vs {}",
+        permuted.passes(),
+        rec.passes()
+    );
+    let count = |r: &Reconstruction| r.labels().iter().filter(|&&l| l == Label::Inner).count();
+    ensure!(
+        count(permuted) == count(rec) && permuted.labels().len() == rec.labels().len(),
+        "permuted input: label counts differ"
+    );
+    ensure!(
+        axis_segments(permuted) == axis_segments(rec),
+        "permuted input: medial axis differs"
+    );
+    Ok(())
+}
+
+/// Applies a permutation: `out[i] = points[perm[i]]`.
+pub fn permute(points: &[[f64; 2]], perm: &[usize]) -> Vec<[f64; 2]> {
+    perm.iter().map(|&i| points[i]).collect()
+}
+
+// ---------------------------------------------------------------------------------------
+// Predicates against the reference.
+
+fn in_envelope(points: &[[f64; 2]]) -> bool {
+    expected_error(points).is_none()
+}
+
+/// `orient2d` and `incircle` (every rotation of the arguments) agree with the reference.
+pub fn check_orient_incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Check {
+    let got_o = orient2d(a, b, c);
+    let got_i = wdm_crust::predicates::incircle(a, b, c, d);
+    if !in_envelope(&[a, b, c, d]) {
+        return Ok(());
+    }
+    let [ra, rb, rc, rd] = [rpoint(a), rpoint(b), rpoint(c), rpoint(d)];
+    let want_o = orientation(ref_orient(&ra, &rb, &rc));
+    ensure!(got_o == want_o, "orient2d({a:?}, {b:?}, {c:?}) = {got_o:?}, exact {want_o:?}");
+    let want_i = circle_position(ref_incircle(&ra, &rb, &rc, &rd));
+    ensure!(
+        got_i == want_i,
+        "incircle({a:?}, {b:?}, {c:?}, {d:?}) = {got_i:?}, exact {want_i:?}"
+    );
+    Ok(())
+}
+
+/// `orient2d_circumcenter(a, b, tri)` agrees with the reference when `tri` has a circumcenter.
+pub fn check_orient2d_circumcenter(a: [f64; 2], b: [f64; 2], tri: [[f64; 2]; 3]) -> Check {
+    let got = wdm_crust::predicates::exact::orient2d_circumcenter(a, b, tri);
+    if !in_envelope(&[a, b, tri[0], tri[1], tri[2]]) {
+        return Ok(());
+    }
+    let Some(o) = ref_circumcenter(&tri) else {
+        return Ok(());
+    };
+    let want = orientation(ref_orient(&rpoint(a), &rpoint(b), &o));
+    ensure!(
+        got == want,
+        "orient2d_circumcenter({a:?}, {b:?}, {tri:?}) = {got:?}, exact {want:?}"
+    );
+    Ok(())
+}
+
+/// `dot_sign_circumcenters(p, source, other)` agrees with the reference.
+pub fn check_dot_sign(p: [f64; 2], source: [[f64; 2]; 3], other: [[f64; 2]; 3]) -> Check {
+    let got = wdm_crust::predicates::exact::dot_sign_circumcenters(p, source, other);
+    let all = [p, source[0], source[1], source[2], other[0], other[1], other[2]];
+    if !in_envelope(&all) {
+        return Ok(());
+    }
+    let (Some(os), Some(oo)) = (ref_circumcenter(&source), ref_circumcenter(&other)) else {
+        return Ok(());
+    };
+    let rp = rpoint(p);
+    let want = sign(&dot(&sub(&oo, &rp), &sub(&os, &rp)));
+    ensure!(
+        got == want,
+        "dot_sign_circumcenters({p:?}, {source:?}, {other:?}) = {got:?}, exact {want:?}"
+    );
+    Ok(())
+}
+
+/// `compare_circumradius(t1, t2)` agrees with the reference.
+pub fn check_compare_circumradius(t1: [[f64; 2]; 3], t2: [[f64; 2]; 3]) -> Check {
+    let got = wdm_crust::predicates::exact::compare_circumradius(t1, t2);
+    if !in_envelope(&[t1[0], t1[1], t1[2], t2[0], t2[1], t2[2]]) {
+        return Ok(());
+    }
+    let (Some(o1), Some(o2)) = (ref_circumcenter(&t1), ref_circumcenter(&t2)) else {
+        return Ok(());
+    };
+    let r1 = dist2(&o1, &rpoint(t1[0]));
+    let r2 = dist2(&o2, &rpoint(t2[0]));
+    let want = r1.cmp(&r2);
+    ensure!(
+        got == want,
+        "compare_circumradius({t1:?}, {t2:?}) = {got:?}, exact {want:?}"
+    );
+    Ok(())
+}
+
+/// `circumcenter_in_convex_hull(hull, tri)` agrees with the reference (`Outside` for a
+/// collinear `tri`). `hull` must be a valid convex counterclockwise polygon.
+pub fn check_hull_position(hull: &[[f64; 2]], tri: [[f64; 2]; 3]) -> Check {
+    let got = wdm_crust::predicates::exact::circumcenter_in_convex_hull(hull, tri);
+    if !in_envelope(hull) || !in_envelope(&tri) {
+        return Ok(());
+    }
+    let want = match ref_circumcenter(&tri) {
+        None => HullPosition::Outside,
+        Some(o) => {
+            let h: Vec<RPoint> = hull.iter().map(|&p| rpoint(p)).collect();
+            ref_hull_position(&h, &o)
+        }
+    };
+    ensure!(
+        got == want,
+        "circumcenter_in_convex_hull({hull:?}, {tri:?}) = {got:?}, exact {want:?}"
+    );
+    Ok(())
+}
+
+/// `circumcenter_exact` is the exact circumcenter and `circumcenter` is within 256 ulps of
+/// it (correctly rounded where that is subnormal or out of range).
+pub fn check_circumcenter(tri: [[f64; 2]; 3]) -> Check {
+    use wdm_crust::predicates::exact::{circumcenter, circumcenter_exact};
+    let [a, b, c] = tri;
+    let fast = circumcenter(a, b, c);
+    let exact = circumcenter_exact(a, b, c);
+    if !in_envelope(&tri) {
+        return Ok(());
+    }
+    let want = ref_circumcenter(&tri);
+    match (&exact, &want) {
+        (None, None) => {
+            ensure!(fast.is_none(), "circumcenter of collinear {tri:?} is {fast:?}");
+            return Ok(());
+        }
+        (Some(e), Some(w)) => ensure!(
+            same_point(&from_exact(e), w),
+            "circumcenter_exact({tri:?}) is not the circumcenter"
+        ),
+        _ => return Err(format!("circumcenter_exact({tri:?}) = {exact:?}, exact {want:?}")),
+    }
+    let (Some(e), Some(w)) = (exact, want) else {
+        return Ok(());
+    };
+    let Some(fast) = fast else {
+        return Err(format!("circumcenter({tri:?}) is None"));
+    };
+    let rounded = e.to_f64();
+    for axis in 0..2 {
+        let reference = w[axis].to_f64().unwrap_or(f64::NAN);
+        ensure!(
+            rounded[axis].to_bits() == reference.to_bits()
+                || (rounded[axis] == reference)
+                || (reference.is_nan() && rounded[axis].is_infinite()),
+            "ExactPoint::to_f64 of {tri:?} = {rounded:?}, num-rational rounds to {reference}"
+        );
+        let (g, x) = (fast[axis], rounded[axis]);
+        let ok = if x.is_finite() && x.abs() >= f64::MIN_POSITIVE {
+            ulps_apart(g, x) <= 256.0
+        } else {
+            g == x
+        };
+        ensure!(
+            ok,
+            "circumcenter({tri:?}) = {fast:?}, exact rounds to {rounded:?}"
+        );
+    }
+    Ok(())
+}
+
+/// Compares two signs as orderings (for `compare_circumradius`).
+pub fn ordering_of(s: Sign) -> Ordering {
+    match s {
+        Sign::Negative => Ordering::Less,
+        Sign::Zero => Ordering::Equal,
+        Sign::Positive => Ordering::Greater,
+    }
+}

@@ -139,6 +139,15 @@ fn a_shape_with_a_hole_needs_peeling() {
         let (missing, extra) = score(&sample.edge_set(), single.edges());
         assert_eq!((missing, extra), (inner.len(), 0), "eps {eps}");
         assert!(edge_set(single.edges()).is_disjoint(&inner));
+        // The medial axis lies in the region between the two curves.
+        let ring = |c: usize| -> Vec<[f64; 2]> {
+            sample.curves[c].indices.iter().map(|&i| sample.points[i]).collect()
+        };
+        let (outer, hole) = (ring(0), ring(1));
+        assert!(peeled.medial_axis().edges.len() > 20);
+        for &v in &peeled.medial_axis().vertices {
+            assert!(inside(&outer, v) && !inside(&hole, v), "medial-axis vertex {v:?}");
+        }
     }
 }
 

@@ -121,9 +121,9 @@ pub fn ref_circumcenter(t: &[[f64; 2]; 3]) -> Option<RPoint> {
     let n0 = dot(&p0, &p0);
     let rhs1 = dot(&p1, &p1) - &n0;
     let rhs2 = dot(&p2, &p2) - &n0;
-    // [2 r1; 2 r2] O = [rhs1; rhs2]
-    let x = (&rhs1 * &r2[1] - &rhs2 * &r1[1]) * &two / &det;
-    let y = (&rhs2 * &r1[0] - &rhs1 * &r2[0]) * &two / &det;
+    // [2 r1; 2 r2] O = [rhs1; rhs2], whose determinant is 2 det.
+    let x = (&rhs1 * &r2[1] - &rhs2 * &r1[1]) / &det;
+    let y = (&rhs2 * &r1[0] - &rhs1 * &r2[0]) / &det;
     Some([x, y])
 }
 
@@ -172,7 +172,7 @@ pub fn exact_hull(points: &[[f64; 2]], keep_collinear: bool) -> Option<Vec<[f64;
         return None;
     }
     let pops = |s: Sign| s == Sign::Negative || (!keep_collinear && s == Sign::Zero);
-    let mut chain = |order: &mut dyn Iterator<Item = usize>| {
+    let chain = |order: &mut dyn Iterator<Item = usize>| {
         let mut out: Vec<usize> = Vec::new();
         for i in order {
             while out.len() >= 2

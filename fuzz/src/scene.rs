@@ -411,6 +411,7 @@ impl Scene {
                     jitter,
                 } => {
                     let n = usize::from((*n).max(3)).min(room);
+                    let lobes = f64::from(3 + *b % 5);
                     let (a, b) = (f64::from((*a).max(1)), f64::from((*b).max(1)));
                     let phase = f64::from(*phase) / 65536.0 * std::f64::consts::TAU;
                     let step = std::f64::consts::TAU / n as f64;
@@ -423,8 +424,7 @@ impl Scene {
                         let p = match shape % 4 {
                             0 => [a * c, b * s],
                             1 => {
-                                let k = f64::from(3 + *b % 5);
-                                let r = a * (1.0 + 0.25 * (k * t).cos());
+                                let r = a * (1.0 + 0.25 * (lobes * t).cos());
                                 [r * c, r * s]
                             }
                             2 => [(a * c).round(), (b * s).round()],

@@ -5,8 +5,10 @@
 mod error;
 mod input;
 mod output;
+mod reconstruct;
 mod timings;
 mod triangulate;
+mod voronoi;
 
 use std::io::Write;
 use std::process::ExitCode;
@@ -24,6 +26,7 @@ Input formats (detected from the content, or .node/.gtn/.csv by extension):
   .node/.gtn   Triangle/Dey format: header `N 2 A B`, then `index x y [attributes] [marker]`
 Blank lines and `#` comments are skipped; \\n, \\r\\n and \\r line ends are all accepted.
 Point indices in every output are positions among the points read, counting from 0.
+On a terminal, inputs of more than 200000 points get a progress line per phase.
 
 Exit status: 0 on success, 2 for bad input or usage, 1 for other failures.";
 
@@ -47,6 +50,12 @@ enum Command {
     /// Exact Delaunay triangulation of a point file.
     #[command(after_help = triangulate::EXAMPLES)]
     Triangulate(triangulate::TriangulateArgs),
+    /// Voronoi diagram (vertices, edges, rays, cells) of a point file.
+    #[command(after_help = voronoi::EXAMPLES)]
+    Voronoi(voronoi::VoronoiArgs),
+    /// Curves through a point file (WDM_CRUST) and their medial axis; JSON, text or SVG.
+    #[command(after_help = reconstruct::EXAMPLES)]
+    Reconstruct(reconstruct::ReconstructArgs),
 }
 
 /// Parses the command line, runs the subcommand and turns the outcome into an exit code,
@@ -58,6 +67,8 @@ pub fn run() -> ExitCode {
     };
     let result = match &cli.command {
         Command::Triangulate(args) => triangulate::run(args),
+        Command::Voronoi(args) => voronoi::run(args),
+        Command::Reconstruct(args) => reconstruct::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

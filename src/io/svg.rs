@@ -267,8 +267,8 @@ impl Style {
         } else {
             20.0
         };
-        let point_radius = (0.16 * spacing_px).clamp(0.8, 3.2);
-        let curve_width = (0.22 * spacing_px).clamp(0.9, 2.6);
+        let curve_width = (0.16 * spacing_px).clamp(0.8, 2.2);
+        let point_radius = (0.2 * spacing_px).clamp(0.9, 3.5).max(0.9 * curve_width);
         Style {
             point_radius,
             curve_width,
@@ -646,74 +646,53 @@ fn legend_items(rec: &Reconstruction, options: &SvgOptions, untouched: &[u32]) -
     Legend { title, items }
 }
 
-/// Draws the legend strip (in unflipped viewBox coordinates, sizes from px).
+/// Draws the legend strip: a group translated to the strip's top-left corner and scaled so
+/// that its own units are pixels (text sized in tiny data units renders badly).
 fn write_legend<W: Write>(
     w: &mut SvgWriter<'_, W>,
     frame: &Frame,
     legend: &Legend,
 ) -> io::Result<()> {
-    let unit = frame.unit;
-    let left = frame.view[0];
-    let top = frame.legend_top;
-    let _ = write!(w.buf, "<g id=\"legend\" fill=\"#222222\" font-size=\"");
-    w.num(FONT_PX * unit);
-    w.buf.push_str("\">\n<text font-weight=\"bold\" x=\"");
-    w.num(left + MARGIN_PX * unit);
-    w.buf.push_str("\" y=\"");
-    w.num(top + 0.75 * ROW_PX * unit);
-    w.buf.push_str("\">");
+    w.buf.push_str("<g id=\"legend\" fill=\"#222222\" transform=\"translate(");
+    w.nums(&[frame.view[0], frame.legend_top]);
+    let _ = write!(
+        w.buf,
+        ") scale({:?})\" font-size=\"{FONT_PX}\">\n<text font-weight=\"bold\" x=\"{MARGIN_PX}\" y=\"{}\">",
+        frame.unit,
+        0.75 * ROW_PX
+    );
     escape_into(&mut w.buf, &legend.title);
     w.buf.push_str("</text>\n");
-    for ((swatch, text), (x_px, row)) in legend.items.iter().zip(legend.layout(frame.width_px)) {
-        let x = left + x_px * unit;
-        let baseline = top + (row as f64 + 1.75) * ROW_PX * unit;
-        let middle = baseline - 0.35 * FONT_PX * unit;
+    for ((swatch, text), (x, row)) in legend.items.iter().zip(legend.layout(frame.width_px)) {
+        let baseline = (row as f64 + 1.75) * ROW_PX;
+        let middle = baseline - 0.35 * FONT_PX;
         let text_x = match *swatch {
             Swatch::Line(colour, width) => {
-                let _ = write!(
+                let _ = writeln!(
                     w.buf,
-                    "<path fill=\"none\" stroke=\"{colour}\" stroke-linecap=\"round\" stroke-width=\""
+                    "<path fill=\"none\" stroke=\"{colour}\" stroke-linecap=\"round\" stroke-width=\"{width}\" d=\"M{x:.1} {middle:.1}h20\"/>"
                 );
-                w.num(width * unit);
-                w.buf.push_str("\" d=\"M");
-                w.nums(&[x, middle]);
-                w.buf.push('L');
-                w.nums(&[x + 20.0 * unit, middle]);
-                w.buf.push_str("\"/>\n");
-                x + SWATCH_PX * unit
+                x + SWATCH_PX
             }
             Swatch::Dot(colour, r) => {
-                let _ = write!(w.buf, "<circle fill=\"{colour}\" cx=\"");
-                w.num(x + 10.0 * unit);
-                w.buf.push_str("\" cy=\"");
-                w.num(middle);
-                w.buf.push_str("\" r=\"");
-                w.num(r * unit);
-                w.buf.push_str("\"/>\n");
-                x + SWATCH_PX * unit
+                let _ = writeln!(
+                    w.buf,
+                    "<circle fill=\"{colour}\" cx=\"{:.1}\" cy=\"{middle:.1}\" r=\"{r:.1}\"/>",
+                    x + 10.0
+                );
+                x + SWATCH_PX
             }
             Swatch::Ring(colour) => {
-                let _ = write!(
+                let _ = writeln!(
                     w.buf,
-                    "<circle fill=\"#ffffff\" stroke=\"{colour}\" stroke-width=\""
+                    "<circle fill=\"#ffffff\" stroke=\"{colour}\" cx=\"{:.1}\" cy=\"{middle:.1}\" r=\"3\"/>",
+                    x + 10.0
                 );
-                w.num(unit);
-                w.buf.push_str("\" cx=\"");
-                w.num(x + 10.0 * unit);
-                w.buf.push_str("\" cy=\"");
-                w.num(middle);
-                w.buf.push_str("\" r=\"");
-                w.num(3.0 * unit);
-                w.buf.push_str("\"/>\n");
-                x + SWATCH_PX * unit
+                x + SWATCH_PX
             }
             Swatch::Note => x,
         };
-        w.buf.push_str("<text x=\"");
-        w.num(text_x);
-        w.buf.push_str("\" y=\"");
-        w.num(baseline);
-        w.buf.push_str("\">");
+        let _ = write!(w.buf, "<text x=\"{text_x:.1}\" y=\"{baseline:.1}\">");
         escape_into(&mut w.buf, text);
         w.buf.push_str("</text>\n");
         w.maybe_flush()?;

@@ -1,8 +1,437 @@
-//! The crust of Amenta, Bern and Eppstein (1998). Being written: returns no edges yet.
+//! The crust of Amenta, Bern and Eppstein (1998), computed exactly.
+//!
+//! # Definition
+//!
+//! Let `S` be the samples and `V` the vertices of their Voronoi diagram (the circumcenters of
+//! the merged Delaunay faces, see [`crate::voronoi`]). The crust is the set of edges of the
+//! Delaunay triangulation of `S ∪ V` whose two ends are samples. Here "edge" means an edge of
+//! the Delaunay *graph*: `pq` is an edge iff some circle through `p` and `q` has every other
+//! point of `S ∪ V` strictly outside, i.e. the Voronoi cells of `p` and `q` in `Vor(S ∪ V)`
+//! share a segment of positive length. (Edges that only some Delaunay triangulations have, the
+//! diagonals of cocircular groups, are ambiguous and never belong to the crust; this is the
+//! same convention as for the merged Voronoi faces of WDM_CRUST.) Such an edge is also an
+//! edge of `Del(S)`, since a circle empty of `S ∪ V` is empty of `S`.
+//!
+//! # Why a local test on the dual Voronoi edge is not enough
+//!
+//! Parametrize the circles through `p` and `q` by their centre `c(t)` on the bisector of `pq`.
+//! Each other point `x` excludes a half-line of `t` (it is inside `C(t)` for all `t` beyond the
+//! centre of the circle through `p, q, x`, on `x`'s side of `pq`), so `pq` is a crust edge iff
+//! these half-lines leave an open interval. The samples leave exactly the Voronoi edge `uv` of
+//! `pq` in `Vor(S)`, and the "one-step crust" test (Gold and Snoeyink) keeps `pq` iff the two
+//! ends `u`, `v` of that edge do not cover it. That test is equivalent to the crust under good
+//! sampling, but **not** for arbitrary input: other Voronoi vertices inside the two Delaunay
+//! circumdisks of `pq` can cover the rest. For `S = {(1,2), (2,2), (4,5), (5,2), (5,6), (6,0),
+//! (6,1), (6,3)}` the Delaunay edge `(2,2)–(5,2)` has `u = (3.5, 0)`, `v = (3.5, 19/6)`, which
+//! leave the circles with centre parameter in `(−7/48, −8/63)` free, but the Voronoi vertex
+//! `(4.5, 0.5)` (circumcenter of `(5,2), (6,1), (6,0)`) blocks all of it (see the test
+//! `one_step_test_is_not_the_crust`). Which Voronoi vertices matter is not local in the Voronoi
+//! graph either, and enumerating all vertices in the two circumdisks is quadratic on a noisy
+//! circle (every chord's circumdisks hold the whole cluster of medial vertices).
+//!
+//! # The exact algorithm
+//!
+//! So the crust is computed by its definition: the Voronoi vertices are inserted into
+//! `Del(S)` one by one by Bowyer–Watson insertion (module `insertion`), in Hilbert-curve order with
+//! walks from the previous vertex (expected near-linear work on practical inputs), and every
+//! decision of the insertion is exact: orientation and incircle tests on points that are
+//! samples or exact rational circumcenters, filtered by outward-rounded interval arithmetic
+//! and decided in [`num_rational::BigRational`] when the interval straddles zero
+//! (module `interval`). The rounded circumcenters are never used as points. The result is a
+//! Delaunay triangulation of `S ∪ V` exactly; a sample–sample edge of it is kept iff it is on
+//! the hull or the opposite corners of its two triangles are not cocircular with it (exact
+//! incircle `≠ 0`), which is precisely the Delaunay-graph condition above.
+
+mod insertion;
+pub(crate) mod interval;
 
 use crate::delaunay::Triangulation;
+use crate::predicates::CirclePosition;
 
-/// Crust edges of the distinct points of `tri`, `[i, j]` with `i < j`.
-pub fn crust_edges(_tri: &Triangulation) -> Vec<[u32; 2]> {
-    Vec::new()
+use self::insertion::Dt;
+use self::interval::MixedPoints;
+
+/// Crust edges of the distinct points of `tri`, `[i, j]` with `i < j`, sorted.
+///
+/// Collinear input (no triangles, no Voronoi vertices) gives the chain along the line.
+///
+/// ```
+/// use wdm_crust::reconstruct::crust::crust_edges;
+/// // A square and a point near one side: the crust is the pentagon.
+/// let pts = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0], [2.0, 4.5]];
+/// let tri = wdm_crust::triangulate(&pts)?;
+/// assert_eq!(crust_edges(&tri), vec![[0, 1], [0, 3], [1, 2], [2, 4], [3, 4]]);
+/// # Ok::<(), wdm_crust::Error>(())
+/// ```
+pub fn crust_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
+    if tri.is_degenerate() {
+        return tri
+            .hull()
+            .windows(2)
+            .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
+            .collect();
+    }
+    let vor = tri.voronoi();
+    let n = tri.points().len();
+    let m = vor.vertex_count();
+    let triangles = (0..m as u32).map(|v| vor.vertex_triangle(v)).collect();
+    let points = MixedPoints::new(tri.points(), triangles);
+    let mut dt = Dt::new(tri, &points, n + m);
+    let order = hilbert_order(vor.vertex_positions());
+    let mut near = order
+        .first()
+        .and_then(|&v| vor.vertex_sites(v).next())
+        .unwrap_or(0);
+    for v in order {
+        let w = (n + v as usize) as u32;
+        if dt.insert(w, near) {
+            near = w;
+        }
+    }
+    let mut edges = Vec::new();
+    dt.for_each_sample_edge(|a, b, c, across| {
+        let strict = match across {
+            None => true,
+            Some(d) => points.incircle(a, b, c, d) != CirclePosition::On,
+        };
+        if strict {
+            edges.push([a.min(b), a.max(b)]);
+        }
+    });
+    edges.sort_unstable();
+    edges.dedup();
+    edges
+}
+
+/// Indices of `positions` in the order of a Hilbert curve over their bounding box (2^16 cells
+/// a side). Non-finite coordinates are clamped; only the order, not correctness, depends on it.
+fn hilbert_order(positions: &[[f64; 2]]) -> Vec<u32> {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in positions {
+        for k in 0..2 {
+            if p[k].is_finite() {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+    }
+    if !(lo[0] <= hi[0] && lo[1] <= hi[1]) {
+        return (0..positions.len() as u32).collect();
+    }
+    const SIDE: u32 = 1 << 16;
+    let cell = |x: f64, k: usize| -> u32 {
+        let span = hi[k] - lo[k];
+        if !(span > 0.0) || !span.is_finite() {
+            return 0;
+        }
+        let f = ((x - lo[k]) / span * f64::from(SIDE - 1)).clamp(0.0, f64::from(SIDE - 1));
+        if f.is_nan() {
+            0
+        } else {
+            f as u32
+        }
+    };
+    let mut keyed: Vec<(u64, u32)> = positions
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (hilbert_index(SIDE, cell(p[0], 0), cell(p[1], 1)), i as u32))
+        .collect();
+    keyed.sort_unstable();
+    keyed.into_iter().map(|(_, i)| i).collect()
+}
+
+/// Position of cell `(x, y)` along the Hilbert curve filling a `side × side` grid (`side` a
+/// power of two).
+fn hilbert_index(side: u32, mut x: u32, mut y: u32) -> u64 {
+    let mut d = 0u64;
+    let mut s = side / 2;
+    while s > 0 {
+        let rx = u32::from(x & s != 0);
+        let ry = u32::from(y & s != 0);
+        d += u64::from(s) * u64::from(s) * u64::from((3 * rx) ^ ry);
+        if ry == 0 {
+            if rx == 1 {
+                x = side - 1 - x;
+                y = side - 1 - y;
+            }
+            std::mem::swap(&mut x, &mut y);
+        }
+        s /= 2;
+    }
+    d
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::triangulate;
+    use num_rational::BigRational;
+    use num_traits::{Signed, Zero};
+
+    type Q = BigRational;
+
+    fn q(x: f64) -> Q {
+        Q::from_float(x).unwrap()
+    }
+
+    /// Brute-force exact reference, independent of the triangulation code: `V` from all triples
+    /// with an empty circumcircle, then for every pair the interval of circle centres on its
+    /// bisector that keeps every other point of `S ∪ V` strictly outside.
+    fn reference_crust(points: &[[f64; 2]]) -> Vec<[u32; 2]> {
+        let mut distinct: Vec<usize> = Vec::new();
+        for i in 0..points.len() {
+            if !distinct.iter().any(|&j| points[j] == points[i]) {
+                distinct.push(i);
+            }
+        }
+        let s: Vec<[Q; 2]> = distinct.iter().map(|&i| [q(points[i][0]), q(points[i][1])]).collect();
+        let d2 = |a: &[Q; 2], b: &[Q; 2]| {
+            let (dx, dy) = (&a[0] - &b[0], &a[1] - &b[1]);
+            &dx * &dx + &dy * &dy
+        };
+        let mut v: Vec<[Q; 2]> = Vec::new();
+        for i in 0..s.len() {
+            for j in i + 1..s.len() {
+                for k in j + 1..s.len() {
+                    let (a, b, c) = (&s[i], &s[j], &s[k]);
+                    let (bx, by) = (&b[0] - &a[0], &b[1] - &a[1]);
+                    let (cx, cy) = (&c[0] - &a[0], &c[1] - &a[1]);
+                    let d = (&bx * &cy - &by * &cx) * Q::from_integer(2.into());
+                    if d.is_zero() {
+                        continue;
+                    }
+                    let b2 = &bx * &bx + &by * &by;
+                    let c2 = &cx * &cx + &cy * &cy;
+                    let o = [
+                        &a[0] + (&cy * &b2 - &by * &c2) / &d,
+                        &a[1] + (&bx * &c2 - &cx * &b2) / &d,
+                    ];
+                    let r = d2(&o, a);
+                    if s.iter().all(|x| d2(&o, x) >= r) && !v.contains(&o) {
+                        v.push(o);
+                    }
+                }
+            }
+        }
+        let all: Vec<&[Q; 2]> = s.iter().chain(v.iter()).collect();
+        let mut edges = Vec::new();
+        for i in 0..s.len() {
+            for j in i + 1..s.len() {
+                let (p, qq) = (&s[i], &s[j]);
+                let two = Q::from_integer(2.into());
+                let m = [(&p[0] + &qq[0]) / &two, (&p[1] + &qq[1]) / &two];
+                let n = [&p[1] - &qq[1], &qq[0] - &p[0]]; // left normal of p → q
+                let mp = d2(&m, p);
+                let (mut lo, mut hi): (Option<Q>, Option<Q>) = (None, None);
+                let mut blocked = false;
+                for x in &all {
+                    if *x == p || *x == qq {
+                        continue;
+                    }
+                    let side = &n[0] * (&x[0] - &m[0]) + &n[1] * (&x[1] - &m[1]);
+                    let k = d2(&m, x) - &mp;
+                    if side.is_zero() {
+                        blocked |= k.is_negative();
+                        continue;
+                    }
+                    let t = k / (&side * &two);
+                    if side.is_positive() {
+                        hi = Some(hi.map_or(t.clone(), |h| if t < h { t.clone() } else { h }));
+                    } else {
+                        lo = Some(lo.map_or(t.clone(), |l| if t > l { t.clone() } else { l }));
+                    }
+                }
+                let open = match (&lo, &hi) {
+                    (Some(l), Some(h)) => l < h,
+                    _ => true,
+                };
+                if !blocked && open {
+                    let (a, b) = (distinct[i] as u32, distinct[j] as u32);
+                    edges.push([a.min(b), a.max(b)]);
+                }
+            }
+        }
+        edges.sort_unstable();
+        edges
+    }
+
+    fn crust_of(points: &[[f64; 2]]) -> Vec<[u32; 2]> {
+        crust_edges(&triangulate(points).unwrap())
+    }
+
+    struct Lcg(u64);
+    impl Lcg {
+        fn next(&mut self) -> f64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    #[test]
+    fn dense_circle_sample_gives_the_polygon() {
+        for &(n, jitter) in &[(12usize, 0.0), (40, 0.0), (64, 0.2), (200, 0.3)] {
+            let mut rng = Lcg(n as u64);
+            let order: Vec<usize> = (0..n).map(|i| (i * 7 + 3) % n).collect();
+            let pts: Vec<[f64; 2]> = order
+                .iter()
+                .map(|&k| {
+                    let t = (k as f64 + jitter * (rng.next() - 0.5)) * std::f64::consts::TAU
+                        / n as f64;
+                    [3.0 * t.cos() + 1.0, 3.0 * t.sin() - 2.0]
+                })
+                .collect();
+            let mut expected: Vec<[u32; 2]> = (0..n)
+                .map(|i| {
+                    let a = order.iter().position(|&k| k == i).unwrap() as u32;
+                    let b = order.iter().position(|&k| k == (i + 1) % n).unwrap() as u32;
+                    [a.min(b), a.max(b)]
+                })
+                .collect();
+            expected.sort_unstable();
+            assert_eq!(crust_of(&pts), expected, "n = {n}");
+        }
+    }
+
+    #[test]
+    fn one_step_test_is_not_the_crust() {
+        let pts = [
+            [1.0, 2.0],
+            [6.0, 0.0],
+            [6.0, 1.0],
+            [4.0, 5.0],
+            [5.0, 6.0],
+            [2.0, 2.0],
+            [6.0, 3.0],
+            [5.0, 2.0],
+        ];
+        let crust = crust_of(&pts);
+        assert_eq!(crust, reference_crust(&pts));
+        // (2,2)–(5,2) is a Delaunay edge that the Voronoi vertex (4.5, 0.5) blocks.
+        let tri = triangulate(&pts).unwrap();
+        let is_delaunay = (0..tri.halfedges().len()).any(|e| {
+            let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
+            [a.min(b), a.max(b)] == [5, 7]
+        });
+        assert!(is_delaunay);
+        assert!(!crust.contains(&[5, 7]));
+    }
+
+    #[test]
+    fn matches_brute_force_reference_on_random_and_degenerate_sets() {
+        let mut rng = Lcg(7);
+        for case in 0..150 {
+            let n = 4 + case % 9;
+            let pts: Vec<[f64; 2]> = (0..n)
+                .map(|_| match case % 3 {
+                    // Small integer grid: duplicates, collinear and cocircular groups.
+                    0 => [(rng.next() * 6.0).floor(), (rng.next() * 6.0).floor()],
+                    // Generic points.
+                    1 => [rng.next() * 10.0 - 5.0, rng.next() * 7.0],
+                    // Noisy circle.
+                    _ => {
+                        let t = rng.next() * std::f64::consts::TAU;
+                        let r = 1.0 + 0.2 * rng.next();
+                        [r * t.cos(), r * t.sin()]
+                    }
+                })
+                .collect();
+            let tri = triangulate(&pts).unwrap();
+            if tri.is_degenerate() {
+                continue;
+            }
+            assert_eq!(crust_edges(&tri), reference_crust(&pts), "case {case}: {pts:?}");
+        }
+    }
+
+    #[test]
+    fn grids_and_regular_polygons() {
+        // 3 × 3 grid: the boundary square only (interior edges are blocked by the centres).
+        let mut grid = Vec::new();
+        for y in 0..3 {
+            for x in 0..3 {
+                grid.push([f64::from(x), f64::from(y)]);
+            }
+        }
+        let crust = crust_of(&grid);
+        assert_eq!(crust, reference_crust(&grid));
+        assert_eq!(crust.len(), 8);
+        // A larger grid against the reference.
+        let mut grid = Vec::new();
+        for y in 0..4 {
+            for x in 0..5 {
+                grid.push([f64::from(x) * 0.5, f64::from(y) * 0.5]);
+            }
+        }
+        assert_eq!(crust_of(&grid), reference_crust(&grid));
+        // An exactly cocircular octagon (coordinates 0, ±1, ±3 on a circle of radius² 10).
+        let oct = [
+            [3.0, 1.0],
+            [1.0, 3.0],
+            [-1.0, 3.0],
+            [-3.0, 1.0],
+            [-3.0, -1.0],
+            [-1.0, -3.0],
+            [1.0, -3.0],
+            [3.0, -1.0],
+        ];
+        let crust = crust_of(&oct);
+        assert_eq!(crust.len(), 8);
+        assert_eq!(crust, reference_crust(&oct));
+    }
+
+    #[test]
+    fn duplicates_map_to_the_kept_point() {
+        let pts = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0], [4.0, 0.0], [2.0, 4.5]];
+        assert_eq!(crust_of(&pts), vec![[0, 1], [0, 3], [1, 2], [2, 5], [3, 5]]);
+    }
+
+    #[test]
+    fn collinear_input_is_the_chain() {
+        let pts = [[2.0, 2.0], [0.0, 0.0], [1.0, 1.0]];
+        assert_eq!(crust_of(&pts), vec![[0, 2], [1, 2]]);
+    }
+
+    #[test]
+    fn agrees_with_rounded_cross_check_on_a_generic_set() {
+        // Triangulating S plus the rounded circumcenters is not exact in general, but on a
+        // generic random set it must give the same sample–sample Delaunay edges.
+        let mut rng = Lcg(99);
+        let pts: Vec<[f64; 2]> = (0..400)
+            .map(|_| {
+                let t = rng.next() * std::f64::consts::TAU;
+                let r = 1.0 + 0.05 * (5.0 * t).sin() + 0.01 * rng.next();
+                [r * t.cos(), r * t.sin()]
+            })
+            .collect();
+        let tri = triangulate(&pts).unwrap();
+        let vor = tri.voronoi();
+        let mut all = pts.clone();
+        all.extend_from_slice(vor.vertex_positions());
+        let big = triangulate(&all).unwrap();
+        let mut expected = Vec::new();
+        for e in 0..big.halfedges().len() {
+            let (a, b) = (big.halfedge_origin(e), big.halfedge_destination(e));
+            if (a as usize) < pts.len() && (b as usize) < pts.len() {
+                expected.push([a.min(b), a.max(b)]);
+            }
+        }
+        expected.sort_unstable();
+        expected.dedup();
+        assert_eq!(crust_edges(&tri), expected);
+    }
+
+    #[test]
+    fn hilbert_index_is_a_bijection_on_a_small_grid() {
+        let mut seen = [false; 64];
+        for x in 0..8 {
+            for y in 0..8 {
+                let d = hilbert_index(8, x, y) as usize;
+                assert!(!seen[d]);
+                seen[d] = true;
+            }
+        }
+    }
 }

@@ -105,10 +105,11 @@ impl CurveSet {
     /// The guarantee holds on the dense points; between two of them the curve is at most half
     /// a dense spacing farther from a sample.
     ///
-    /// # Panics
-    /// If `eps` is not positive.
+    /// An `eps` that is not a positive number admits no sample: the result is then empty.
     pub fn eps_sample_with(&self, config: &SampleConfig, rng: &mut Rng) -> Sample {
-        assert!(config.eps > 0.0, "eps must be positive");
+        if config.eps.is_nan() || config.eps <= 0.0 {
+            return Sample::default();
+        }
         let parts = self
             .curves
             .iter()

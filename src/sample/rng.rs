@@ -71,12 +71,11 @@ impl Rng {
         lo + (hi - lo) * self.f64()
     }
 
-    /// Uniform integer in `0..n`, without modulo bias.
-    ///
-    /// # Panics
-    /// If `n == 0`.
+    /// Uniform integer in `0..n`, without modulo bias (`0` when `n == 0`: the range is empty).
     pub fn below(&mut self, n: usize) -> usize {
-        assert!(n > 0, "Rng::below(0)");
+        if n == 0 {
+            return 0;
+        }
         let n = n as u64;
         // Reject the top partial block so that every residue is equally likely.
         let zone = u64::MAX - (u64::MAX % n);

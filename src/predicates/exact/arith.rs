@@ -160,7 +160,13 @@ pub(super) struct Bounded {
 }
 
 impl Bounded {
-    /// `self + other` where `other` enters with the given sign (`±1`).
+    /// The exact value `x`.
+    #[inline]
+    pub(super) fn from_f64(x: f64) -> Bounded {
+        Bounded { v: x, e: 0.0 }
+    }
+
+    /// `self + other`, or `self − other` if `negate`.
     #[inline]
     fn add_signed(&self, other: &Bounded, negate: bool) -> Bounded {
         let b = if negate { -other.v } else { other.v };
@@ -204,14 +210,6 @@ impl Bounded {
             v: q,
             e: add_up(propagated, rounding),
         })
-    }
-}
-
-impl Bounded {
-    /// The exact value `x`.
-    #[inline]
-    pub(super) fn from_f64(x: f64) -> Bounded {
-        Bounded { v: x, e: 0.0 }
     }
 }
 

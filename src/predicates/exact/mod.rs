@@ -58,10 +58,9 @@ mod arith;
 use std::cmp::Ordering;
 use std::sync::atomic::{AtomicU64, Ordering as AtomicOrdering};
 
+use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::Zero;
-
-use num_bigint::BigInt;
 
 use self::arith::{
     integer_sign, lift_exact, lift_filter, pow2, rational_to_f64, ulp, Arith, Bounded,
@@ -474,8 +473,12 @@ fn fast_circumcenter(c: &Circ<Bounded>, t0: [f64; 2], k: i32) -> Option<[f64; 2]
     if norm == 0.0 {
         return (x.e == 0.0 && y.e == 0.0).then_some([0.0, 0.0]);
     }
-    // `!(a <= b)` also rejects NaN.
-    if !norm.is_normal() || !(x.e.max(y.e) <= CIRCUMCENTER_ULPS * ulp(norm)) {
+    if !(x.v.is_finite() && y.v.is_finite() && norm.is_normal()) {
+        return None;
+    }
+    let tolerance = CIRCUMCENTER_ULPS * ulp(norm);
+    let accurate = x.e <= tolerance && y.e <= tolerance; // false for NaN
+    if !accurate {
         return None;
     }
     // Undo the scaling; it is exact (and scales the ulp alike) unless a coordinate leaves the

@@ -334,6 +334,16 @@ fn unlift(x: &BigInt, degree: i32, shift: i32) -> BigRational {
     x * power
 }
 
+/// One polynomial's terms in the filter, in rationals and in lifted integers, their degrees
+/// and its name.
+type Evaluations = (
+    Vec<Bounded>,
+    Vec<BigRational>,
+    Vec<BigInt>,
+    Vec<i32>,
+    &'static str,
+);
+
 /// Evaluates every polynomial on `points` = `[p, q, t1, t2]` in the filter, in rationals
 /// and in lifted integers; checks the filter's bound and the lifting.
 fn check_evaluations(points: [[f64; 2]; 8]) -> Result<(), TestCaseError> {
@@ -344,7 +354,7 @@ fn check_evaluations(points: [[f64; 2]; 8]) -> Result<(), TestCaseError> {
     let (rt1, rt2) = ([r0, r1, r2], [s0, s1, s2]);
     let (it1, it2) = ([i0, i1, i2], [j0, j1, j2]);
 
-    let checks: Vec<(Vec<Bounded>, Vec<BigRational>, Vec<BigInt>, Vec<i32>, &str)> = vec![
+    let checks: Vec<Evaluations> = vec![
         (
             orient_terms(&fp, &fq, &ft1).to_vec(),
             orient_terms(&rp, &rq, &rt1).to_vec(),
@@ -394,7 +404,7 @@ fn check_evaluations(points: [[f64; 2]; 8]) -> Result<(), TestCaseError> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(20000))]
+    #![proptest_config(ProptestConfig::with_cases(256))]
 
     #[test]
     fn running_error_bound_holds(

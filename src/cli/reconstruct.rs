@@ -1,0 +1,190 @@
+//! `wdm-crust reconstruct`: the curves through a point file (WDM_CRUST, or the crust and
+//! NN-crust baselines) and the medial axis, as JSON, an edge list or an SVG picture.
+
+use std::path::{Path, PathBuf};
+
+use clap::{Args, ValueEnum};
+use wdm_crust::io::{
+    write_reconstruction_json, write_reconstruction_svg, write_reconstruction_text, SvgOptions,
+};
+use wdm_crust::reconstruct::{Algorithm, Options};
+
+use super::input::Input;
+use super::output::Output;
+use super::timings::Timings;
+use super::CliError;
+
+/// Shown after `wdm-crust reconstruct --help`.
+pub const EXAMPLES: &str = "\
+Examples:
+  wdm-crust reconstruct points.txt -o curves.json
+  wdm-crust reconstruct points.txt --format svg -o picture.svg
+  wdm-crust reconstruct points.txt -o picture.svg --show delaunay,labels
+  wdm-crust reconstruct points.txt --algorithm nn-crust --format text
+
+JSON output (one line):
+  {\"algorithm\": \"wdm\", \"points\": N, \"edges\": [[i, j], ...],
+   \"curves\": [{\"closed\": true, \"points\": [i, j, ...]}, ...],
+   \"medial_axis\": {\"vertices\": [[x, y], ...], \"edges\": [[a, b], ...]}}
+  edges are the reconstructed point pairs, i < j, sorted; curves chain them into closed
+  loops (counterclockwise, each point once, starting at the smallest index) and open chains
+  (from an end or a junction to the next one); the medial axis is the Voronoi edges between
+  two inner Voronoi vertices, over its own vertex list (WDM only: empty for crust and
+  nn-crust).
+
+Text output: one reconstructed edge `i j` per line, nothing else.
+
+SVG output: the points, the curves (closed red, open purple), the medial axis (green) and a
+legend, y axis up; --show adds faint underlays. Without --format, an OUTPUT ending in .svg
+gets SVG and anything else JSON.";
+
+/// Output formats of `reconstruct`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ReconstructFormat {
+    /// `{"algorithm", "points", "edges", "curves", "medial_axis"}` on one line.
+    Json,
+    /// A picture: points, curves, medial axis, legend.
+    Svg,
+    /// One `i j` edge per line.
+    Text,
+}
+
+/// The reconstruction algorithms.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum AlgorithmArg {
+    /// WDM_CRUST (water-flow labeling of the Voronoi vertices), with its medial axis.
+    Wdm,
+    /// The crust of Amenta, Bern and Eppstein (baseline, no medial axis).
+    Crust,
+    /// The nearest-neighbour crust of Dey and Kumar (baseline, no medial axis).
+    NnCrust,
+}
+
+impl From<AlgorithmArg> for Algorithm {
+    fn from(arg: AlgorithmArg) -> Self {
+        match arg {
+            AlgorithmArg::Wdm => Algorithm::Wdm,
+            AlgorithmArg::Crust => Algorithm::Crust,
+            AlgorithmArg::NnCrust => Algorithm::NnCrust,
+        }
+    }
+}
+
+/// Underlays of the SVG picture.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Layer {
+    /// The Delaunay edges, faint grey.
+    Delaunay,
+    /// The Voronoi edges and rays (clipped to the picture), faint blue.
+    Voronoi,
+    /// The Voronoi vertices coloured by their water-flow label (WDM only).
+    Labels,
+}
+
+/// Arguments of `wdm-crust reconstruct`.
+#[derive(Debug, Args)]
+pub struct ReconstructArgs {
+    /// Point file (plain text, CSV, .node/.gtn); absent or `-` reads standard input.
+    #[arg(value_name = "INPUT")]
+    input: Option<PathBuf>,
+
+    /// Reconstruction algorithm.
+    #[arg(long, value_enum, default_value_t = AlgorithmArg::Wdm)]
+    algorithm: AlgorithmArg,
+
+    /// Output format [default: svg if OUTPUT ends in .svg, else json].
+    #[arg(long, value_enum)]
+    format: Option<ReconstructFormat>,
+
+    /// Write to OUTPUT instead of standard output; OUTPUT is replaced only on success.
+    #[arg(short, long, value_name = "OUTPUT")]
+    output: Option<PathBuf>,
+
+    /// Print the wall time of each phase (parse, reconstruct, write) to standard error.
+    #[arg(long)]
+    timings: bool,
+
+    /// WDM: one pass only, as in the paper (curves nested inside others are then lost).
+    /// By default WDM reruns on the points no curve reached, to find holes.
+    #[arg(long)]
+    no_peeling: bool,
+
+    /// SVG underlays, comma-separated: delaunay, voronoi, labels.
+    #[arg(long, value_enum, value_delimiter = ',', value_name = "LAYERS")]
+    show: Vec<Layer>,
+}
+
+impl ReconstructArgs {
+    /// The explicit format, or the one implied by the output file name.
+    fn format(&self) -> ReconstructFormat {
+        self.format.unwrap_or_else(|| {
+            let is_svg = self
+                .output
+                .as_deref()
+                .and_then(Path::extension)
+                .is_some_and(|ext| ext.eq_ignore_ascii_case("svg"));
+            if is_svg {
+                ReconstructFormat::Svg
+            } else {
+                ReconstructFormat::Json
+            }
+        })
+    }
+}
+
+/// Reads, reconstructs, writes.
+pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
+    let format = args.format();
+    if !args.show.is_empty() && format != ReconstructFormat::Svg {
+        return Err(CliError::bad_input(
+            "--show draws underlays in a picture: it needs --format svg (or an OUTPUT ending in .svg); see 'wdm-crust reconstruct --help'",
+        ));
+    }
+    let mut timings = Timings::new(args.timings);
+    let input = Input::new(args.input.as_deref());
+    let output = Output::new(args.output.as_deref())?;
+
+    let points = input.read_points_timed(&mut timings)?;
+
+    let options = Options {
+        algorithm: args.algorithm.into(),
+        peeling: !args.no_peeling,
+        ..Default::default()
+    };
+    timings.begin(|| {
+        format!(
+            "reconstructing ({}) {} points",
+            options.algorithm.name(),
+            points.len()
+        )
+    });
+    let rec = wdm_crust::reconstruct_with(&points, &options).map_err(|e| input.library_error(&e))?;
+    // The library runs triangulate, voronoi, label and extract in one call.
+    timings.phase("reconstruct", || {
+        let closed = rec.curves().iter().filter(|c| c.closed).count();
+        format!(
+            "triangulate+voronoi+label+extract: {} edges, {} closed curves, {} open chains, {} medial-axis edges, {} passes",
+            rec.edges().len(),
+            closed,
+            rec.curves().len() - closed,
+            rec.medial_axis().edges.len(),
+            rec.passes()
+        )
+    });
+
+    timings.begin(|| "writing".to_string());
+    let svg = SvgOptions {
+        delaunay: args.show.contains(&Layer::Delaunay),
+        voronoi: args.show.contains(&Layer::Voronoi),
+        labels: args.show.contains(&Layer::Labels),
+        title: None,
+    };
+    output.write(|out| match format {
+        ReconstructFormat::Json => write_reconstruction_json(&rec, out),
+        ReconstructFormat::Text => write_reconstruction_text(&rec, out),
+        ReconstructFormat::Svg => write_reconstruction_svg(&rec, &svg, out),
+    })?;
+    timings.phase("write", String::new);
+    timings.report();
+    Ok(())
+}

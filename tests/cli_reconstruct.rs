@@ -69,7 +69,10 @@ fn examples_dir() -> PathBuf {
 
 /// Points as a plain-text file.
 fn points_text(points: &[[f64; 2]]) -> String {
-    points.iter().map(|[x, y]| format!("{x:?} {y:?}\n")).collect()
+    points
+        .iter()
+        .map(|[x, y]| format!("{x:?} {y:?}\n"))
+        .collect()
 }
 
 // ----- the bundled bean: its generator -----
@@ -263,7 +266,11 @@ fn json_text_and_svg_match_the_library() {
 
     let run = run_in(d, &["reconstruct", "bean.txt", "--format", "text"], b"");
     assert_eq!(run.code, 0, "{}", run.stderr);
-    let expected: String = rec.edges().iter().map(|[i, j]| format!("{i} {j}\n")).collect();
+    let expected: String = rec
+        .edges()
+        .iter()
+        .map(|[i, j]| format!("{i} {j}\n"))
+        .collect();
     assert_eq!(run.stdout, expected);
 
     let run = run_in(d, &["reconstruct", "bean.txt", "--format", "svg"], b"");
@@ -276,7 +283,9 @@ fn json_text_and_svg_match_the_library() {
         layers.push("medial-axis");
     }
     check_svg(&run.stdout, &points, &layers);
-    assert!(run.stdout.contains("WDM_CRUST reconstruction of 150 points"));
+    assert!(run
+        .stdout
+        .contains("WDM_CRUST reconstruction of 150 points"));
 }
 
 #[test]
@@ -324,18 +333,38 @@ fn svg_by_output_extension_and_underlays() {
     write(d, "bean.txt", points_text(&points).as_bytes());
     let run = run_in(
         d,
-        &["reconstruct", "bean.txt", "-o", "bean.SVG", "--show", "voronoi", "--show", "labels"],
+        &[
+            "reconstruct",
+            "bean.txt",
+            "-o",
+            "bean.SVG",
+            "--show",
+            "voronoi",
+            "--show",
+            "labels",
+        ],
         b"",
     );
     assert_eq!(run.code, 0, "{}", run.stderr);
     assert_eq!(run.stdout, "");
     let svg = fs::read_to_string(d.join("bean.SVG")).unwrap();
-    check_svg(&svg, &points, &["voronoi", "inner-vertices", "outer-vertices"]);
+    check_svg(
+        &svg,
+        &points,
+        &["voronoi", "inner-vertices", "outer-vertices"],
+    );
     assert!(!svg.contains("<g id=\"delaunay\""));
     // An explicit format wins over the extension.
     let run = run_in(
         d,
-        &["reconstruct", "bean.txt", "-o", "bean.svg", "--format", "json"],
+        &[
+            "reconstruct",
+            "bean.txt",
+            "-o",
+            "bean.svg",
+            "--format",
+            "json",
+        ],
         b"",
     );
     assert_eq!(run.code, 0, "{}", run.stderr);
@@ -401,7 +430,13 @@ fn degenerate_inputs_succeed_in_every_format() {
         assert_eq!(run.code, 0, "{text:?}: {}", run.stderr);
         let run = run_in(
             d,
-            &["reconstruct", "--format", "svg", "--show", "delaunay,voronoi,labels"],
+            &[
+                "reconstruct",
+                "--format",
+                "svg",
+                "--show",
+                "delaunay,voronoi,labels",
+            ],
             input,
         );
         assert_eq!(run.code, 0, "{text:?}: {}", run.stderr);
@@ -420,8 +455,18 @@ fn degenerate_inputs_succeed_in_every_format() {
 /// Bad inputs: file name, content, the line the message must name, a word it must contain.
 const BAD_INPUTS: &[(&str, &[u8], usize, &str)] = &[
     ("word.txt", b"0 0\n1 0\nfoo 1\n", 3, "not a number"),
-    ("crlf.txt", b"0 0\r\n1 0\r\n2 3\r\n1 1x\r\n", 4, "not a number"),
-    ("cr-only.txt", b"0\t0\t1\r1\t0\t1\rbad\t1\t1\r", 3, "not a number"),
+    (
+        "crlf.txt",
+        b"0 0\r\n1 0\r\n2 3\r\n1 1x\r\n",
+        4,
+        "not a number",
+    ),
+    (
+        "cr-only.txt",
+        b"0\t0\t1\r1\t0\t1\rbad\t1\t1\r",
+        3,
+        "not a number",
+    ),
     ("one.txt", b"0 0\n\n# c\n7\n", 4, "only one number"),
     ("empty-field.csv", b"x,y\n1,,2\n", 2, "empty field"),
     ("nan.txt", b"0 0\nnan 1\n", 2, "not a finite number"),
@@ -430,9 +475,24 @@ const BAD_INPUTS: &[(&str, &[u8], usize, &str)] = &[
     ("huge.txt", b"0 0\n1 1e61\n", 2, "2^201"),
     ("nul.txt", b"0 0\n1 1\n\x00\x00\x00\x00", 3, "NUL byte"),
     ("binary.txt", b"0 0\n\x89PNG\r\n\x1a\n", 2, "invalid UTF-8"),
-    ("dim3.node", b"3 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n", 1, "dimension is 3"),
-    ("few.node", b"4 2 0 0\n0 0 0\n1 1 0\n2 0 1\n", 1, "declares 4 points"),
-    ("index.node", b"3 2 0 0\n0 0 0\n1 1 0\n3 0 1\n", 4, "out of sequence"),
+    (
+        "dim3.node",
+        b"3 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n",
+        1,
+        "dimension is 3",
+    ),
+    (
+        "few.node",
+        b"4 2 0 0\n0 0 0\n1 1 0\n2 0 1\n",
+        1,
+        "declares 4 points",
+    ),
+    (
+        "index.node",
+        b"3 2 0 0\n0 0 0\n1 1 0\n3 0 1\n",
+        4,
+        "out of sequence",
+    ),
 ];
 
 #[test]
@@ -456,7 +516,11 @@ fn bad_input_names_file_and_line_and_leaves_no_output() {
             assert!(run.stderr.contains(problem), "{name}: {:?}", run.stderr);
             assert_eq!(run.stderr.lines().count(), 1, "{name}: {:?}", run.stderr);
             assert!(!run.stderr.contains("panicked"), "{name}");
-            assert_eq!(listing(d), before, "{name}: no output or temporary file left");
+            assert_eq!(
+                listing(d),
+                before,
+                "{name}: no output or temporary file left"
+            );
         }
     }
     // Standard input is named <stdin>; to standard output nothing is written either.
@@ -464,7 +528,8 @@ fn bad_input_names_file_and_line_and_leaves_no_output() {
     assert_eq!(run.code, 2);
     assert_eq!(run.stdout, "");
     assert!(
-        run.stderr.starts_with("wdm-crust: <stdin>:2: only one number"),
+        run.stderr
+            .starts_with("wdm-crust: <stdin>:2: only one number"),
         "{}",
         run.stderr
     );
@@ -482,7 +547,9 @@ fn failure_leaves_an_existing_output_untouched() {
     assert_eq!(listing(d), ["bad.txt", "out.svg"]);
     let run = run_in(d, &["reconstruct", "missing.txt", "-o", "out.svg"], b"");
     assert_eq!(run.code, 2);
-    assert!(run.stderr.starts_with("wdm-crust: missing.txt: cannot open"));
+    assert!(run
+        .stderr
+        .starts_with("wdm-crust: missing.txt: cannot open"));
     let run = run_in(d, &["reconstruct", "bad.txt", "-o", "no/dir/out.svg"], b"");
     assert_eq!(run.code, 2);
     assert_eq!(run.stderr.lines().count(), 1);
@@ -499,19 +566,41 @@ fn usage_errors_are_one_line_with_exit_2() {
         &["reconstruct", "--format", "png"],
         &["reconstruct", "--show", "everything", "--format", "svg"],
         &["reconstruct", "in.txt", "--show", "delaunay"],
-        &["reconstruct", "in.txt", "--show", "labels", "--format", "text"],
-        &["reconstruct", "in.txt", "--show", "voronoi", "-o", "out.json"],
+        &[
+            "reconstruct",
+            "in.txt",
+            "--show",
+            "labels",
+            "--format",
+            "text",
+        ],
+        &[
+            "reconstruct",
+            "in.txt",
+            "--show",
+            "voronoi",
+            "-o",
+            "out.json",
+        ],
         &["reconstruct", "a", "b"],
         &["reconstruct", "--peeling"],
     ] {
         let run = run_in(d, args, b"");
         assert_eq!(run.code, 2, "{args:?}: {}", run.stderr);
-        assert!(run.stderr.starts_with("wdm-crust: "), "{args:?}: {}", run.stderr);
+        assert!(
+            run.stderr.starts_with("wdm-crust: "),
+            "{args:?}: {}",
+            run.stderr
+        );
         assert_eq!(run.stderr.lines().count(), 1, "{args:?}: {}", run.stderr);
         assert_eq!(run.stdout, "", "{args:?}");
     }
     let run = run_in(d, &["reconstruct", "--algorithm", "magic"], b"");
-    assert!(run.stderr.contains("wdm, crust, nn-crust"), "{}", run.stderr);
+    assert!(
+        run.stderr.contains("wdm, crust, nn-crust"),
+        "{}",
+        run.stderr
+    );
     let run = run_in(d, &["reconstruct", "in.txt", "--show", "delaunay"], b"");
     assert!(run.stderr.contains("--format svg"), "{}", run.stderr);
     assert_eq!(listing(d), ["in.txt"]);
@@ -532,7 +621,10 @@ fn help_documents_the_formats() {
         "Text output: one reconstructed edge",
         "SVG output",
     ] {
-        assert!(run.stdout.contains(needle), "{needle} missing from the help");
+        assert!(
+            run.stdout.contains(needle),
+            "{needle} missing from the help"
+        );
     }
     let run = run_in(dir.path(), &["--help"], b"");
     assert!(run.stdout.contains("reconstruct") && run.stdout.contains("voronoi"));

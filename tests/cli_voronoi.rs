@@ -282,13 +282,23 @@ fn standard_input_output_file_and_timings() {
 /// Bad inputs: file name, content, the line the message must name, a word it must contain.
 const BAD_INPUTS: &[(&str, &[u8], usize, &str)] = &[
     ("word.txt", b"0 0\n1 0\nfoo 1\n", 3, "not a number"),
-    ("cr-only.txt", b"0\t0\t1\r1\t0\t1\rbad\t1\t1\r", 3, "not a number"),
+    (
+        "cr-only.txt",
+        b"0\t0\t1\r1\t0\t1\rbad\t1\t1\r",
+        3,
+        "not a number",
+    ),
     ("one.txt", b"0 0\n\n# c\n7\n", 4, "only one number"),
     ("nan.txt", b"0 0\nnan 1\n", 2, "not a finite number"),
     ("huge.txt", b"0 0\n1 1e61\n", 2, "2^201"),
     ("tiny.txt", b"0 0\n1e-300 1\n", 2, "2^-142"),
     ("binary.txt", b"0 0\n\x89PNG\r\n\x1a\n", 2, "invalid UTF-8"),
-    ("many.gtn", b"2 2 0 0\n0 0 0\n1 1 0\n2 0 1\n", 4, "more points than the 2"),
+    (
+        "many.gtn",
+        b"2 2 0 0\n0 0 0\n1 1 0\n2 0 1\n",
+        4,
+        "more points than the 2",
+    ),
 ];
 
 #[test]
@@ -310,13 +320,19 @@ fn bad_input_names_file_and_line_and_leaves_no_output() {
                 assert_eq!(run.stderr.lines().count(), 1, "{name}: {:?}", run.stderr);
                 assert!(!run.stderr.contains("panicked"), "{name}");
             }
-            assert_eq!(listing(d), before, "{name}: no output or temporary file left");
+            assert_eq!(
+                listing(d),
+                before,
+                "{name}: no output or temporary file left"
+            );
         }
     }
     assert_eq!(fs::read(d.join("out.txt")).unwrap(), b"previous\n");
     let run = run_in(d, &["voronoi"], b"1 2\n3\n");
     assert_eq!(run.code, 2);
-    assert!(run.stderr.starts_with("wdm-crust: <stdin>:2: only one number"));
+    assert!(run
+        .stderr
+        .starts_with("wdm-crust: <stdin>:2: only one number"));
 }
 
 #[test]
@@ -335,7 +351,16 @@ fn usage_errors_and_help() {
     }
     let run = run_in(dir.path(), &["voronoi", "--help"], b"");
     assert_eq!(run.code, 0);
-    for needle in ["Examples:", "\"cells\"", "Collinear input", "c p v0 v1", "--timings"] {
-        assert!(run.stdout.contains(needle), "{needle} missing from the help");
+    for needle in [
+        "Examples:",
+        "\"cells\"",
+        "Collinear input",
+        "c p v0 v1",
+        "--timings",
+    ] {
+        assert!(
+            run.stdout.contains(needle),
+            "{needle} missing from the help"
+        );
     }
 }

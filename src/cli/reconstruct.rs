@@ -158,7 +158,8 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
             points.len()
         )
     });
-    let rec = wdm_crust::reconstruct_with(&points, &options).map_err(|e| input.library_error(&e))?;
+    let rec =
+        wdm_crust::reconstruct_with(&points, &options).map_err(|e| input.library_error(&e))?;
     // The library runs triangulate, voronoi, label and extract in one call.
     timings.phase("reconstruct", || {
         let closed = rec.curves().iter().filter(|c| c.closed).count();

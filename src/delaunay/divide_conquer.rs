@@ -1,297 +1,387 @@
-//! Guibas–Stolfi divide-and-conquer Delaunay construction.
+//! Guibas–Stolfi divide-and-conquer Delaunay construction with Dwyer's alternating cuts, on a
+//! triangle store with ghost triangles ([`Mesh`]).
 //!
-//! Points are sorted lexicographically (x, then y), exact duplicates are merged into their
-//! first occurrence, and the sorted run is split in halves recursively (depth log n). Each
-//! half returns its two extreme convex-hull edges; the merge walks the lower common tangent
-//! upwards, deleting left and right edges that fail the exact incircle test.
+//! The distinct points are put in Z order ([`zorder`](super::zorder)) and copied into one
+//! contiguous array, so a subproblem is a contiguous range of points and owns a contiguous
+//! range of triangle slots. A range splits at the first key bit its points do not share: by a
+//! vertical or a horizontal line, alternately on uniform input (Dwyer's cuts keep the halves
+//! roughly square, so a merge deletes few edges). Where a split would leave a single point, the
+//! range is sorted lexicographically and split at the middle (vertical cuts only).
+//!
+//! A merge along a horizontal cut is the textbook merge along a vertical cut seen in a frame
+//! turned a quarter clockwise, `(x, y) ↦ (y, −x)`: orientation and in-circle tests do not
+//! change under a rotation, so only the extreme points differ. Each subproblem reports its
+//! extreme points in both orders, `(x, y)` and `(y, −x)` (ties broken by coordinates, never by
+//! input position), with a ghost at each.
 
 use std::cmp::Ordering;
 
-use super::quadedge::{sym, EdgeId, QuadEdgeStore};
+use super::mesh::{Mesh, GHOST};
 use super::triangulation::{Triangulation, NO_TWIN};
+use super::zorder::{lexicographic, order, Grid};
 use crate::predicates::{incircle, orient2d, CirclePosition, Orientation};
 
 /// Triangulates validated points (finite, inside the exact envelope).
 pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
-    let (sorted, duplicates) = sort_and_merge_duplicates(points);
-    let mut dc = DivideConquer {
-        points,
-        sorted: &sorted,
-        store: QuadEdgeStore::with_capacity(3 * sorted.len()),
-    };
-    let hull_edge = if sorted.len() >= 2 {
-        Some(dc.triangulate(0, sorted.len()).0)
+    if points.is_empty() {
+        return Triangulation {
+            points: Vec::new(),
+            triangles: Vec::new(),
+            halfedges: Vec::new(),
+            hull: Vec::new(),
+            duplicates: Vec::new(),
+        };
+    }
+    let grid = Grid::new(points);
+    let ordered = order(points, &grid);
+    let (mut pts, mut ids) = (ordered.points, ordered.ids);
+    let n = pts.len();
+    let mut triangles = Vec::new();
+    let mut halfedges = Vec::new();
+    let hull;
+    if n >= 2 {
+        let mut dc = DivideConquer {
+            pts: &mut pts,
+            ids: &mut ids,
+            grid,
+            mesh: Mesh::for_points(n),
+            scratch: Vec::new(),
+        };
+        let extremes = dc.triangulate(0, n, true);
+        let mesh = dc.mesh;
+        let start = extremes.min_x;
+        let collinear = (0..mesh.tri.len() as u32).all(|t| mesh.is_ghost(t));
+        if collinear {
+            hull = collinear_chain(&pts, &ids);
+        } else {
+            let g = if mesh.tri[start.ghost as usize][1] == start.v {
+                start.ghost
+            } else {
+                mesh.ring_next(start.ghost)
+            };
+            hull = mesh.hull_from(g).iter().map(|&v| ids[v as usize]).collect();
+            drop(pts);
+            (triangles, halfedges) = mesh.into_result(&ids, NO_TWIN);
+        }
     } else {
-        None
-    };
-    let store = dc.store;
-    let (triangles, halfedges, hull) = match hull_edge {
-        Some(e) => compact(&store, e, &sorted),
-        None => (Vec::new(), Vec::new(), sorted.clone()),
-    };
+        hull = std::mem::take(&mut ids);
+    }
     Triangulation {
         points: points.to_vec(),
         triangles,
         halfedges,
         hull,
-        duplicates,
+        duplicates: ordered.duplicates,
     }
 }
 
-/// Lexicographic order of coordinates; `-0.0 == 0.0`, inputs are finite.
+/// The input indices of collinear points in lexicographic order (their order along the line).
+fn collinear_chain(pts: &[[f64; 2]], ids: &[u32]) -> Vec<u32> {
+    let mut order: Vec<u32> = (0..pts.len() as u32).collect();
+    order.sort_unstable_by(|&a, &b| lexicographic(pts[a as usize], pts[b as usize]));
+    order.iter().map(|&v| ids[v as usize]).collect()
+}
+
+/// `(y, −x)` order: the lexicographic order of the frame turned a quarter clockwise.
 #[inline]
-fn lexicographic(a: [f64; 2], b: [f64; 2]) -> Ordering {
-    a[0].partial_cmp(&b[0])
-        .unwrap_or(Ordering::Equal)
-        .then(a[1].partial_cmp(&b[1]).unwrap_or(Ordering::Equal))
+fn turned(a: [f64; 2], b: [f64; 2]) -> Ordering {
+    lexicographic([a[1], b[0]], [b[1], a[0]])
 }
 
-/// Sorted indices of the distinct points, and `[duplicate, kept]` pairs sorted by duplicate.
-fn sort_and_merge_duplicates(points: &[[f64; 2]]) -> (Vec<u32>, Vec<[u32; 2]>) {
-    let mut order: Vec<u32> = (0..points.len() as u32).collect();
-    // Ties broken by index, so the first occurrence of a coordinate pair comes first.
-    order.sort_unstable_by(|&i, &j| {
-        lexicographic(points[i as usize], points[j as usize]).then(i.cmp(&j))
-    });
-    let mut duplicates = Vec::new();
-    let mut distinct = Vec::with_capacity(order.len());
-    for &i in &order {
-        match distinct.last() {
-            Some(&kept) if lexicographic(points[kept as usize], points[i as usize]).is_eq() => {
-                duplicates.push([i, kept]);
-            }
-            _ => distinct.push(i),
-        }
-    }
-    duplicates.sort_unstable();
-    (distinct, duplicates)
+/// Cut direction of a merge.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Cut {
+    /// By a vertical line: left half first in `(x, y)` order.
+    Vertical,
+    /// By a horizontal line: lower half first in `(y, −x)` order.
+    Horizontal,
+}
+
+/// A hull vertex and a ghost touching it.
+#[derive(Debug, Clone, Copy)]
+struct Extreme {
+    v: u32,
+    ghost: u32,
+}
+
+/// Extreme points of a subproblem in `(x, y)` and in `(y, −x)` order.
+#[derive(Debug, Clone, Copy)]
+struct Extremes {
+    min_x: Extreme,
+    max_x: Extreme,
+    min_y: Extreme,
+    max_y: Extreme,
 }
 
 struct DivideConquer<'a> {
-    points: &'a [[f64; 2]],
-    /// Distinct point indices in lexicographic order.
-    sorted: &'a [u32],
-    store: QuadEdgeStore,
+    /// Distinct points; a subproblem may reorder its own range before recursing.
+    pts: &'a mut [[f64; 2]],
+    /// Input index of every point, reordered with it.
+    ids: &'a mut [u32],
+    grid: Grid,
+    mesh: Mesh,
+    scratch: Vec<([f64; 2], u32)>,
 }
 
 impl DivideConquer<'_> {
     #[inline]
-    fn point(&self, v: u32) -> [f64; 2] {
-        self.points[v as usize]
+    fn p(&self, v: u32) -> [f64; 2] {
+        self.pts[v as usize]
     }
 
-    /// Is point `v` strictly right of the directed edge `e`?
+    /// Is `c` strictly left of `a → b`?
     #[inline]
-    fn right_of(&self, v: u32, e: EdgeId) -> bool {
-        orient2d(
-            self.point(v),
-            self.point(self.store.dest(e)),
-            self.point(self.store.org(e)),
-        ) == Orientation::CounterClockwise
+    fn ccw(&self, a: u32, b: u32, c: u32) -> bool {
+        orient2d(self.p(a), self.p(b), self.p(c)) == Orientation::CounterClockwise
     }
 
-    /// Is point `v` strictly left of the directed edge `e`?
+    /// Is `d` strictly inside the circle through the counterclockwise `a, b, c`?
     #[inline]
-    fn left_of(&self, v: u32, e: EdgeId) -> bool {
-        orient2d(
-            self.point(v),
-            self.point(self.store.org(e)),
-            self.point(self.store.dest(e)),
-        ) == Orientation::CounterClockwise
+    fn inside(&self, a: u32, b: u32, c: u32, d: u32) -> bool {
+        incircle(self.p(a), self.p(b), self.p(c), self.p(d)) == CirclePosition::Inside
     }
 
-    /// Is `d` strictly inside the circle through `a, b, c` (given counterclockwise)?
     #[inline]
-    fn in_circle(&self, a: u32, b: u32, c: u32, d: u32) -> bool {
-        incircle(self.point(a), self.point(b), self.point(c), self.point(d))
-            == CirclePosition::Inside
-    }
-
-    /// Triangulates `sorted[lo..hi]` (at least two points). Returns the counterclockwise
-    /// hull edge out of the leftmost point and the clockwise hull edge out of the rightmost.
-    fn triangulate(&mut self, lo: usize, hi: usize) -> (EdgeId, EdgeId) {
-        let n = hi - lo;
-        let s = &self.sorted[lo..hi];
-        if n == 2 {
-            let a = self.store.make_edge(s[0], s[1]);
-            return (a, sym(a));
+    fn less(&self, cut: Cut, a: u32, b: u32) -> bool {
+        let (pa, pb) = (self.p(a), self.p(b));
+        match cut {
+            Cut::Vertical => lexicographic(pa, pb).is_lt(),
+            Cut::Horizontal => turned(pa, pb).is_lt(),
         }
-        if n == 3 {
-            let (p0, p1, p2) = (s[0], s[1], s[2]);
-            let a = self.store.make_edge(p0, p1);
-            let b = self.store.make_edge(p1, p2);
-            self.store.splice(sym(a), b);
-            return match orient2d(self.point(p0), self.point(p1), self.point(p2)) {
-                Orientation::CounterClockwise => {
-                    self.store.connect(b, a);
-                    (a, sym(b))
-                }
-                Orientation::Clockwise => {
-                    let c = self.store.connect(b, a);
-                    (sym(c), c)
-                }
-                Orientation::Collinear => (a, sym(b)),
-            };
+    }
+
+    /// Triangulates points `lo..hi` (at least two) into slots `2lo..2hi − 2`. While `zorder`,
+    /// the range is in Z order; otherwise it is sorted lexicographically.
+    fn triangulate(&mut self, lo: usize, hi: usize, zorder: bool) -> Extremes {
+        let n = hi - lo;
+        if n <= 3 {
+            return self.leaf(lo, n);
+        }
+        if zorder {
+            if let Some((mid, cut)) = self.z_split(lo, hi) {
+                let left = self.triangulate(lo, mid, true);
+                let right = self.triangulate(mid, hi, true);
+                return self.merge(left, right, cut, mid);
+            }
+            self.sort_lexicographically(lo, hi);
         }
         let mid = lo + n / 2;
-        let (mut ldo, mut ldi) = self.triangulate(lo, mid);
-        let (mut rdi, mut rdo) = self.triangulate(mid, hi);
-        self.merge(&mut ldo, &mut ldi, &mut rdi, &mut rdo);
-        (ldo, rdo)
+        let left = self.triangulate(lo, mid, false);
+        let right = self.triangulate(mid, hi, false);
+        self.merge(left, right, Cut::Vertical, mid)
     }
 
-    /// Merges two adjacent triangulations, updating the outer hull edges.
-    fn merge(&mut self, ldo: &mut EdgeId, ldi: &mut EdgeId, rdi: &mut EdgeId, rdo: &mut EdgeId) {
-        // Lower common tangent of the two hulls.
+    /// Splits a Z-ordered range at the first key bit its points do not share, unless a side
+    /// would keep fewer than two points.
+    fn z_split(&self, lo: usize, hi: usize) -> Option<(usize, Cut)> {
+        let diff = self.grid.key(self.pts[lo]) ^ self.grid.key(self.pts[hi - 1]);
+        if diff == 0 {
+            return None;
+        }
+        let bit = 63 - diff.leading_zeros();
+        let grid = self.grid;
+        let mid = lo + self.pts[lo..hi].partition_point(|&p| !grid.key_bit(p, bit));
+        if mid - lo < 2 || hi - mid < 2 {
+            return None;
+        }
+        let cut = if bit % 2 == 1 {
+            Cut::Vertical
+        } else {
+            Cut::Horizontal
+        };
+        Some((mid, cut))
+    }
+
+    /// Sorts a range (not yet triangulated) lexicographically, input indices along.
+    fn sort_lexicographically(&mut self, lo: usize, hi: usize) {
+        self.scratch.clear();
+        self.scratch
+            .extend((lo..hi).map(|v| (self.pts[v], self.ids[v])));
+        self.scratch.sort_unstable_by(|a, b| lexicographic(a.0, b.0));
+        for (k, &(p, id)) in self.scratch.iter().enumerate() {
+            self.pts[lo + k] = p;
+            self.ids[lo + k] = id;
+        }
+    }
+
+    /// Two or three points.
+    fn leaf(&mut self, lo: usize, n: usize) -> Extremes {
+        let s = 2 * lo as u32;
+        let mut v = [lo as u32, lo as u32 + 1, lo as u32 + 2];
+        // Ghost touching each vertex, by position in `v`.
+        let ghosts;
+        if n == 2 {
+            self.mesh.pair(s, v[0], v[1]);
+            ghosts = [s, s, s];
+        } else {
+            match orient2d(self.p(v[0]), self.p(v[1]), self.p(v[2])) {
+                Orientation::CounterClockwise => {
+                    self.mesh.triangle(s, v[0], v[1], v[2]);
+                    ghosts = [s + 1, s + 1, s + 2];
+                }
+                Orientation::Clockwise => {
+                    self.mesh.triangle(s, v[0], v[2], v[1]);
+                    ghosts = [s + 1, s + 3, s + 1];
+                }
+                Orientation::Collinear => {
+                    v[..3].sort_unstable_by(|&a, &b| lexicographic(self.p(a), self.p(b)));
+                    self.mesh.chain3(s, v[0], v[1], v[2]);
+                    ghosts = [s, s, s + 1];
+                }
+            }
+        }
+        let at = |k: usize| Extreme {
+            v: v[k],
+            ghost: ghosts[k],
+        };
+        let mut e = Extremes {
+            min_x: at(0),
+            max_x: at(0),
+            min_y: at(0),
+            max_y: at(0),
+        };
+        for k in 1..n {
+            let x = at(k);
+            if self.less(Cut::Vertical, x.v, e.min_x.v) {
+                e.min_x = x;
+            }
+            if self.less(Cut::Vertical, e.max_x.v, x.v) {
+                e.max_x = x;
+            }
+            if self.less(Cut::Horizontal, x.v, e.min_y.v) {
+                e.min_y = x;
+            }
+            if self.less(Cut::Horizontal, e.max_y.v, x.v) {
+                e.max_y = x;
+            }
+        }
+        e
+    }
+
+    /// Merges the triangulations of `lo..mid` and `mid..hi`, separated by `cut`.
+    fn merge(&mut self, left: Extremes, right: Extremes, cut: Cut, mid: usize) -> Extremes {
+        let (l_in, r_in) = match cut {
+            Cut::Vertical => (left.max_x, right.min_x),
+            Cut::Horizontal => (left.max_y, right.min_y),
+        };
+        // Hull walk to the lower common tangent (in the frame of the cut). `gl = [l, l_cw]` is
+        // the ghost of the left hull edge into l, `gr = [r_ccw, r]` that of the right hull edge
+        // out of r.
+        let mesh = &self.mesh;
+        let mut gl = if mesh.tri[l_in.ghost as usize][0] == l_in.v {
+            l_in.ghost
+        } else {
+            mesh.ring_prev(l_in.ghost)
+        };
+        let mut gr = if mesh.tri[r_in.ghost as usize][1] == r_in.v {
+            r_in.ghost
+        } else {
+            mesh.ring_next(r_in.ghost)
+        };
         loop {
-            if self.left_of(self.store.org(*rdi), *ldi) {
-                *ldi = self.store.lnext(*ldi);
-            } else if self.right_of(self.store.org(*ldi), *rdi) {
-                *rdi = self.store.rprev(*rdi);
+            let [l, l_cw, _] = self.mesh.tri[gl as usize];
+            let [r_ccw, r, _] = self.mesh.tri[gr as usize];
+            if self.ccw(l, l_cw, r) {
+                gl = self.mesh.ring_prev(gl);
+            } else if self.ccw(l, r_ccw, r) {
+                gr = self.mesh.ring_next(gr);
             } else {
                 break;
             }
         }
-        let mut basel = self.store.connect(sym(*rdi), *ldi);
-        if self.store.org(*ldi) == self.store.org(*ldo) {
-            *ldo = sym(basel);
-        }
-        if self.store.org(*rdi) == self.store.org(*rdo) {
-            *rdo = basel;
-        }
-        // Zip the halves together from the tangent upwards.
+        let opened = 2 * mid as u32 - 2;
+        // Left ghost a = [lc, l] and right ghost b = [r, rc] bound the region still to fill.
+        let mut a = self.mesh.ring_next(gl);
+        let mut b = self.mesh.ring_prev(gr);
+        let mut base = self.mesh.open(opened, gl, gr);
+        let mut l = self.mesh.tri[gl as usize][0];
+        let mut r = self.mesh.tri[gr as usize][1];
         loop {
-            let lcand = self.left_candidate(basel);
-            let rcand = self.right_candidate(basel);
-            let l_valid = self.valid(lcand, basel);
-            let r_valid = self.valid(rcand, basel);
+            let mut lc = self.mesh.tri[a as usize][0];
+            let mut l_valid = self.ccw(lc, l, r);
+            if l_valid {
+                let mut flipped = false;
+                loop {
+                    let x = self.mesh.org(super::mesh::prev(self.mesh.twin[3 * a as usize]));
+                    if x == GHOST || !self.inside(l, r, lc, x) {
+                        break;
+                    }
+                    lc = self.mesh.flip_left(a);
+                    flipped = true;
+                }
+                if flipped {
+                    l_valid = self.ccw(lc, l, r);
+                }
+            }
+            let mut rc = self.mesh.tri[b as usize][1];
+            let mut r_valid = self.ccw(rc, l, r);
+            if r_valid {
+                let mut flipped = false;
+                loop {
+                    let z = self.mesh.org(super::mesh::prev(self.mesh.twin[3 * b as usize]));
+                    if z == GHOST || !self.inside(l, r, rc, z) {
+                        break;
+                    }
+                    rc = self.mesh.flip_right(b);
+                    flipped = true;
+                }
+                if flipped {
+                    r_valid = self.ccw(rc, l, r);
+                }
+            }
             if !l_valid && !r_valid {
                 break;
             }
-            let take_right = !l_valid
-                || (r_valid
-                    && self.in_circle(
-                        self.store.dest(lcand),
-                        self.store.org(lcand),
-                        self.store.org(rcand),
-                        self.store.dest(rcand),
-                    ));
-            basel = if take_right {
-                self.store.connect(rcand, sym(basel))
+            if !l_valid || (r_valid && self.inside(lc, l, r, rc)) {
+                (base, b) = self.mesh.take_right(b, base, l);
+                r = rc;
             } else {
-                self.store.connect(sym(basel), sym(lcand))
-            };
-        }
-    }
-
-    /// A candidate edge is valid when its far end lies strictly above the base edge.
-    #[inline]
-    fn valid(&self, e: EdgeId, basel: EdgeId) -> bool {
-        self.right_of(self.store.dest(e), basel)
-    }
-
-    /// First edge out of the left end of `basel` whose far end may join the merge, deleting
-    /// left edges that the new triangle's circle would contain.
-    fn left_candidate(&mut self, basel: EdgeId) -> EdgeId {
-        let mut lcand = self.store.onext(sym(basel));
-        if self.valid(lcand, basel) {
-            while self.in_circle(
-                self.store.dest(basel),
-                self.store.org(basel),
-                self.store.dest(lcand),
-                self.store.dest(self.store.onext(lcand)),
-            ) {
-                let t = self.store.onext(lcand);
-                self.store.delete_edge(lcand);
-                lcand = t;
+                (base, a) = self.mesh.take_left(a, base, r);
+                l = lc;
             }
         }
-        lcand
-    }
+        let closed = opened + 1;
+        self.mesh.close(closed, base, a, b);
 
-    /// Mirror of [`Self::left_candidate`] on the right half.
-    fn right_candidate(&mut self, basel: EdgeId) -> EdgeId {
-        let mut rcand = self.store.oprev(basel);
-        if self.valid(rcand, basel) {
-            while self.in_circle(
-                self.store.dest(basel),
-                self.store.org(basel),
-                self.store.dest(rcand),
-                self.store.dest(self.store.oprev(rcand)),
-            ) {
-                let t = self.store.oprev(rcand);
-                self.store.delete_edge(rcand);
-                rcand = t;
-            }
-        }
-        rcand
-    }
-}
-
-/// Converts the quad-edge subdivision into flat triangle and half-edge arrays plus the
-/// counterclockwise hull. `hull_edge` is a hull edge with the interior on its left.
-fn compact(
-    store: &QuadEdgeStore,
-    hull_edge: EdgeId,
-    sorted: &[u32],
-) -> (Vec<[u32; 3]>, Vec<u32>, Vec<u32>) {
-    // Walking the outer face (left face of the reversed hull edge) visits the hull clockwise.
-    let outer_start = sym(hull_edge);
-    let mut outer_face_edges = Vec::new();
-    let mut e = outer_start;
-    loop {
-        outer_face_edges.push(e);
-        e = store.lnext(e);
-        if e == outer_start {
-            break;
-        }
-    }
-    // With at least one triangle the hull has at most n < 2(n - 1) edges; only a chain of
-    // n collinear points has an outer face of 2(n - 1) records (both sides of n - 1 edges).
-    let collinear = outer_face_edges.len() == 2 * (sorted.len() - 1);
-    if collinear {
-        return (Vec::new(), Vec::new(), sorted.to_vec());
-    }
-    let mut hull: Vec<u32> = outer_face_edges.iter().map(|&e| store.org(e)).collect();
-    hull.reverse();
-
-    // Half-edge id of every primal directed record (two per quad), NO_TWIN if none yet.
-    let quads = store.quad_capacity();
-    let mut halfedge_of = vec![NO_TWIN; 2 * quads];
-    for &e in &outer_face_edges {
-        halfedge_of[(e >> 1) as usize] = NO_TWIN - 1; // marks the outer face
-    }
-    let mut triangles: Vec<[u32; 3]> = Vec::with_capacity(2 * sorted.len());
-    let mut records: Vec<EdgeId> = Vec::with_capacity(6 * sorted.len());
-    for q in 0..quads as u32 {
-        let first = q << 2;
-        if store.is_deleted(first) {
-            continue;
-        }
-        for e in [first, sym(first)] {
-            if halfedge_of[(e >> 1) as usize] != NO_TWIN {
-                continue;
-            }
-            let e1 = store.lnext(e);
-            let e2 = store.lnext(e1);
-            let t = triangles.len() as u32;
-            for (k, &r) in [e, e1, e2].iter().enumerate() {
-                halfedge_of[(r >> 1) as usize] = 3 * t + k as u32;
-                records.push(r);
-            }
-            triangles.push([store.org(e), store.org(e1), store.org(e2)]);
-        }
-    }
-    let halfedges = records
-        .iter()
-        .map(|&r| {
-            let twin = halfedge_of[(sym(r) >> 1) as usize];
-            if twin == NO_TWIN - 1 {
-                NO_TWIN
+        let pick_min = |dc: &Self, c: Cut, x: Extreme, y: Extreme| {
+            if dc.less(c, y.v, x.v) {
+                y
             } else {
-                twin
+                x
             }
-        })
-        .collect();
-    (triangles, halfedges, hull)
+        };
+        let pick_max = |dc: &Self, c: Cut, x: Extreme, y: Extreme| {
+            if dc.less(c, x.v, y.v) {
+                y
+            } else {
+                x
+            }
+        };
+        let mut e = match cut {
+            Cut::Vertical => Extremes {
+                min_x: left.min_x,
+                max_x: right.max_x,
+                min_y: pick_min(self, Cut::Horizontal, left.min_y, right.min_y),
+                max_y: pick_max(self, Cut::Horizontal, left.max_y, right.max_y),
+            },
+            Cut::Horizontal => Extremes {
+                min_x: pick_min(self, Cut::Vertical, left.min_x, right.min_x),
+                max_x: pick_max(self, Cut::Vertical, left.max_x, right.max_x),
+                min_y: left.min_y,
+                max_y: right.max_y,
+            },
+        };
+        // A ghost of an extreme point may have been turned into a triangle; the point is
+        // then an end of a common tangent, whose new ghost touches it.
+        for x in [&mut e.min_x, &mut e.max_x, &mut e.min_y, &mut e.max_y] {
+            if !self.mesh.ghost_touches(x.ghost, x.v) {
+                x.ghost = if self.mesh.ghost_touches(opened, x.v) {
+                    opened
+                } else {
+                    closed
+                };
+            }
+        }
+        e
+    }
 }

@@ -1,13 +1,15 @@
-//! Delaunay triangulation: Guibas–Stolfi divide and conquer on a quad-edge store.
+//! Delaunay triangulation: Guibas–Stolfi divide and conquer with Dwyer's alternating cuts.
 //!
-//! The pipeline is `validate → sort and merge duplicates → divide and conquer → compact`.
-//! The quad-edge store ([`quadedge`]) exists only while the triangulation is built; the
-//! result is the compact, flat [`Triangulation`], which is all that later stages see.
+//! The pipeline is `validate → Z-order and merge duplicates → divide and conquer → compact`.
+//! The construction store ([`mesh`]: triangles plus ghost triangles on the hull) exists only
+//! while the triangulation is built and turns into the compact, flat [`Triangulation`] in
+//! place; that is all later stages see.
 
 mod divide_conquer;
-mod quadedge;
+mod mesh;
 mod triangulation;
 mod validate;
+mod zorder;
 
 pub use triangulation::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
 pub use validate::ValidationError;

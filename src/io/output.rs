@@ -60,8 +60,8 @@
 //! `{"algorithm":"wdm","points":N,"edges":[[i,j],...],"curves":[{"closed":true,"points":[...]},...],
 //! "medial_axis":{"vertices":[[x,y],...],"edges":[[a,b],...]}}` on one line: the fields of
 //! [`Reconstruction`] (`edges` with `i < j`, sorted; `curves` as in
-//! [`Curve`](crate::reconstruct::Curve); the medial axis as in
-//! [`MedialAxis`](crate::reconstruct::MedialAxis), empty for the baseline algorithms).
+//! [`Curve`]; the medial axis as in
+//! [`MedialAxis`], empty for the baseline algorithms).
 //!
 //! # Reconstruction, text
 //!
@@ -323,7 +323,7 @@ struct ReconstructionJson<'a> {
 /// let mut out = Vec::new();
 /// wdm_crust::io::write_reconstruction_json(&rec, &mut out)?;
 /// let json = String::from_utf8(out)?;
-/// assert!(json.starts_with("{\"algorithm\":\"wdm\",\"points\":5,\"edges\":[["));
+/// assert!(json.starts_with("{\"algorithm\":\"wdm\",\"points\":8,\"edges\":[["));
 /// let value: serde_json::Value = serde_json::from_str(&json)?;
 /// assert_eq!(value["edges"].as_array().unwrap().len(), rec.edges().len());
 /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -482,6 +482,100 @@ mod tests {
             String::from_utf8(out).unwrap(),
             "{\"points\":0,\"triangles\":[],\"hull\":[],\"duplicates\":[]}\n"
         );
+    }
+
+    #[test]
+    fn voronoi_json_and_text_of_a_square_with_its_centre() {
+        let tri = crate::triangulate(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 0.5]])
+            .unwrap();
+        let vor = tri.voronoi();
+        let mut out = Vec::new();
+        write_voronoi_json(&vor, &mut out).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        assert!(text.starts_with("{\"vertices\":[["));
+        let value: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let vertices: Vec<[f64; 2]> = serde_json::from_value(value["vertices"].clone()).unwrap();
+        assert_eq!(vertices.len(), vor.vertex_positions().len());
+        for (a, b) in vertices.iter().zip(vor.vertex_positions()) {
+            assert!(
+                (a[0] - b[0]).abs() + (a[1] - b[1]).abs() <= 1e-15,
+                "{a:?} {b:?}"
+            );
+        }
+        let rays: Vec<(u32, f64, f64)> = serde_json::from_value(value["rays"].clone()).unwrap();
+        let expected: Vec<(u32, f64, f64)> =
+            vor.rays().map(|(_, v, [dx, dy])| (v, dx, dy)).collect();
+        assert_eq!(rays, expected);
+        let cells: Vec<Vec<u32>> = serde_json::from_value(value["cells"].clone()).unwrap();
+        assert_eq!(cells.len(), 5);
+        assert_eq!(cells[4], vor.cell(4).collect::<Vec<_>>());
+
+        let mut out = Vec::new();
+        write_voronoi_text(&vor, &mut out).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(
+            lines[0],
+            "# wdm-crust voronoi: 5 points, 4 vertices, 4 edges, 4 rays"
+        );
+        assert_eq!(lines.iter().filter(|l| l.starts_with("v ")).count(), 4);
+        assert_eq!(lines.iter().filter(|l| l.starts_with("e ")).count(), 4);
+        assert_eq!(lines.iter().filter(|l| l.starts_with("r ")).count(), 4);
+        let c4: Vec<String> = vor.cell(4).map(|v| v.to_string()).collect();
+        assert_eq!(*lines.last().unwrap(), format!("c 4 {}", c4.join(" ")));
+    }
+
+    #[test]
+    fn voronoi_text_of_collinear_points_lists_the_bisectors() {
+        let tri = crate::triangulate(&[[0.0, 0.0], [1.0, 1.0], [1.0, 1.0]]).unwrap();
+        let mut out = Vec::new();
+        write_voronoi_text(&tri.voronoi(), &mut out).unwrap();
+        assert_eq!(
+            String::from_utf8(out).unwrap(),
+            "# wdm-crust voronoi: 3 points, 0 vertices, 0 edges, 0 rays\n\
+             # collinear: no vertices; the diagram is the perpendicular bisectors of these pairs\n\
+             # bisector 0 1\nc 0\nc 1\nc 2\n"
+        );
+    }
+
+    #[test]
+    fn reconstruction_json_and_text() {
+        let points: Vec<[f64; 2]> = (0..10)
+            .map(|k| {
+                let t = f64::from(k * 3 % 10) * std::f64::consts::TAU / 10.0;
+                [t.cos(), t.sin()]
+            })
+            .collect();
+        let rec = crate::reconstruct(&points).unwrap();
+        let mut out = Vec::new();
+        write_reconstruction_json(&rec, &mut out).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        let value: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(value["algorithm"], "wdm");
+        assert_eq!(value["points"], 10);
+        let edges: Vec<[u32; 2]> = serde_json::from_value(value["edges"].clone()).unwrap();
+        assert_eq!(edges, rec.edges());
+        assert_eq!(value["curves"], serde_json::to_value(rec.curves()).unwrap());
+        let axis = &value["medial_axis"];
+        let axis_edges: Vec<[u32; 2]> = serde_json::from_value(axis["edges"].clone()).unwrap();
+        assert_eq!(axis_edges, rec.medial_axis().edges);
+        // serde_json's parser may be one unit in the last place off: compare loosely.
+        let vertices: Vec<[f64; 2]> = serde_json::from_value(axis["vertices"].clone()).unwrap();
+        assert_eq!(vertices.len(), rec.medial_axis().vertices.len());
+        for (a, b) in vertices.iter().zip(&rec.medial_axis().vertices) {
+            for k in 0..2 {
+                assert!((a[k] - b[k]).abs() <= 1e-15 * b[k].abs(), "{a:?} {b:?}");
+            }
+        }
+
+        let mut out = Vec::new();
+        write_reconstruction_text(&rec, &mut out).unwrap();
+        let expected: String = rec
+            .edges()
+            .iter()
+            .map(|[i, j]| format!("{i} {j}\n"))
+            .collect();
+        assert_eq!(String::from_utf8(out).unwrap(), expected);
     }
 
     #[test]

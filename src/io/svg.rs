@@ -195,7 +195,10 @@ pub fn write_reconstruction_svg<W: Write>(
         w.close_group()?;
     }
 
-    for (closed, colour, id) in [(true, CLOSED, "closed-curves"), (false, OPEN, "open-chains")] {
+    for (closed, colour, id) in [
+        (true, CLOSED, "closed-curves"),
+        (false, OPEN, "open-chains"),
+    ] {
         if !rec.curves().iter().any(|c| c.closed == closed) {
             continue;
         }
@@ -329,7 +332,7 @@ impl Frame {
         let (min, max) = bounding_box(points);
         let size = [max[0] - min[0], max[1] - min[1]];
         let mut extent = size[0].max(size[1]);
-        if !(extent > 0.0 && extent.is_finite()) {
+        if !extent.is_finite() || extent <= 0.0 {
             // One distinct point: a frame proportionate to its coordinates.
             extent = min[0].abs().max(min[1].abs());
             if extent == 0.0 {
@@ -369,7 +372,7 @@ impl Frame {
 /// Clips the part `t0 ≤ t ≤ t1` of the line `p + t d` to `rect` (Liang–Barsky); `t0` and
 /// `t1` may be infinite. `None` when nothing is left or the input is not finite.
 fn clip(p: [f64; 2], d: [f64; 2], t0: f64, t1: f64, rect: &Rect) -> Option<([f64; 2], [f64; 2])> {
-    if !(p.iter().chain(&d).all(|v| v.is_finite())) {
+    if !p.iter().chain(&d).all(|v| v.is_finite()) {
         return None;
     }
     let (mut lo, mut hi) = (t0, t1);
@@ -385,7 +388,7 @@ fn clip(p: [f64; 2], d: [f64; 2], t0: f64, t1: f64, rect: &Rect) -> Option<([f64
         lo = lo.max(a.min(b));
         hi = hi.min(a.max(b));
     }
-    if !(lo <= hi && lo.is_finite() && hi.is_finite()) {
+    if !(lo.is_finite() && hi.is_finite()) || lo > hi {
         return None;
     }
     let at = |t: f64| [p[0] + t * d[0], p[1] + t * d[1]];
@@ -481,11 +484,7 @@ impl<W: Write> SvgWriter<'_, W> {
     }
 
     /// A polyline (closed with `Z` if `closed`) as a path.
-    fn polyline(
-        &mut self,
-        points: impl Iterator<Item = [f64; 2]>,
-        closed: bool,
-    ) -> io::Result<()> {
+    fn polyline(&mut self, points: impl Iterator<Item = [f64; 2]>, closed: bool) -> io::Result<()> {
         self.buf.push_str("<path d=\"");
         for (i, p) in points.enumerate() {
             self.buf.push(if i == 0 { 'M' } else { 'L' });
@@ -592,9 +591,8 @@ fn legend_items(rec: &Reconstruction, options: &SvgOptions, untouched: &[u32]) -
         .unwrap_or_else(|| format!("{name} reconstruction of {n} points"));
     let closed = rec.curves().iter().filter(|c| c.closed).count();
     let open = rec.curves().len() - closed;
-    let plural = |k: usize, one: &str, many: &str| {
-        format!("{k} {}", if k == 1 { one } else { many })
-    };
+    let plural =
+        |k: usize, one: &str, many: &str| format!("{k} {}", if k == 1 { one } else { many });
     let mut items = vec![(
         Swatch::Dot(POINT, style.point_radius.max(2.0)),
         plural(n, "point", "points"),
@@ -653,7 +651,8 @@ fn write_legend<W: Write>(
     frame: &Frame,
     legend: &Legend,
 ) -> io::Result<()> {
-    w.buf.push_str("<g id=\"legend\" fill=\"#222222\" transform=\"translate(");
+    w.buf
+        .push_str("<g id=\"legend\" fill=\"#222222\" transform=\"translate(");
     w.nums(&[frame.view[0], frame.legend_top]);
     let _ = write!(
         w.buf,
@@ -809,7 +808,14 @@ mod tests {
         };
         let (a, b) = clip([0.5, 0.5], [1.0, 0.0], 0.0, f64::INFINITY, &rect).unwrap();
         assert_eq!((a, b), ([0.5, 0.5], [1.0, 0.5]));
-        let (a, b) = clip([0.5, -1.0], [0.0, 1.0], f64::NEG_INFINITY, f64::INFINITY, &rect).unwrap();
+        let (a, b) = clip(
+            [0.5, -1.0],
+            [0.0, 1.0],
+            f64::NEG_INFINITY,
+            f64::INFINITY,
+            &rect,
+        )
+        .unwrap();
         assert_eq!((a, b), ([0.5, 0.0], [0.5, 1.0]));
         assert!(clip([2.0, 2.0], [1.0, 1.0], 0.0, 1.0, &rect).is_none());
         assert!(clip([0.5, 0.5], [0.0, 0.0], 0.0, f64::INFINITY, &rect).is_none());

@@ -7,7 +7,7 @@
 //! ([`curves`]). Shapes with holes are handled by peeling (see [`Options::peeling`]).
 
 pub mod crust;
-pub mod curves;
+mod curves;
 pub mod nn_crust;
 pub mod wdm;
 
@@ -333,12 +333,18 @@ fn untouched(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<u32> {
 
 /// Reruns WDM_CRUST on the points the crust left untouched, adding what each pass finds,
 /// until a pass finds nothing or fewer than three points remain. Returns the extra passes.
+///
+/// Only edges of the full Delaunay triangulation are taken from a later pass. A nested
+/// curve's edges are Delaunay edges of all the points (so they never cross an earlier
+/// curve), whereas the leftovers of a noisy band would otherwise be joined by long chords
+/// across the curve already found.
 fn peel(
     points: &[[f64; 2]],
     tri: &Triangulation,
     edges: &mut Vec<[u32; 2]>,
     options: &Options,
 ) -> usize {
+    let delaunay_edges = delaunay_edges(tri);
     let mut extra = 0;
     loop {
         let rest = untouched(tri, edges);
@@ -355,16 +361,36 @@ fn peel(
         }
         let vor = sub.voronoi();
         let flow = wdm::label_vertices(&vor, options.label_rule);
-        let found = crust_edges(&vor, &flow.labels);
+        let found: Vec<[u32; 2]> = crust_edges(&vor, &flow.labels)
+            .iter()
+            .map(|&[a, b]| {
+                let (a, b) = (rest[a as usize], rest[b as usize]);
+                [a.min(b), a.max(b)]
+            })
+            .filter(|e| delaunay_edges.binary_search(e).is_ok())
+            .collect();
         if found.is_empty() {
             return extra;
         }
-        edges.extend(found.iter().map(|&[a, b]| {
-            let (a, b) = (rest[a as usize], rest[b as usize]);
-            [a.min(b), a.max(b)]
-        }));
+        edges.extend(found);
         extra += 1;
     }
+}
+
+/// Every Delaunay edge `[i, j]`, `i < j`, sorted.
+fn delaunay_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
+    let mut out: Vec<[u32; 2]> = (0..tri.halfedges().len())
+        .filter(|&e| {
+            let twin = tri.halfedges()[e];
+            twin == crate::delaunay::NO_TWIN || e < twin as usize
+        })
+        .map(|e| {
+            let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
+            [a.min(b), a.max(b)]
+        })
+        .collect();
+    out.sort_unstable();
+    out
 }
 
 /// Inside/outside of every Voronoi vertex by the parity of crust edges crossed on the way

@@ -293,11 +293,6 @@ impl<'a> MixedPoints<'a> {
         }
     }
 
-    /// Number of samples (the index where Voronoi vertices start).
-    pub(crate) fn sample_count(&self) -> usize {
-        self.samples.len()
-    }
-
     /// Is `i` a sample?
     pub(crate) fn is_sample(&self, i: u32) -> bool {
         (i as usize) < self.samples.len()

@@ -1,0 +1,133 @@
+//! The polynomials of the derived predicates, written once and generic over the number type.
+//!
+//! Divisions are avoided: with a triangle translated to its first vertex `t0`,
+//! `b = t1 − t0`, `c = t2 − t0`, the circumcenter is `O = t0 + (ux, uy) / d` with
+//! `d = 2 (bx·cy − by·cx)`, `ux = cy·|b|² − by·|c|²`, `uy = bx·|c|² − cx·|b|²`; a predicate on
+//! `O − p` is evaluated on `d·(O − p) = d·(t0 − p) + u` and its sign corrected by the sign of
+//! `d`, which is the triangle's orientation.
+//!
+//! Input coordinates enter only through differences of two inputs ([`Arith::leaf_sub`]), the
+//! leaves of every expression: the floating-point filter bounds its error in terms of them.
+
+use super::arith::Arith;
+
+/// The circumcenter of a triangle in homogeneous form relative to its first vertex `t0`:
+/// `O = t0 + (ux, uy) / d`.
+pub(super) struct Circ<T> {
+    /// `2 (bx·cy − by·cx)` with `b = t1 − t0`, `c = t2 − t0`: positive iff the triangle is CCW.
+    pub(super) d: T,
+    pub(super) ux: T,
+    pub(super) uy: T,
+}
+
+/// A point in the number type `T`.
+pub(super) type Pt<T> = [T; 2];
+
+/// `p − q`, coordinates of input points: the leaves of every expression.
+#[inline(always)]
+pub(super) fn diff<T: Arith>(p: &Pt<T>, q: &Pt<T>) -> Pt<T> {
+    [p[0].leaf_sub(&q[0]), p[1].leaf_sub(&q[1])]
+}
+
+#[inline(always)]
+fn norm2<T: Arith>(v: &Pt<T>) -> T {
+    v[0].mul(&v[0]).add(&v[1].mul(&v[1]))
+}
+
+#[inline(always)]
+fn cross<T: Arith>(v: &Pt<T>, w: &Pt<T>) -> T {
+    v[0].mul(&w[1]).sub(&v[1].mul(&w[0]))
+}
+
+/// `bx·cy − by·cx` for `b = t1 − t0`, `c = t2 − t0`: the orientation of `t` (half of `d`).
+#[inline(always)]
+pub(super) fn orientation_term<T: Arith>(t: &[Pt<T>; 3]) -> T {
+    cross(&diff(&t[1], &t[0]), &diff(&t[2], &t[0]))
+}
+
+/// `(bx·cy − by·cx, ux, uy)`: the circumcenter relative to `t0` is `u / (2·cross)`.
+#[inline(always)]
+fn circ_half<T: Arith>(t: &[Pt<T>; 3]) -> (T, T, T) {
+    let b = diff(&t[1], &t[0]);
+    let c = diff(&t[2], &t[0]);
+    let b2 = norm2(&b);
+    let c2 = norm2(&c);
+    let ux = c[1].mul(&b2).sub(&b[1].mul(&c2));
+    let uy = b[0].mul(&c2).sub(&c[0].mul(&b2));
+    (cross(&b, &c), ux, uy)
+}
+
+#[inline(always)]
+pub(super) fn circ<T: Arith>(t: &[Pt<T>; 3]) -> Circ<T> {
+    let (x, ux, uy) = circ_half(t);
+    Circ {
+        d: x.twice(),
+        ux,
+        uy,
+    }
+}
+
+/// `d·(O − p)` for the circumcenter `O = t0 + u/d` described by `c`.
+#[inline(always)]
+fn scaled_offset<T: Arith>(c: &Circ<T>, t0: &Pt<T>, p: &Pt<T>) -> Pt<T> {
+    let [dx, dy] = diff(t0, p);
+    [c.d.mul(&dx).add(&c.ux), c.d.mul(&dy).add(&c.uy)]
+}
+
+/// `(b − a) × d·(O − a)` (degree 4) for the circumcenter `c` of a triangle with first vertex
+/// `t0`: times the sign of `d`, the orientation of `(a, b, O)`.
+#[inline(always)]
+pub(super) fn orient_from_circ<T: Arith>(c: &Circ<T>, t0: &Pt<T>, a: &Pt<T>, b: &Pt<T>) -> T {
+    let n = scaled_offset(c, t0, a);
+    cross(&diff(b, a), &n)
+}
+
+/// `[d, (b − a) × d·(O − a)]` (degrees 2 and 4): the orientation of `(a, b, O)` is the sign
+/// of the product.
+#[inline(always)]
+pub(super) fn orient_terms<T: Arith>(a: &Pt<T>, b: &Pt<T>, tri: &[Pt<T>; 3]) -> [T; 2] {
+    let c = circ(tri);
+    let v = orient_from_circ(&c, &tri[0], a, b);
+    [c.d, v]
+}
+
+/// `[d_s, d_o, d_s·(O_s − p) · d_o·(O_o − p)]` (degrees 2, 2 and 6).
+#[inline(always)]
+pub(super) fn dot_terms<T: Arith>(p: &Pt<T>, source: &[Pt<T>; 3], other: &[Pt<T>; 3]) -> [T; 3] {
+    let cs = circ(source);
+    let co = circ(other);
+    let ns = scaled_offset(&cs, &source[0], p);
+    let no = scaled_offset(&co, &other[0], p);
+    let v = ns[0].mul(&no[0]).add(&ns[1].mul(&no[1]));
+    [cs.d, co.d, v]
+}
+
+/// [`dot_terms`] when `p` is the first vertex of both triangles (the offsets `t0 − p`
+/// vanish), halved: `[d_s/2, d_o/2, u_s · u_o]` (degrees 2, 2 and 6), the same signs.
+#[inline(always)]
+pub(super) fn dot_terms_at_vertex<T: Arith>(source: &[Pt<T>; 3], other: &[Pt<T>; 3]) -> [T; 3] {
+    let (xs, uxs, uys) = circ_half(source);
+    let (xo, uxo, uyo) = circ_half(other);
+    let v = uxs.mul(&uxo).add(&uys.mul(&uyo));
+    [xs, xo, v]
+}
+
+/// `(|t1 − t0|²·|t2 − t0|²·|t2 − t1|², (d/2)²)`: the squared circumradius is their quotient
+/// divided by 4 (`R = |a||b||c| / (4·area)` and `|d| = 4·area`).
+#[inline(always)]
+fn radius_parts<T: Arith>(t: &[Pt<T>; 3]) -> (T, T) {
+    let b = diff(&t[1], &t[0]);
+    let c = diff(&t[2], &t[0]);
+    let a = diff(&t[2], &t[1]);
+    let n = norm2(&b).mul(&norm2(&c)).mul(&norm2(&a));
+    let x = cross(&b, &c);
+    (n, x.mul(&x))
+}
+
+/// `4·(R1² − R2²)·(d1/2)²·(d2/2)²` (degree 10), the sign of `R1 − R2`.
+#[inline(always)]
+pub(super) fn radius_terms<T: Arith>(t1: &[Pt<T>; 3], t2: &[Pt<T>; 3]) -> [T; 1] {
+    let (n1, xx1) = radius_parts(t1);
+    let (n2, xx2) = radius_parts(t2);
+    [n1.mul(&xx2).sub(&n2.mul(&xx1))]
+}

@@ -23,5 +23,5 @@ pub mod voronoi;
 
 pub use delaunay::{triangulate, Triangulation};
 pub use error::Error;
-pub use reconstruct::{reconstruct, reconstruct_with, Reconstruction};
+pub use reconstruct::{reconstruct, reconstruct_observed, reconstruct_with, Reconstruction};
 pub use voronoi::Voronoi;

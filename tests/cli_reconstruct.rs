@@ -395,7 +395,15 @@ fn standard_input_output_file_and_timings() {
     );
     assert_eq!(run.code, 0, "{}", run.stderr);
     assert_eq!(run.stdout, "");
-    for phase in ["parse", "reconstruct", "write", "total"] {
+    for phase in [
+        "parse",
+        "triangulate",
+        "voronoi",
+        "label",
+        "extract",
+        "write",
+        "total",
+    ] {
         assert!(
             run.stderr
                 .lines()

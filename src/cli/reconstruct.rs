@@ -7,7 +7,7 @@ use clap::{Args, ValueEnum};
 use wdm_crust::io::{
     write_reconstruction_json, write_reconstruction_svg, write_reconstruction_text, SvgOptions,
 };
-use wdm_crust::reconstruct::{Algorithm, Options};
+use wdm_crust::reconstruct::{Algorithm, Options, Phase};
 
 use super::input::Input;
 use super::output::Output;
@@ -100,7 +100,7 @@ pub struct ReconstructArgs {
     #[arg(short, long, value_name = "OUTPUT")]
     output: Option<PathBuf>,
 
-    /// Print the wall time of each phase (parse, reconstruct, write) to standard error.
+    /// Print the wall time of each phase (parse, triangulate, voronoi, label, extract, write) to standard error.
     #[arg(long)]
     timings: bool,
 
@@ -151,20 +151,24 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
         peeling: !args.no_peeling,
         ..Default::default()
     };
-    timings.begin(|| {
-        format!(
-            "reconstructing ({}) {} points",
-            options.algorithm.name(),
-            points.len()
-        )
-    });
-    let rec =
-        wdm_crust::reconstruct_with(&points, &options).map_err(|e| input.library_error(&e))?;
-    // The library runs triangulate, voronoi, label and extract in one call.
-    timings.phase("reconstruct", || {
+    let n = points.len();
+    timings.begin(|| format!("triangulating {n} points"));
+    // The library reports each phase as it ends; the next one begins right then.
+    let rec = wdm_crust::reconstruct_observed(&points, &options, &mut |phase, _| {
+        timings.phase(phase.name(), String::new);
+        if let Some(next) = next_phase(options.algorithm, phase) {
+            timings.begin(|| match next {
+                Phase::Voronoi => "building the Voronoi diagram".to_string(),
+                Phase::Label => "labeling by water flow".to_string(),
+                _ => format!("extracting ({})", options.algorithm.name()),
+            });
+        }
+    })
+    .map_err(|e| input.library_error(&e))?;
+    timings.note(|| {
         let closed = rec.curves().iter().filter(|c| c.closed).count();
         format!(
-            "triangulate+voronoi+label+extract: {} edges, {} closed curves, {} open chains, {} medial-axis edges, {} passes",
+            "{} edges, {} closed curves, {} open chains, {} medial-axis edges, {} passes",
             rec.edges().len(),
             closed,
             rec.curves().len() - closed,
@@ -188,4 +192,15 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
     timings.phase("write", String::new);
     timings.report();
     Ok(())
+}
+
+/// The phase after `phase` in the pipeline of `algorithm`.
+fn next_phase(algorithm: Algorithm, phase: Phase) -> Option<Phase> {
+    match (algorithm, phase) {
+        (Algorithm::Wdm, Phase::Triangulate) => Some(Phase::Voronoi),
+        (Algorithm::Wdm, Phase::Voronoi) => Some(Phase::Label),
+        (Algorithm::Wdm, Phase::Label) => Some(Phase::Extract),
+        (_, Phase::Triangulate) => Some(Phase::Extract),
+        _ => None,
+    }
 }

@@ -186,7 +186,10 @@ mod tests {
                 distinct.push(i);
             }
         }
-        let s: Vec<[Q; 2]> = distinct.iter().map(|&i| [q(points[i][0]), q(points[i][1])]).collect();
+        let s: Vec<[Q; 2]> = distinct
+            .iter()
+            .map(|&i| [q(points[i][0]), q(points[i][1])])
+            .collect();
         let d2 = |a: &[Q; 2], b: &[Q; 2]| {
             let (dx, dy) = (&a[0] - &b[0], &a[1] - &b[1]);
             &dx * &dx + &dy * &dy
@@ -280,8 +283,8 @@ mod tests {
             let pts: Vec<[f64; 2]> = order
                 .iter()
                 .map(|&k| {
-                    let t = (k as f64 + jitter * (rng.next() - 0.5)) * std::f64::consts::TAU
-                        / n as f64;
+                    let t =
+                        (k as f64 + jitter * (rng.next() - 0.5)) * std::f64::consts::TAU / n as f64;
                     [3.0 * t.cos() + 1.0, 3.0 * t.sin() - 2.0]
                 })
                 .collect();
@@ -324,8 +327,16 @@ mod tests {
     #[test]
     fn matches_brute_force_reference_on_random_and_degenerate_sets() {
         let mut rng = Lcg(7);
-        for case in 0..std::env::var("CRUST_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(150) {
-            let n = 4 + case % std::env::var("CRUST_MAXN").ok().and_then(|v| v.parse().ok()).unwrap_or(9);
+        for case in 0..std::env::var("CRUST_CASES")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(150)
+        {
+            let n = 4 + case
+                % std::env::var("CRUST_MAXN")
+                    .ok()
+                    .and_then(|v| v.parse().ok())
+                    .unwrap_or(9);
             let pts: Vec<[f64; 2]> = (0..n)
                 .map(|_| match case % 3 {
                     // Small integer grid: duplicates, collinear and cocircular groups.
@@ -344,7 +355,11 @@ mod tests {
             if tri.is_degenerate() {
                 continue;
             }
-            assert_eq!(crust_edges(&tri), reference_crust(&pts), "case {case}: {pts:?}");
+            assert_eq!(
+                crust_edges(&tri),
+                reference_crust(&pts),
+                "case {case}: {pts:?}"
+            );
         }
     }
 
@@ -386,7 +401,14 @@ mod tests {
 
     #[test]
     fn duplicates_map_to_the_kept_point() {
-        let pts = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0], [4.0, 0.0], [2.0, 4.5]];
+        let pts = [
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 4.0],
+            [0.0, 4.0],
+            [4.0, 0.0],
+            [2.0, 4.5],
+        ];
         assert_eq!(crust_of(&pts), vec![[0, 1], [0, 3], [1, 2], [2, 5], [3, 5]]);
     }
 

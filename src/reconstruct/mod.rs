@@ -4,7 +4,7 @@
 //! Voronoi dual, label its vertices by the water flow ([`wdm`]), keep the Delaunay edges whose
 //! dual Voronoi edge joins an inner and an outer vertex (the crust) and the finite Voronoi
 //! edges joining two inner vertices (the medial axis), assemble the crust into curves
-//! ([`curves`]). Shapes with holes are handled by peeling (see [`Options::peeling`]).
+//! ([`Curve`]). Shapes with holes are handled by peeling (see [`Options::peeling`]).
 
 pub mod crust;
 mod curves;
@@ -181,7 +181,48 @@ pub fn reconstruct(points: &[[f64; 2]]) -> Result<Reconstruction, Error> {
 
 /// Reconstruction with explicit [`Options`].
 pub fn reconstruct_with(points: &[[f64; 2]], options: &Options) -> Result<Reconstruction, Error> {
+    reconstruct_observed(points, options, &mut |_, _| {})
+}
+
+/// A stage of the reconstruction pipeline, as reported to [`reconstruct_observed`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Phase {
+    /// Validation, duplicate merging and the Delaunay triangulation.
+    Triangulate,
+    /// The merged-face Voronoi dual.
+    Voronoi,
+    /// The water flow and the inner/outer labels.
+    Label,
+    /// Crust edges, peeling passes, medial axis and curve assembly (or a baseline's edges).
+    Extract,
+}
+
+impl Phase {
+    /// Lower-case name, as printed by `--timings`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Phase::Triangulate => "triangulate",
+            Phase::Voronoi => "voronoi",
+            Phase::Label => "label",
+            Phase::Extract => "extract",
+        }
+    }
+}
+
+/// [`reconstruct_with`], calling `on_phase` with the wall time of each [`Phase`] as it ends
+/// (for timings and progress reports).
+pub fn reconstruct_observed(
+    points: &[[f64; 2]],
+    options: &Options,
+    on_phase: &mut dyn FnMut(Phase, std::time::Duration),
+) -> Result<Reconstruction, Error> {
+    let mut clock = std::time::Instant::now();
+    let mut lap = |phase: Phase| {
+        on_phase(phase, clock.elapsed());
+        clock = std::time::Instant::now();
+    };
     let triangulation = triangulate(points)?;
+    lap(Phase::Triangulate);
     if options.algorithm != Algorithm::Wdm {
         let edges = if triangulation.is_degenerate() {
             chain_edges(&triangulation)
@@ -190,58 +231,60 @@ pub fn reconstruct_with(points: &[[f64; 2]], options: &Options) -> Result<Recons
         } else {
             nn_crust::nn_crust_edges(&triangulation)
         };
-        return Ok(finish(
-            options.algorithm,
-            triangulation,
-            Vec::new(),
-            edges,
-            MedialAxis::default(),
-            1,
-        ));
+        let axis = MedialAxis::default();
+        let rec = finish(options.algorithm, triangulation, Vec::new(), edges, axis, 1);
+        lap(Phase::Extract);
+        return Ok(rec);
     }
-    let (labels, mut edges, first_pass_axis) = {
+    let (labels, edges, medial_axis, passes) = {
         let vor = triangulation.voronoi();
+        lap(Phase::Voronoi);
         let flow = wdm::label_vertices(&vor, options.label_rule);
-        let edges = if triangulation.is_degenerate() {
+        lap(Phase::Label);
+        let mut edges = if triangulation.is_degenerate() {
             chain_edges(&triangulation)
         } else {
             crust_edges(&vor, &flow.labels)
         };
-        let axis = medial_axis(&vor, &flow.labels);
-        (flow.labels, edges, axis)
+        let passes = 1 + if options.peeling {
+            peel(points, &triangulation, &mut edges, options)
+        } else {
+            0
+        };
+        edges.sort_unstable();
+        edges.dedup();
+        let axis = if passes > 1 {
+            // Holes were found: a vertex is inside the shape when it is inner in the first
+            // pass and an odd number of curves separate it from infinity.
+            let inside = parity_inside(&vor, &edges);
+            let combined: Vec<Label> = flow
+                .labels
+                .iter()
+                .zip(&inside)
+                .map(|(&l, &i)| {
+                    if l == Label::Inner && i {
+                        Label::Inner
+                    } else {
+                        Label::Outer
+                    }
+                })
+                .collect();
+            medial_axis(&vor, &combined)
+        } else {
+            medial_axis(&vor, &flow.labels)
+        };
+        (flow.labels, edges, axis, passes)
     };
-    let mut passes = 1;
-    if options.peeling {
-        passes += peel(points, &triangulation, &mut edges, options);
-    }
-    edges.sort_unstable();
-    edges.dedup();
-    let medial_axis = if passes > 1 {
-        let vor = triangulation.voronoi();
-        let inside = crate::reconstruct::parity_inside(&vor, &edges);
-        let combined: Vec<Label> = labels
-            .iter()
-            .zip(&inside)
-            .map(|(&l, &i)| {
-                if l == Label::Inner && i {
-                    Label::Inner
-                } else {
-                    Label::Outer
-                }
-            })
-            .collect();
-        medial_axis(&vor, &combined)
-    } else {
-        first_pass_axis
-    };
-    Ok(finish(
+    let rec = finish(
         options.algorithm,
         triangulation,
         labels,
         edges,
         medial_axis,
         passes,
-    ))
+    );
+    lap(Phase::Extract);
+    Ok(rec)
 }
 
 /// Sorts the edges and assembles the curves.

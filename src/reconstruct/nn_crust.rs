@@ -1,8 +1,294 @@
-//! The nearest-neighbour crust of Dey and Kumar (1999). Being written: returns no edges yet.
+//! The nearest-neighbour crust of Dey and Kumar (1999), decided exactly.
+//!
+//! For every sample `p`:
+//! 1. the edge to its nearest neighbour `q`;
+//! 2. the edge to its *half neighbour* `s`: the nearest among the neighbours with
+//!    `(s − p)·(q − p) < 0` (strictly more than 90° away from `pq`), if there is one.
+//!
+//! Candidates are the neighbours of `p` in the Delaunay graph (the edges with a dual Voronoi
+//! edge: hull edges, and interior edges whose two triangles are not cocircular). The nearest
+//! neighbour is always such a neighbour (its diametral disk holds no other point, not even on
+//! the boundary); restricting the half neighbour to Delaunay edges is Dey and Kumar's
+//! algorithm, and leaving out the diagonals of cocircular groups makes the result independent
+//! of how the triangulation split them.
+//!
+//! # Exactness and determinism
+//!
+//! Both tests are polynomials in the input coordinates, evaluated by outward-rounded interval
+//! arithmetic and, when the interval contains zero, exactly in [`BigRational`]:
+//! * `|p − a|² − |p − b|² = (a − b)·((a − p) + (b − p))` (degree 2) compares two distances;
+//! * `(s − p)·(q − p)` (degree 2) is the half-plane test.
+//!
+//! Equal distances are broken by the coordinates of the candidates (smaller `x`, then smaller
+//! `y`), never by input index, so the result does not depend on the order of the input.
 
-use crate::delaunay::Triangulation;
+use std::cmp::Ordering;
 
-/// NN-crust edges of the distinct points of `tri`, `[i, j]` with `i < j`.
-pub fn nn_crust_edges(_tri: &Triangulation) -> Vec<[u32; 2]> {
-    Vec::new()
+use num_rational::BigRational;
+
+use crate::delaunay::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
+use crate::predicates::{incircle, CirclePosition};
+
+use super::crust::interval::{rational, rational_sign, Iv};
+
+/// NN-crust edges of the distinct points of `tri`, `[i, j]` with `i < j`, sorted.
+///
+/// Collinear input gives the chain along the line.
+///
+/// ```
+/// use wdm_crust::reconstruct::nn_crust::nn_crust_edges;
+/// // Pairs of close points on a circle: the nearest neighbours only pair them up; the half
+/// // neighbours close the polygon.
+/// let pts: Vec<[f64; 2]> = (0..8)
+///     .map(|i| {
+///         let t = (i / 2) as f64 * std::f64::consts::FRAC_PI_2 + (i % 2) as f64 * 0.2;
+///         [t.cos(), t.sin()]
+///     })
+///     .collect();
+/// let tri = wdm_crust::triangulate(&pts)?;
+/// assert_eq!(nn_crust_edges(&tri).len(), 8);
+/// # Ok::<(), wdm_crust::Error>(())
+/// ```
+pub fn nn_crust_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
+    if tri.is_degenerate() {
+        let mut chain: Vec<[u32; 2]> = tri
+            .hull()
+            .windows(2)
+            .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
+            .collect();
+        chain.sort_unstable();
+        return chain;
+    }
+    let points = tri.points();
+    let neighbours = delaunay_graph(tri);
+    let mut edges = Vec::new();
+    for p in 0..points.len() {
+        let around = &neighbours.targets[neighbours.start[p]..neighbours.start[p + 1]];
+        let pp = points[p];
+        let nearest = |candidates: &mut dyn Iterator<Item = u32>| {
+            candidates.min_by(|&a, &b| closer(pp, points[a as usize], points[b as usize]))
+        };
+        let Some(q) = nearest(&mut around.iter().copied()) else {
+            continue;
+        };
+        let pq = points[q as usize];
+        let half = nearest(&mut around.iter().copied().filter(|&s| {
+            dot_sign(pp, points[s as usize], pq) == Ordering::Less
+        }));
+        let p = p as u32;
+        edges.push([p.min(q), p.max(q)]);
+        if let Some(s) = half {
+            edges.push([p.min(s), p.max(s)]);
+        }
+    }
+    edges.sort_unstable();
+    edges.dedup();
+    edges
+}
+
+/// Adjacency lists of the Delaunay graph in compressed rows.
+struct Adjacency {
+    start: Vec<usize>,
+    targets: Vec<u32>,
+}
+
+/// The neighbours of every point along edges with a dual Voronoi edge.
+fn delaunay_graph(tri: &Triangulation) -> Adjacency {
+    let points = tri.points();
+    let halfedges = tri.halfedges();
+    let mut pairs: Vec<(u32, u32)> = Vec::with_capacity(halfedges.len() + tri.hull().len());
+    for (e, &twin) in halfedges.iter().enumerate() {
+        let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
+        if twin == NO_TWIN {
+            pairs.push((a, b));
+            pairs.push((b, a));
+            continue;
+        }
+        // Each interior edge from the half-edge with the smaller index; kept unless the
+        // triangles on its two sides share their circumcircle.
+        if (twin as usize) < e {
+            continue;
+        }
+        let c = tri.halfedge_origin(prev_in_triangle(e));
+        let d = tri.halfedge_origin(prev_in_triangle(twin as usize));
+        let at = |i: u32| points[i as usize];
+        if incircle(at(a), at(b), at(c), at(d)) != CirclePosition::On {
+            pairs.push((a, b));
+            pairs.push((b, a));
+        }
+        debug_assert_eq!(tri.halfedge_origin(next_in_triangle(e)), b);
+    }
+    pairs.sort_unstable();
+    let mut start = vec![0usize; points.len() + 1];
+    for &(a, _) in &pairs {
+        start[a as usize + 1] += 1;
+    }
+    for i in 0..points.len() {
+        start[i + 1] += start[i];
+    }
+    Adjacency {
+        start,
+        targets: pairs.into_iter().map(|(_, b)| b).collect(),
+    }
+}
+
+/// Orders `a` before `b` if it is strictly closer to `p`, or equally close and smaller in
+/// `(x, y)`; exact.
+fn closer(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Ordering {
+    distance_order(p, a, b).then_with(|| {
+        a[0].partial_cmp(&b[0])
+            .unwrap_or(Ordering::Equal)
+            .then(a[1].partial_cmp(&b[1]).unwrap_or(Ordering::Equal))
+    })
+}
+
+/// The exact order of `|p − a|` and `|p − b|`.
+fn distance_order(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Ordering {
+    let i = Iv::point;
+    let term = |k: usize| {
+        let diff = i(a[k]).sub(i(b[k]));
+        let sum = i(a[k]).sub(i(p[k])).add(i(b[k]).sub(i(p[k])));
+        diff.mul(sum)
+    };
+    term(0).add(term(1)).sign().unwrap_or_else(|| {
+        let r = |k: usize| {
+            let (a, b, p) = (rational(a[k]), rational(b[k]), rational(p[k]));
+            (&a - &b) * ((&a - &p) + (&b - &p))
+        };
+        let value: BigRational = r(0) + r(1);
+        rational_sign(&value)
+    })
+}
+
+/// The exact sign of `(s − p)·(q − p)`.
+fn dot_sign(p: [f64; 2], s: [f64; 2], q: [f64; 2]) -> Ordering {
+    let i = Iv::point;
+    let term = |k: usize| i(s[k]).sub(i(p[k])).mul(i(q[k]).sub(i(p[k])));
+    term(0).add(term(1)).sign().unwrap_or_else(|| {
+        let r = |k: usize| {
+            let (s, q, p) = (rational(s[k]), rational(q[k]), rational(p[k]));
+            (&s - &p) * (&q - &p)
+        };
+        let value: BigRational = r(0) + r(1);
+        rational_sign(&value)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::triangulate;
+
+    fn nn_crust_of(points: &[[f64; 2]]) -> Vec<[u32; 2]> {
+        nn_crust_edges(&triangulate(points).unwrap())
+    }
+
+    fn polygon_edges(order: &[usize]) -> Vec<[u32; 2]> {
+        let n = order.len();
+        let mut edges: Vec<[u32; 2]> = (0..n)
+            .map(|i| {
+                let (a, b) = (order[i] as u32, order[(i + 1) % n] as u32);
+                [a.min(b), a.max(b)]
+            })
+            .collect();
+        edges.sort_unstable();
+        edges
+    }
+
+    #[test]
+    fn dense_circle_sample_gives_the_polygon() {
+        let n = 50;
+        // Scrambled input order; point k of the circle is input index perm[k].
+        let perm: Vec<usize> = (0..n).map(|i| (i * 17 + 5) % n).collect();
+        let mut pts = vec![[0.0; 2]; n];
+        for (k, &i) in perm.iter().enumerate() {
+            let t = (k as f64 + 0.3 * ((k * 7) % 5) as f64 / 5.0) * std::f64::consts::TAU
+                / n as f64;
+            pts[i] = [2.0 * t.cos() - 1.0, 2.0 * t.sin() + 3.0];
+        }
+        assert_eq!(nn_crust_of(&pts), polygon_edges(&perm));
+    }
+
+    #[test]
+    fn half_neighbours_close_the_gaps_between_pairs() {
+        // Close pairs on a circle: every point's nearest neighbour is its partner, so the
+        // edges between pairs come only from half neighbours.
+        let pairs = 9;
+        let pts: Vec<[f64; 2]> = (0..2 * pairs)
+            .map(|i| {
+                let t = (i / 2) as f64 * std::f64::consts::TAU / pairs as f64
+                    + (i % 2) as f64 * 0.1;
+                [t.cos(), t.sin()]
+            })
+            .collect();
+        let edges = nn_crust_of(&pts);
+        let order: Vec<usize> = (0..2 * pairs).collect();
+        assert_eq!(edges, polygon_edges(&order));
+        // Without half neighbours there would be only the pairs.
+        let pair_edges = edges.iter().filter(|e| e[0] / 2 == e[1] / 2).count();
+        assert_eq!(pair_edges, pairs);
+    }
+
+    #[test]
+    fn ties_are_broken_by_coordinates_not_by_index() {
+        // A plus sign: the centre has four neighbours at distance 1. Its nearest neighbour is
+        // the one with the smallest coordinates, (−1, 0); its half neighbour is then (1, 0)
+        // (the only one strictly beyond 90°).
+        let base = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]];
+        let expected_pairs = |pts: &[[f64; 2]]| -> Vec<[[u64; 2]; 2]> {
+            let mut e: Vec<[[u64; 2]; 2]> = nn_crust_of(pts)
+                .iter()
+                .map(|&[a, b]| {
+                    let key = |i: u32| pts[i as usize].map(f64::to_bits);
+                    let (ka, kb) = (key(a), key(b));
+                    if ka < kb {
+                        [ka, kb]
+                    } else {
+                        [kb, ka]
+                    }
+                })
+                .collect();
+            e.sort_unstable();
+            e
+        };
+        let reference = expected_pairs(&base);
+        let centre_edges = nn_crust_of(&base)
+            .into_iter()
+            .filter(|e| e[0] == 0)
+            .collect::<Vec<_>>();
+        assert_eq!(centre_edges, vec![[0, 1], [0, 3]]);
+        // Every permutation of the input gives the same edges between the same points.
+        let mut perm = [0usize, 1, 2, 3, 4];
+        for _ in 0..40 {
+            perm.rotate_left(1);
+            perm.swap(1, (perm[0] + 2) % 5);
+            let pts: Vec<[f64; 2]> = perm.iter().map(|&i| base[i]).collect();
+            assert_eq!(expected_pairs(&pts), reference);
+        }
+    }
+
+    #[test]
+    fn exact_distance_comparison_beyond_f64() {
+        // |p − a|² and |p − b|² differ by far less than their rounding error.
+        let p = [0.1, 0.2];
+        let a = [0.1 + 1e-9, 0.2 + 3e-9];
+        let b = [0.1 - 3e-9, 0.2 + 1e-9];
+        let exact = |x: [f64; 2]| {
+            let (dx, dy) = (rational(x[0]) - rational(p[0]), rational(x[1]) - rational(p[1]));
+            &dx * &dx + &dy * &dy
+        };
+        assert_eq!(distance_order(p, a, b), exact(a).cmp(&exact(b)));
+        assert_eq!(distance_order(p, a, a), Ordering::Equal);
+        // A right angle exactly: not a half neighbour.
+        assert_eq!(dot_sign([0.0, 0.0], [0.0, 0.3], [0.7, 0.0]), Ordering::Equal);
+        assert_eq!(dot_sign([0.1, 0.1], [0.1, 0.4], [0.7, 0.1]), Ordering::Equal);
+    }
+
+    #[test]
+    fn collinear_input_is_the_chain() {
+        assert_eq!(
+            nn_crust_of(&[[0.0, 0.0], [3.0, 3.0], [1.0, 1.0]]),
+            vec![[0, 2], [1, 2]]
+        );
+    }
 }

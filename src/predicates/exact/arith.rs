@@ -29,14 +29,14 @@
 //! has the sign of `v`; if `v = e = 0`, the exact value is zero; otherwise the caller falls
 //! back to exact arithmetic.
 
-use num_bigint::{BigInt, Sign as BigSign};
+use num_bigint::{BigInt, BigUint, Sign as BigSign};
 use num_rational::BigRational;
 use num_traits::{ToPrimitive, Zero};
 
 use super::Sign;
 
 /// Unit roundoff of `f64`: 2^-53.
-const U: f64 = f64::EPSILON / 2.0;
+pub(super) const U: f64 = f64::EPSILON / 2.0;
 /// Smallest positive subnormal: 2^-1074.
 const ETA: f64 = f64::MIN_POSITIVE * f64::EPSILON;
 /// Below this magnitude of a product, Dekker's TwoProduct is not proven exact (underflow).
@@ -54,6 +54,13 @@ pub(super) trait Arith: Sized {
     fn sub(&self, other: &Self) -> Self;
     /// `self · other`.
     fn mul(&self, other: &Self) -> Self;
+    /// `self − other` for two input coordinates: a leaf of the expression. The same as
+    /// [`Arith::sub`] except in the semi-static filter, which bounds errors relative to the
+    /// leaves.
+    #[inline(always)]
+    fn leaf_sub(&self, other: &Self) -> Self {
+        self.sub(other)
+    }
     /// `2 · self`.
     fn twice(&self) -> Self {
         self.add(self)
@@ -392,14 +399,21 @@ pub(super) fn ulp(v: f64) -> f64 {
 /// `x` rounded to the nearest `f64`, ties to even (infinite beyond the `f64` range).
 pub(super) fn rational_to_f64(x: &BigRational) -> f64 {
     let negative = x.numer().sign() == BigSign::Minus;
+    ratio_to_f64(negative, x.numer().magnitude(), x.denom().magnitude(), 0)
+}
+
+/// `±(n / d)·2^e` (`d > 0`, not necessarily in lowest terms) rounded to the nearest `f64`,
+/// ties to even (infinite beyond the `f64` range).
+pub(super) fn ratio_to_f64(negative: bool, n: &BigUint, d: &BigUint, e: i64) -> f64 {
     let signed = |m: f64| if negative { -m } else { m };
-    let n = x.numer().magnitude();
-    let d = x.denom().magnitude();
     if n.is_zero() {
         return 0.0;
     }
+    if d.is_zero() {
+        return signed(f64::INFINITY); // unreachable for the callers: d > 0
+    }
     // |x| lies in [2^(e0 − 1), 2^(e0 + 1)).
-    let e0 = n.bits() as i64 - d.bits() as i64;
+    let e0 = n.bits() as i64 - d.bits() as i64 + e;
     if e0 > 1025 {
         return signed(f64::INFINITY);
     }
@@ -408,10 +422,11 @@ pub(super) fn rational_to_f64(x: &BigRational) -> f64 {
     }
     // q = floor(|x| · 2^s) has 55 or 56 bits; `sticky` tells whether the floor dropped anything.
     let s = 55 - e0;
-    let (num, den) = if s >= 0 {
-        (n << (s as usize), d.clone())
+    let t = s + e;
+    let (num, den) = if t >= 0 {
+        (n << (t as usize), d.clone())
     } else {
-        (n.clone(), d << ((-s) as usize))
+        (n.clone(), d << ((-t) as usize))
     };
     let q = &num / &den;
     let r = &num - &q * &den;

@@ -10,30 +10,28 @@
 //!
 //! # Method
 //!
-//! Each predicate is one polynomial in the input coordinates, written once and evaluated in
-//! two number types. Divisions are avoided: with the triangle translated to its first vertex
-//! `t0`, `b = t1 − t0`, `c = t2 − t0`, the circumcenter is `O = t0 + (ux, uy) / d` with
-//! `d = 2 (bx·cy − by·cx)`, `ux = cy·|b|² − by·|c|²`, `uy = bx·|c|² − cx·|b|²`; a predicate on
-//! `O − p` is evaluated on `d·(O − p) = d·(t0 − p) + u` and its sign corrected by the sign of
-//! `d`, which is the triangle's orientation.
+//! Each predicate is one polynomial in the coordinate differences of its inputs (no
+//! divisions: a circumcenter `O = t0 + u/d` enters as `d·(O − p) = d·(t0 − p) + u`, its sign
+//! corrected by the sign of `d`), written once and evaluated in up to three stages:
 //!
-//! 1. The filter evaluates the polynomial in `f64` together with a rigorous bound `e` on the
-//!    distance between the computed value `v` and the exact one: standard-model rounding
-//!    `|fl(x∘y) − x∘y| ≤ 2^-53·|fl(x∘y)|` (plus `2^-1074` per product or quotient for
-//!    underflow), propagated through every operation, with the bound itself computed with
-//!    upward rounding. If `|v| > e` the exact value has the sign of `v`.
-//! 2. Otherwise the same polynomial is evaluated exactly: all `f64` inputs of the call are
-//!    written as integers times one common power of two (every `f64` is a dyadic rational),
-//!    so exact rational arithmetic reduces to [`BigInt`] arithmetic with a single
-//!    normalization for constructed [`BigRational`] results.
+//! 1. A semi-static filter: the polynomial in plain `f64`, and beside it the same polynomial
+//!    on absolute values (the permanent `Â`); the sign is certain when
+//!    `|v̂| > (K + 1)·2^-53·Â + c0`, `K` the length of the longest chain of operations and `c0`
+//!    an absolute term for underflow, with the leaves below a fixed bound. The bound is proven
+//!    in the `filter` module (private) and its constants are recomputed from the evaluated
+//!    code by a test. Inputs whose differences are huge or tiny are first scaled by a power of
+//!    two (exactly; no sign changes) and filtered again.
+//! 2. A running-error filter: the same polynomial with a rigorous error bound propagated
+//!    through every operation, with upward-rounded bounds and exact `TwoProduct` errors where
+//!    the operands are exact, after scaling the points by a power of two. Tighter than stage 1;
+//!    in particular it certifies exact zeros when every operation was exact in `f64`.
+//! 3. Exact evaluation: all `f64` inputs of the call are written as integers times one common
+//!    power of two (every `f64` is a dyadic rational), so exact rational arithmetic reduces to
+//!    [`BigInt`] arithmetic.
 //!
-//! Before filtering, the points of one predicate call are scaled together by a power of two
-//! (exactly, and only when their magnitudes are far from 1), which leaves every sign unchanged
-//! and keeps the degree-10 radius comparison from overflowing or underflowing anywhere in the
-//! input envelope `|x| ∈ {0} ∪ [2^-142, 2^201]`. Exact zeros (right angles, cocircular and
-//! symmetric configurations) are certified by the filter only when every operation was exact
-//! in `f64`; otherwise they take the exact path. [`fallback_counts`] reports how often that
-//! happens.
+//! Ordinary input is decided by stage 1 alone; exact zeros (right angles, cocircular and
+//! symmetric configurations) always reach stage 2 and, unless all its operations were exact,
+//! stage 3. [`fallback_counts`] reports how often that happens.
 //!
 //! # Degenerate input
 //!
@@ -54,17 +52,20 @@
 //! ```
 
 mod arith;
+mod filter;
+mod poly;
 
 use std::cmp::Ordering;
 use std::sync::atomic::{AtomicU64, Ordering as AtomicOrdering};
 
-use num_bigint::BigInt;
+use num_bigint::{BigInt, Sign as BigSign};
 use num_rational::BigRational;
 use num_traits::Zero;
 
 use self::arith::{
-    integer_sign, lift_exact, lift_filter, pow2, rational_to_f64, ulp, Arith, Bounded,
+    integer_sign, lift_exact, lift_filter, pow2, ratio_to_f64, rational_to_f64, Arith, Bounded,
 };
+use self::poly::{circ, dot_terms, orient_terms, radius_terms, Circ};
 use super::{orient2d, Orientation};
 
 /// The sign of an exactly evaluated expression.
@@ -126,16 +127,19 @@ impl ExactPoint {
 // ---------------------------------------------------------------------------------------
 // Fallback statistics.
 
-/// How often one predicate was called and how often its filter could not decide.
+/// How often one predicate was called and how often its fast filter could not decide.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct PredicateCounts {
     /// Number of calls.
     pub calls: u64,
-    /// Number of calls that needed exact rational arithmetic.
+    /// Number of calls the fast (semi-static) filter could not decide on the input as given:
+    /// they were rescaled, or went on to the running-error filter.
+    pub slow: u64,
+    /// Number of calls that needed exact rational arithmetic (a subset of `slow`).
     pub exact: u64,
 }
 
-/// Global call and exact-fallback counts of the filtered predicates, since the start of the
+/// Global call and fallback counts of the filtered predicates, since the start of the
 /// process or the last [`reset_fallback_counts`].
 ///
 /// The counters are relaxed atomics shared by all threads, so a snapshot taken while other
@@ -148,8 +152,8 @@ pub struct FallbackCounts {
     pub dot_sign_circumcenters: PredicateCounts,
     /// [`compare_circumradius`].
     pub compare_circumradius: PredicateCounts,
-    /// [`circumcenter_in_convex_hull`]; a call counts as exact if any of its orientation
-    /// tests needed exact arithmetic.
+    /// [`circumcenter_in_convex_hull`]; a call counts as slow (exact) if any of its
+    /// orientation tests was.
     pub circumcenter_in_convex_hull: PredicateCounts,
     /// [`circumcenter`]; a call counts as exact if the coordinates were rounded from the exact
     /// circumcenter.
@@ -161,6 +165,7 @@ impl FallbackCounts {
     pub fn since(&self, earlier: &FallbackCounts) -> FallbackCounts {
         let d = |a: PredicateCounts, b: PredicateCounts| PredicateCounts {
             calls: a.calls.saturating_sub(b.calls),
+            slow: a.slow.saturating_sub(b.slow),
             exact: a.exact.saturating_sub(b.exact),
         };
         FallbackCounts {
@@ -176,8 +181,20 @@ impl FallbackCounts {
     }
 }
 
+/// Which stage decided a call.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+enum Stage {
+    /// The semi-static filter, possibly after rescaling.
+    Filter,
+    /// The running-error filter.
+    Bounded,
+    /// Exact arithmetic.
+    Exact,
+}
+
 struct Counter {
     calls: AtomicU64,
+    slow: AtomicU64,
     exact: AtomicU64,
 }
 
@@ -185,27 +202,36 @@ impl Counter {
     const fn new() -> Counter {
         Counter {
             calls: AtomicU64::new(0),
+            slow: AtomicU64::new(0),
             exact: AtomicU64::new(0),
         }
     }
 
+    #[inline(always)]
     fn call(&self) {
         self.calls.fetch_add(1, AtomicOrdering::Relaxed);
     }
 
-    fn fallback(&self) {
-        self.exact.fetch_add(1, AtomicOrdering::Relaxed);
+    /// Records a call that left the fast filter, decided by `stage`.
+    #[cold]
+    fn slow(&self, stage: Stage) {
+        self.slow.fetch_add(1, AtomicOrdering::Relaxed);
+        if stage == Stage::Exact {
+            self.exact.fetch_add(1, AtomicOrdering::Relaxed);
+        }
     }
 
     fn read(&self) -> PredicateCounts {
         PredicateCounts {
             calls: self.calls.load(AtomicOrdering::Relaxed),
+            slow: self.slow.load(AtomicOrdering::Relaxed),
             exact: self.exact.load(AtomicOrdering::Relaxed),
         }
     }
 
     fn reset(&self) {
         self.calls.store(0, AtomicOrdering::Relaxed);
+        self.slow.store(0, AtomicOrdering::Relaxed);
         self.exact.store(0, AtomicOrdering::Relaxed);
     }
 }
@@ -216,7 +242,7 @@ static RADIUS: Counter = Counter::new();
 static HULL: Counter = Counter::new();
 static CIRCUMCENTER: Counter = Counter::new();
 
-/// A snapshot of the global call and exact-fallback counters.
+/// A snapshot of the global call and fallback counters.
 ///
 /// ```
 /// use wdm_crust::predicates::exact::{fallback_counts, orient2d_circumcenter};
@@ -243,126 +269,80 @@ pub fn reset_fallback_counts() {
 }
 
 // ---------------------------------------------------------------------------------------
-// The polynomials, generic over the number type.
+// Scaling by powers of two.
 
-/// The circumcenter of `t` in homogeneous form relative to `t[0]`: `O = t[0] + (ux, uy) / d`.
-struct Circ<T> {
-    /// `2 (bx·cy − by·cx)` with `b = t1 − t0`, `c = t2 − t0`: positive iff `t` is CCW.
-    d: T,
-    ux: T,
-    uy: T,
+/// `floor(log2 |x|)` for a normal `x`; `-1023` for zero and subnormals.
+fn exponent(x: f64) -> i32 {
+    ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023
 }
 
-/// A point in the number type `T`.
-type Pt<T> = [T; 2];
-
-fn diff<T: Arith>(p: &Pt<T>, q: &Pt<T>) -> Pt<T> {
-    [p[0].sub(&q[0]), p[1].sub(&q[1])]
-}
-
-fn norm2<T: Arith>(v: &Pt<T>) -> T {
-    v[0].mul(&v[0]).add(&v[1].mul(&v[1]))
-}
-
-fn cross<T: Arith>(v: &Pt<T>, w: &Pt<T>) -> T {
-    v[0].mul(&w[1]).sub(&v[1].mul(&w[0]))
-}
-
-fn circ<T: Arith>(t: &[Pt<T>; 3]) -> Circ<T> {
-    let b = diff(&t[1], &t[0]);
-    let c = diff(&t[2], &t[0]);
-    let b2 = norm2(&b);
-    let c2 = norm2(&c);
-    Circ {
-        d: cross(&b, &c).twice(),
-        ux: c[1].mul(&b2).sub(&b[1].mul(&c2)),
-        uy: b[0].mul(&c2).sub(&c[0].mul(&b2)),
+/// The points times `2^-k`, if every product is exact (no overflow, no bits lost below the
+/// normal range).
+fn scale<const N: usize>(points: [[f64; 2]; N], k: i32) -> Option<[[f64; 2]; N]> {
+    let (down, back) = (pow2(-k), pow2(k));
+    let mut scaled = points;
+    for c in scaled.iter_mut().flatten() {
+        let s = *c * down;
+        // Scaling back by 2^k is exact here, so a round trip detects any rounding.
+        if s * back != *c {
+            return None;
+        }
+        *c = s;
     }
+    Some(scaled)
 }
 
-/// `d·(O − p)` for the circumcenter `O = t0 + u/d` described by `c`.
-fn scaled_offset<T: Arith>(c: &Circ<T>, t0: &Pt<T>, p: &Pt<T>) -> Pt<T> {
-    let [dx, dy] = diff(t0, p);
-    [c.d.mul(&dx).add(&c.ux), c.d.mul(&dy).add(&c.uy)]
+/// For the semi-static filter: the points scaled by `2^-k` where `2^k` is the largest
+/// coordinate difference from the first point rounded down to a power of two (every leaf of
+/// the scaled polynomials is then below 4), and `k`; `None` if that difference is already
+/// in `[2^lo, 2^(hi − 1))` (rescaling would not help), zero or not finite, or if the
+/// scaling is not exact.
+fn rescale<const N: usize>(points: [[f64; 2]; N], (lo, hi): (i32, i32)) -> Option<([[f64; 2]; N], i32)> {
+    let p0 = points[0];
+    let spread = points.iter().fold(0.0f64, |m, p| {
+        m.max((p[0] - p0[0]).abs()).max((p[1] - p0[1]).abs())
+    });
+    if !(spread > 0.0 && spread < f64::INFINITY) {
+        return None;
+    }
+    let k = exponent(spread);
+    if (lo..hi - 1).contains(&k) {
+        return None;
+    }
+    scale(points, k).map(|s| (s, k))
 }
 
-/// `[d, (b − a) × d·(O − a)]` (degrees 2 and 4): the orientation of `(a, b, O)` is the sign
-/// of the product.
-fn orient_terms<T: Arith>(a: &Pt<T>, b: &Pt<T>, tri: &[Pt<T>; 3]) -> [T; 2] {
-    let c = circ(tri);
-    let n = scaled_offset(&c, &tri[0], a);
-    let v = cross(&diff(b, a), &n);
-    [c.d, v]
-}
-
-/// `[d_s, d_o, d_s·(O_s − p) · d_o·(O_o − p)]` (degrees 2, 2 and 6).
-fn dot_terms<T: Arith>(p: &Pt<T>, source: &[Pt<T>; 3], other: &[Pt<T>; 3]) -> [T; 3] {
-    let cs = circ(source);
-    let co = circ(other);
-    let ns = scaled_offset(&cs, &source[0], p);
-    let no = scaled_offset(&co, &other[0], p);
-    let v = ns[0].mul(&no[0]).add(&ns[1].mul(&no[1]));
-    [cs.d, co.d, v]
-}
-
-/// `(|t1 − t0|²·|t2 − t0|²·|t2 − t1|², d²)`: the squared circumradius is their quotient
-/// (`R = |a||b||c| / (4·area)` and `|d| = 4·area`).
-fn radius_parts<T: Arith>(t: &[Pt<T>; 3]) -> (T, T) {
-    let b = diff(&t[1], &t[0]);
-    let c = diff(&t[2], &t[0]);
-    let a = diff(&t[2], &t[1]);
-    let n = norm2(&b).mul(&norm2(&c)).mul(&norm2(&a));
-    let d = cross(&b, &c).twice();
-    (n, d.mul(&d))
-}
-
-/// `R1²·(d1²·d2²) − R2²·(d1²·d2²)` (degree 10), the sign of `R1 − R2`.
-fn radius_terms<T: Arith>(t1: &[Pt<T>; 3], t2: &[Pt<T>; 3]) -> [T; 1] {
-    let (n1, dd1) = radius_parts(t1);
-    let (n2, dd2) = radius_parts(t2);
-    [n1.mul(&dd2).sub(&n2.mul(&dd1))]
-}
-
-// ---------------------------------------------------------------------------------------
-// Filter driver.
-
-/// Magnitudes in this range are evaluated unscaled: even degree-10 terms of coordinate
-/// differences then stay far from overflow, and far from underflow unless the differences
-/// themselves are tiny.
+/// Magnitudes in this range are evaluated unscaled by the running-error filter: even
+/// degree-10 terms of coordinate differences then stay far from overflow, and far from
+/// underflow unless the differences themselves are tiny.
 const UNSCALED_MIN: f64 = 9.094947017729282e-13; // 2^-40
 const UNSCALED_MAX: f64 = 1099511627776.0; // 2^40
 
-/// Scales all points by one power of two `2^-k` such that the largest coordinate magnitude
-/// falls in `[1, 2)`, when their magnitudes are outside `[2^-40, 2^40]` and the scaling is
-/// exact for every coordinate. Returns the points and `k` (original = scaled · 2^k).
+/// For the running-error filter: scales all points by one power of two `2^-k` such that
+/// the largest coordinate magnitude falls in `[1, 2)`, when their magnitudes are outside
+/// `[2^-40, 2^40]` and the scaling is exact for every coordinate. Returns the points and `k`
+/// (original = scaled · 2^k).
 fn normalize<const N: usize>(points: [[f64; 2]; N]) -> ([[f64; 2]; N], i32) {
     let max = points.iter().flatten().fold(0.0f64, |m, c| m.max(c.abs()));
     if !max.is_finite() || max == 0.0 || (UNSCALED_MIN..=UNSCALED_MAX).contains(&max) {
         return (points, 0);
     }
-    // floor(log2 max); -1023 for subnormals, whose scaled value is then below 2.
-    let k = ((max.to_bits() >> 52) & 0x7ff) as i32 - 1023;
-    let (down, back) = (pow2(-k), pow2(k));
-    let mut scaled = points;
-    for p in scaled.iter_mut() {
-        for c in p.iter_mut() {
-            let s = *c * down;
-            // Scaling up by 2^k is exact here, so a round trip detects any rounding.
-            if s * back != *c {
-                return (points, 0);
-            }
-            *c = s;
-        }
+    let k = exponent(max);
+    match scale(points, k) {
+        Some(scaled) => (scaled, k),
+        None => (points, 0),
     }
-    (scaled, k)
 }
 
-/// The signs of `terms` evaluated by the filter on `filtered`, or else exactly on `exact`.
-/// Returns the signs and whether the exact path ran.
+// ---------------------------------------------------------------------------------------
+// The slower stages.
+
+/// The signs of `terms` evaluated by the running-error filter on `filtered`, or else exactly
+/// on `exact`, and the stage that decided.
 fn signs<const K: usize>(
     filtered: [Bounded; K],
     exact: impl FnOnce() -> [BigInt; K],
-) -> ([Sign; K], bool) {
+) -> ([Sign; K], Stage) {
     let mut out = [Sign::Zero; K];
     let mut decided = true;
     for (o, b) in out.iter_mut().zip(filtered.iter()) {
@@ -372,17 +352,18 @@ fn signs<const K: usize>(
         }
     }
     if decided {
-        return (out, false);
+        return (out, Stage::Bounded);
     }
     let values = exact();
     for (o, v) in out.iter_mut().zip(values.iter()) {
         *o = integer_sign(v);
     }
-    (out, true)
+    (out, Stage::Exact)
 }
 
 /// Puts `p` first if it is a vertex of `t` (a cyclic shift keeps the orientation): the
-/// translation `t0 − p` is then an exact zero and the filter sharper.
+/// translation `t0 − p` is then an exact zero and the filters sharper.
+#[inline(always)]
 fn rotate_to(t: [[f64; 2]; 3], p: [f64; 2]) -> [[f64; 2]; 3] {
     if t[1] == p {
         [t[1], t[2], t[0]]
@@ -401,23 +382,144 @@ fn orientation_of(s: Sign) -> Orientation {
     }
 }
 
-/// Orientation of `(a, b, O(tri))`, `None` if `tri` is collinear; and whether the exact path ran.
-fn orient_circumcenter_impl(
-    a: [f64; 2],
-    b: [f64; 2],
-    tri: [[f64; 2]; 3],
-) -> (Option<Orientation>, bool) {
+/// Orientation of `(a, b, O(tri))` after the fast filter failed, `None` if `tri` is
+/// collinear; and the stage that decided.
+#[cold]
+#[inline(never)]
+fn orient_slow(a: [f64; 2], b: [f64; 2], tri: [[f64; 2]; 3]) -> (Option<Orientation>, Stage) {
     let tri = rotate_to(tri, a);
     let points = [a, b, tri[0], tri[1], tri[2]];
+    if let Some(([a, b, t0, t1, t2], _)) = rescale(points, filter::LEAF_RANGE) {
+        if let Some(s) = filter::orient(a, b, &[t0, t1, t2]) {
+            return (Some(orientation_of(s)), Stage::Filter);
+        }
+    }
     let [fa, fb, f0, f1, f2] = lift_filter(normalize(points).0);
-    let ([d, v], exact) = signs(orient_terms(&fa, &fb, &[f0, f1, f2]), || {
+    let ([d, v], stage) = signs(orient_terms(&fa, &fb, &[f0, f1, f2]), || {
         let ([ea, eb, e0, e1, e2], _) = lift_exact(points);
         orient_terms(&ea, &eb, &[e0, e1, e2])
     });
     if d == Sign::Zero {
-        return (None, exact);
+        return (None, stage);
     }
-    (Some(orientation_of(v.times(d))), exact)
+    (Some(orientation_of(v.times(d))), stage)
+}
+
+/// [`dot_sign_circumcenters`] after the fast filter failed (`s`, `o` rotated to `p`).
+#[cold]
+#[inline(never)]
+fn dot_slow(p: [f64; 2], s: [[f64; 2]; 3], o: [[f64; 2]; 3]) -> (Sign, Stage) {
+    let points = [p, s[0], s[1], s[2], o[0], o[1], o[2]];
+    if let Some(([p, s0, s1, s2, o0, o1, o2], _)) = rescale(points, filter::LEAF_RANGE) {
+        if let Some(sign) = filter::dot(p, &[s0, s1, s2], &[o0, o1, o2]) {
+            return (sign, Stage::Filter);
+        }
+    }
+    let [fp, f0, f1, f2, g0, g1, g2] = lift_filter(normalize(points).0);
+    let ([ds, dother, v], stage) = signs(dot_terms(&fp, &[f0, f1, f2], &[g0, g1, g2]), || {
+        let ([ep, e0, e1, e2, h0, h1, h2], _) = lift_exact(points);
+        dot_terms(&ep, &[e0, e1, e2], &[h0, h1, h2])
+    });
+    (v.times(ds).times(dother), stage)
+}
+
+/// [`compare_circumradius`] after the fast filter failed: the sign of `R1 − R2`.
+#[cold]
+#[inline(never)]
+fn radius_slow(t1: [[f64; 2]; 3], t2: [[f64; 2]; 3]) -> (Sign, Stage) {
+    let points = [t1[0], t1[1], t1[2], t2[0], t2[1], t2[2]];
+    if let Some(([a0, a1, a2, b0, b1, b2], _)) = rescale(points, filter::LEAF_RANGE_RADIUS) {
+        if let Some(sign) = filter::radius(&[a0, a1, a2], &[b0, b1, b2]) {
+            return (sign, Stage::Filter);
+        }
+    }
+    let [f0, f1, f2, g0, g1, g2] = lift_filter(normalize(points).0);
+    let ([v], stage) = signs(radius_terms(&[f0, f1, f2], &[g0, g1, g2]), || {
+        let ([e0, e1, e2, h0, h1, h2], _) = lift_exact(points);
+        radius_terms(&[e0, e1, e2], &[h0, h1, h2])
+    });
+    (v, stage)
+}
+
+/// `2^-46`: every coordinate of [`circumcenter`] is within this much of the larger output
+/// coordinate magnitude of the exact circumcenter.
+const CIRCUMCENTER_RELATIVE: f64 = 1.4210854715202004e-14;
+
+/// `o · 2^k` if that is exact and its larger coordinate is normal, so that the relative
+/// error bound and its ulp reading carry over.
+fn scale_back(o: [f64; 2], k: i32) -> Option<[f64; 2]> {
+    let out = scale(o, -k)?;
+    (out[0].abs().max(out[1].abs())).is_normal().then_some(out)
+}
+
+/// The circumcenter `t0 + u/d` from running-error values of points scaled by `2^-k`,
+/// rescaled, if its proven error is within `2^-46` of its larger coordinate magnitude.
+fn fast_circumcenter(c: &Circ<Bounded>, t0: [f64; 2], k: i32) -> Option<[f64; 2]> {
+    let x = Bounded::from_f64(t0[0]).add(&c.ux.div(&c.d)?);
+    let y = Bounded::from_f64(t0[1]).add(&c.uy.div(&c.d)?);
+    let norm = x.v.abs().max(y.v.abs());
+    if norm == 0.0 {
+        return (x.e == 0.0 && y.e == 0.0).then_some([0.0, 0.0]);
+    }
+    if !(x.v.is_finite() && y.v.is_finite() && norm.is_normal()) {
+        return None;
+    }
+    let tolerance = CIRCUMCENTER_RELATIVE * norm; // exact: norm is normal
+    let accurate = x.e <= tolerance && y.e <= tolerance; // false for NaN
+    if !accurate {
+        return None;
+    }
+    scale_back([x.v, y.v], k)
+}
+
+/// The exact circumcenter of `a, b, c`, correctly rounded, or `None` iff they are collinear
+/// (or a coordinate is not finite). The same as `circumcenter_exact(a, b, c)?.to_f64()`,
+/// without reducing the fractions.
+fn circumcenter_rounded(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<[f64; 2]> {
+    if [a, b, c].iter().flatten().any(|x| !x.is_finite()) {
+        return None;
+    }
+    // In integer units of 2^shift: O = t0 + u/d.
+    let ([t0, t1, t2], shift) = lift_exact([a, b, c]);
+    let circ = circ(&[t0.clone(), t1, t2]);
+    if circ.d.is_zero() {
+        return None;
+    }
+    let d_negative = circ.d.sign() == BigSign::Minus;
+    let round = |t: &BigInt, u: &BigInt| {
+        let numer = t * &circ.d + u;
+        let negative = (numer.sign() == BigSign::Minus) != d_negative;
+        ratio_to_f64(
+            negative,
+            numer.magnitude(),
+            circ.d.magnitude(),
+            i64::from(shift),
+        )
+    };
+    Some([round(&t0[0], &circ.ux), round(&t0[1], &circ.uy)])
+}
+
+/// [`circumcenter`] after the fast filter failed.
+#[cold]
+#[inline(never)]
+fn circumcenter_slow(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> (Option<[f64; 2]>, Stage) {
+    if let Some((s, k)) = rescale([a, b, c], filter::LEAF_RANGE) {
+        if let Some(o) = filter::circumcenter(&s).and_then(|o| scale_back(o, k)) {
+            return (Some(o), Stage::Filter);
+        }
+    }
+    let ([sa, sb, sc], k) = normalize([a, b, c]);
+    let circ = circ(&lift_filter([sa, sb, sc]));
+    match circ.d.sign() {
+        Some(Sign::Zero) => return (None, Stage::Bounded),
+        Some(_) => {
+            if let Some(o) = fast_circumcenter(&circ, sa, k) {
+                return (Some(o), Stage::Bounded);
+            }
+        }
+        None => {}
+    }
+    (circumcenter_rounded(a, b, c), Stage::Exact)
 }
 
 // ---------------------------------------------------------------------------------------
@@ -457,70 +559,31 @@ pub fn circumcenter_exact(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Exact
     })
 }
 
-/// The fast path accepts a circumcenter whose proven error is, in each coordinate, at most
-/// this many units in the last place of its larger coordinate (a normwise relative error of
-/// at most 2^-44); otherwise the exact circumcenter is rounded. The running bound is
-/// pessimistic: on well-shaped triangles it is typically 2–20 ulps while the actual error is
-/// about one.
-const CIRCUMCENTER_ULPS: f64 = 256.0;
-
-/// The circumcenter `t0 + u/d` from filter values of points scaled by `2^-k`, rescaled, if
-/// its proven error is within [`CIRCUMCENTER_ULPS`].
-fn fast_circumcenter(c: &Circ<Bounded>, t0: [f64; 2], k: i32) -> Option<[f64; 2]> {
-    let x = Bounded::from_f64(t0[0]).add(&c.ux.div(&c.d)?);
-    let y = Bounded::from_f64(t0[1]).add(&c.uy.div(&c.d)?);
-    let norm = x.v.abs().max(y.v.abs());
-    if norm == 0.0 {
-        return (x.e == 0.0 && y.e == 0.0).then_some([0.0, 0.0]);
-    }
-    if !(x.v.is_finite() && y.v.is_finite() && norm.is_normal()) {
-        return None;
-    }
-    let tolerance = CIRCUMCENTER_ULPS * ulp(norm);
-    let accurate = x.e <= tolerance && y.e <= tolerance; // false for NaN
-    if !accurate {
-        return None;
-    }
-    // Undo the scaling; it is exact (and scales the ulp alike) unless a coordinate leaves the
-    // normal range, which the round trip detects.
-    let out = [x.v * pow2(k), y.v * pow2(k)];
-    let exact = out
-        .iter()
-        .zip([x.v, y.v])
-        .all(|(o, v)| o.is_finite() && *o * pow2(-k) == v);
-    (exact && (out[0].abs().max(out[1].abs())).is_normal()).then_some(out)
-}
-
 /// The circumcenter of `a, b, c` in `f64`, or `None` iff they are exactly collinear.
 ///
-/// Each coordinate is within 256 units in the last place of the larger coordinate magnitude
-/// of the exact circumcenter `O` (a normwise relative error of at most 2^-44), as proven by
-/// the running error bound of a formula translated to `a` with one division; where that
-/// bound is larger (nearly collinear triangles, a circumcenter much closer to the origin
-/// than to `a`) the exact circumcenter is computed and correctly rounded instead. A
-/// coordinate beyond the `f64` range (a nearly collinear triangle of huge points) is
-/// infinite.
+/// Each coordinate is within `2^-46·N` of the exact circumcenter `O`, where `N` is the larger
+/// magnitude of the two returned coordinates: fewer than 129 units in the last place of the
+/// larger coordinate magnitude of `O`. This is proven per call, by an a priori bound of the
+/// floating-point formula translated to `a` (one division) or, where that is too coarse, by
+/// a running error bound; where neither proves it (nearly collinear triangles, a circumcenter
+/// much closer to the origin than to `a`, results near the ends of the `f64` range) the exact
+/// circumcenter is computed and correctly rounded instead. A coordinate beyond the `f64`
+/// range (a nearly collinear triangle of huge points) is infinite.
 ///
 /// ```
 /// use wdm_crust::predicates::exact::circumcenter;
 /// assert_eq!(circumcenter([1.0, 1.0], [3.0, 1.0], [1.0, 5.0]), Some([2.0, 3.0]));
 /// assert_eq!(circumcenter([0.0, 0.0], [1.0, 2.0], [2.0, 4.0]), None);
 /// ```
+#[inline]
 pub fn circumcenter(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<[f64; 2]> {
     CIRCUMCENTER.call();
-    let ([sa, sb, sc], k) = normalize([a, b, c]);
-    let circ = circ(&lift_filter([sa, sb, sc]));
-    match circ.d.sign() {
-        Some(Sign::Zero) => return None,
-        Some(_) => {
-            if let Some(o) = fast_circumcenter(&circ, sa, k) {
-                return Some(o);
-            }
-        }
-        None => {}
+    if let Some(o) = filter::circumcenter(&[a, b, c]) {
+        return Some(o);
     }
-    CIRCUMCENTER.fallback();
-    circumcenter_exact(a, b, c).map(|o| o.to_f64())
+    let (o, stage) = circumcenter_slow(a, b, c);
+    CIRCUMCENTER.slow(stage);
+    o
 }
 
 /// Exact orientation of `(a, b, O)` where `O` is the circumcenter of `tri`: on which side of
@@ -538,10 +601,11 @@ pub fn circumcenter(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<[f64; 2]> {
 /// ```
 pub fn orient2d_circumcenter(a: [f64; 2], b: [f64; 2], tri: [[f64; 2]; 3]) -> Orientation {
     ORIENT.call();
-    let (o, exact) = orient_circumcenter_impl(a, b, tri);
-    if exact {
-        ORIENT.fallback();
+    if let Some(s) = filter::orient(a, b, &tri) {
+        return orientation_of(s);
     }
+    let (o, stage) = orient_slow(a, b, tri);
+    ORIENT.slow(stage);
     o.unwrap_or(Orientation::Collinear)
 }
 
@@ -559,19 +623,16 @@ pub fn orient2d_circumcenter(a: [f64; 2], b: [f64; 2], tri: [[f64; 2]; 3]) -> Or
 /// let other = [[0.0, 0.0], [-4.0, 0.0], [0.0, 4.0]]; // circumcenter (-2, 2)
 /// assert_eq!(dot_sign_circumcenters(p, source, other), Sign::Zero);
 /// ```
+#[inline]
 pub fn dot_sign_circumcenters(p: [f64; 2], source: [[f64; 2]; 3], other: [[f64; 2]; 3]) -> Sign {
     DOT.call();
     let (s, o) = (rotate_to(source, p), rotate_to(other, p));
-    let points = [p, s[0], s[1], s[2], o[0], o[1], o[2]];
-    let [fp, f0, f1, f2, g0, g1, g2] = lift_filter(normalize(points).0);
-    let ([ds, dother, v], exact) = signs(dot_terms(&fp, &[f0, f1, f2], &[g0, g1, g2]), || {
-        let ([ep, e0, e1, e2, h0, h1, h2], _) = lift_exact(points);
-        dot_terms(&ep, &[e0, e1, e2], &[h0, h1, h2])
-    });
-    if exact {
-        DOT.fallback();
+    if let Some(sign) = filter::dot(p, &s, &o) {
+        return sign;
     }
-    v.times(ds).times(dother)
+    let (sign, stage) = dot_slow(p, s, o);
+    DOT.slow(stage);
+    sign
 }
 
 /// Exact comparison of the circumradii of `t1` and `t2` (`Greater` iff `t1`'s is larger).
@@ -588,16 +649,15 @@ pub fn dot_sign_circumcenters(p: [f64; 2], source: [[f64; 2]; 3], other: [[f64; 
 /// ```
 pub fn compare_circumradius(t1: [[f64; 2]; 3], t2: [[f64; 2]; 3]) -> Ordering {
     RADIUS.call();
-    let points = [t1[0], t1[1], t1[2], t2[0], t2[1], t2[2]];
-    let [f0, f1, f2, g0, g1, g2] = lift_filter(normalize(points).0);
-    let ([v], exact) = signs(radius_terms(&[f0, f1, f2], &[g0, g1, g2]), || {
-        let ([e0, e1, e2, h0, h1, h2], _) = lift_exact(points);
-        radius_terms(&[e0, e1, e2], &[h0, h1, h2])
-    });
-    if exact {
-        RADIUS.fallback();
-    }
-    match v {
+    let sign = match filter::radius(&t1, &t2) {
+        Some(sign) => sign,
+        None => {
+            let (sign, stage) = radius_slow(t1, t2);
+            RADIUS.slow(stage);
+            sign
+        }
+    };
+    match sign {
         Sign::Negative => Ordering::Less,
         Sign::Zero => Ordering::Equal,
         Sign::Positive => Ordering::Greater,
@@ -622,14 +682,19 @@ pub fn compare_circumradius(t1: [[f64; 2]; 3], t2: [[f64; 2]; 3]) -> Ordering {
 /// ```
 pub fn circumcenter_in_convex_hull(hull: &[[f64; 2]], tri: [[f64; 2]; 3]) -> HullPosition {
     HULL.call();
-    let mut exact = false;
+    // The circumcenter's filter values are computed once for all orientation tests.
+    let fast = filter::CircFilter::new(&tri);
+    let mut slowest: Option<Stage> = None;
     let position = hull_position(hull, |a, b| {
-        let (o, ex) = orient_circumcenter_impl(a, b, tri);
-        exact |= ex;
+        if let Some(s) = fast.orient(a, b) {
+            return Some(orientation_of(s));
+        }
+        let (o, stage) = orient_slow(a, b, tri);
+        slowest = slowest.max(Some(stage));
         o
     });
-    if exact {
-        HULL.fallback();
+    if let Some(stage) = slowest {
+        HULL.slow(stage);
     }
     position
 }

@@ -385,8 +385,14 @@ fn orient_expr<T: Clone>(
     sub: impl Fn(T, T) -> T,
     mul: impl Fn(T, T) -> T,
 ) -> T {
-    let (bx, by) = (sub(b[0].clone(), a[0].clone()), sub(b[1].clone(), a[1].clone()));
-    let (cx, cy) = (sub(c[0].clone(), a[0].clone()), sub(c[1].clone(), a[1].clone()));
+    let (bx, by) = (
+        sub(b[0].clone(), a[0].clone()),
+        sub(b[1].clone(), a[1].clone()),
+    );
+    let (cx, cy) = (
+        sub(c[0].clone(), a[0].clone()),
+        sub(c[1].clone(), a[1].clone()),
+    );
     sub(mul(bx, cy), mul(by, cx))
 }
 
@@ -401,7 +407,12 @@ fn incircle_expr<T: Clone>(
     sub: impl Fn(T, T) -> T,
     mul: impl Fn(T, T) -> T,
 ) -> T {
-    let rel = |p: &[T; 2]| [sub(p[0].clone(), d[0].clone()), sub(p[1].clone(), d[1].clone())];
+    let rel = |p: &[T; 2]| {
+        [
+            sub(p[0].clone(), d[0].clone()),
+            sub(p[1].clone(), d[1].clone()),
+        ]
+    };
     let [ax, ay] = rel(a);
     let [bx, by] = rel(b);
     let [cx, cy] = rel(c);
@@ -442,7 +453,10 @@ mod tests {
         assert!(!s.is_point() && s.lo < 0.30000000000000004 && s.hi >= 0.30000000000000004);
         let q = Iv::point(1.0).div(Iv::point(3.0));
         assert!(q.lo < 1.0 / 3.0 && q.hi > 1.0 / 3.0);
-        assert_eq!(Iv::point(1.0).sub(Iv::point(1.0)).sign(), Some(Ordering::Equal));
+        assert_eq!(
+            Iv::point(1.0).sub(Iv::point(1.0)).sign(),
+            Some(Ordering::Equal)
+        );
         assert_eq!(Iv::point(1.0).div(Iv::point(0.0)).sign(), None);
     }
 

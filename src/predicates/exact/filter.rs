@@ -1,0 +1,413 @@
+//! Stage 1: a semi-static floating-point filter (plain `f64`, no branches inside the
+//! polynomial, ~20–100 flops per call).
+//!
+//! Each polynomial of [`super::poly`] is evaluated in `f64` on the type [`Sf`], which carries
+//! beside each value `v̂` the same expression evaluated on absolute values, `Â` (the
+//! "permanent": leaves `|δ̂|`, every `−` replaced by `+`). The sign of `v̂` is certified when
+//!
+//! ```text
+//! m̂ ≤ 2^H   and   |v̂| > fl(fl(c1·Â) + c0),     c1 = (K + 1)·u,
+//! ```
+//!
+//! where `m̂` is the largest computed leaf `|δ̂|`, `K` the depth of the expression and `c0` an
+//! absolute term covering underflow; `K`, the degree `D`, the underflow weight `W` and `c0`
+//! are listed per expression below and re-derived mechanically from the very code that is
+//! evaluated by a unit test (`filter_constants_match_the_expressions`).
+//!
+//! # The bound (a proof)
+//!
+//! Notation: `u = 2^-53` (unit roundoff), `λ = 2^-1022` (smallest normal), `η = u·λ = 2^-1075`,
+//! `γ_k = k·u / (1 − k·u)`. Round to nearest, no fused multiply-add (Rust never contracts).
+//!
+//! **Model.** For `f64` operands and a result that does not overflow:
+//! `fl(a ± b) = (a ± b)(1 + ε)`, `|ε| ≤ u` (also for subnormal results, which are exact since
+//! both operands are multiples of `2^-1074`); `fl(a·b) = a·b·(1 + ε) + η'`, `|ε| ≤ u`,
+//! `|η'| ≤ η` (`η' ≠ 0` only if `|a·b| < λ`).
+//!
+//! **Expressions.** The leaves are differences `δ = x − y` of two input coordinates, computed
+//! as `δ̂ = fl(x − y) = δ(1 + ε)`; inner nodes are `+`, `−`, `·` (doubling counts as `+`).
+//! For a node `n` define: the depth `k(n)` (leaf 1; `x ± y`: `1 + max(k(x), k(y))`;
+//! `x·y`: `1 + k(x) + k(y)`), the degree `d(n)` (leaf 1; `±`: max; `·`: sum), the permanent
+//! `Π(n)` (leaf `|δ|`; `±`: `Π(x) + Π(y)`; `·`: `Π(x)·Π(y)`), and the underflow part `Λ(n)`
+//! of the floored permanent `Π' = Π + Λ` (leaf 0; `±`: `Λ(x) + Λ(y)`;
+//! `·`: `Π'(x)·Π'(y) + λ − Π(x)·Π(y)`).
+//!
+//! **Lemma 1.** Without overflow, `|n̂ − n| ≤ γ_k(n) · Π'(n)`.
+//! *Proof.* Expand `n` into signed monomials of leaves and `Π'(n)` into the same monomials
+//! plus "λ-monomials". By induction, `n̂ = Σ s_j μ_j (1 + θ_j) + Σ ν_l φ_l` over the monomials
+//! `μ_j` of `n` and the λ-monomials `ν_l`, with `|θ_j|, |φ_l| ≤ γ_k(n)`: a leaf has `θ = ε`;
+//! `x ± y` multiplies every factor by one `(1 + ε)` and `(1 + γ_a)(1 + u) ≤ 1 + γ_(a+1)`;
+//! `x·y` multiplies the expansions and one `(1 + ε)`, with `(1 + θ)(1 + θ')(1 + ε)` within
+//! `γ_(a+b+1)` of 1 and `φ(1 + θ')(1 + ε)`, `φφ'(1 + ε)` within `γ_(a+b+1)` of 0 (Higham,
+//! *Accuracy and Stability*, Lemma 3.3), and its `η'` is a new λ-monomial `λ` with
+//! `φ = η'/λ`, `|φ| ≤ u`. Then `|n̂ − n| ≤ γ_k (Σ|μ_j| + Σ ν_l) = γ_k Π'(n)`. ∎
+//!
+//! **Lemma 2 (the underflow part).** Let every leaf satisfy `|δ| ≤ m*` with `m* ≥ 1`. Then
+//! `Λ(n) ≤ λ·W(n)·m*^(d(n) − 2)`, where `W` is computed like `Λ` with every leaf and `λ` set
+//! to 1: leaf 0; `±`: `W(x) + W(y)`; `·`: `W(x)·P(y) + P(x)·W(y) + W(x)·W(y) + 1` with
+//! `P(n) = Π(n)` at all leaves 1. *Proof:* induction; `Π(x) ≤ P(x)·m*^d(x)`, `λ ≤ 1 ≤ m*`,
+//! and `d ≥ 2` for every node above a product. ∎
+//!
+//! **The computed permanent.** The filter computes `Â` on the leaves `|δ̂|` (exact inputs,
+//! so its depth is `K − 1`). Lemma 1 on that tree, whose monomials are all positive, gives
+//! `Â ≥ (1 − γ_(K−1))·Π(|δ̂|) − γ_(K−1)·Λ(|δ̂|)`, and `|δ| ≤ |δ̂| / (1 − u)` gives
+//! `Π(|δ|) ≤ (1 − u)^-D·Π(|δ̂|)` for a polynomial of degree `D`.
+//!
+//! **Theorem.** Let `m̂ = max |δ̂| ≤ 2^H` (`H ≥ 0`), `K` the depth, `D` the degree and `W` the
+//! weight of the root. If `c1 = (K + 1)·u` and `c0 ≥ η·(1 + 3(K + 1)·W·2^(H(D − 2)))`, then
+//! `|v̂ − v| < fl(fl(c1·Â) + c0)`, so `|v̂| > fl(fl(c1·Â) + c0)` implies `sign v = sign v̂`.
+//! *Proof.* All leaves (exact and computed) are at most `m* = 2^H/(1 − u)`. By Lemmas 1–2
+//! and the bound on `Â`, `|v̂ − v| ≤ α·Â + 2γ_K·λ·W·m*^(D−2)/(1 − u)` with
+//! `α = γ_K (1 − u)^-D / (1 − γ_(K−1)) ≤ K·u·(1 + (2K + D + 1)·u)`. The threshold is
+//! computed as `fl(fl(c1·Â) + c0) ≥ (1 − u)²·c1·Â + (1 − u)(c0 − η)` (an underflowing
+//! product loses at most `η`; the sum of non-negatives only `(1 − u)`), and
+//! `(1 − u)²(K + 1)·u ≥ α` for `K < 2^20`, while `(1 − u)(c0 − η) ≥ 3(K + 1)·u·λ·W·2^(H(D−2))
+//! ·(1 − u) ≥ 2γ_K·λ·W·m*^(D−2)/(1 − u)` since `(1 − u)^-(D−2)` and `γ_K/(K·u)` are below
+//! `1.001`. ∎
+//!
+//! **Overflow.** With `m̂ ≤ 2^H` every computed node satisfies `|n̂| ≤ Â_n` (rounding is
+//! monotonic) and `Â_n ≤ (1 + γ_K)·(P(n) + W(n))·2^(H·d(n))`, below `2^1000` for the `H`
+//! chosen here; the test checks it. No overflow, so the model applies everywhere. A NaN or
+//! infinite input makes `m̂` or `v̂` NaN or infinite and every comparison false: undecided.
+//!
+//! **The leaves.** The error of the initial differences is the leaf factor `(1 + ε)` above:
+//! inputs far from the origin with small differences lose nothing but that one rounding,
+//! and the bound is relative to the differences, not to the coordinates.
+//!
+//! # The constants
+//!
+//! | expression                              | K  | D  | W    | H  | c1    | c0        |
+//! |-----------------------------------------|----|----|------|----|-------|-----------|
+//! | orientation `bx·cy − by·cx`             | 4  | 2  | 2    | any| 5u    | 2^-1070   |
+//! | `d = 2 (bx·cy − by·cx)`                 | 5  | 2  | 4    | any| 6u    | 2^-1068   |
+//! | orient: `(b − a) × (d·(t0 − a) + u)`    | 11 | 4  | 24   | 64 | 12u   | 2^-930    |
+//! | dot, `p` a vertex of both: `u_s · u_o`  | 16 | 6  | 170  | 64 | 17u   | 2^-800    |
+//! | dot, general: `n_s · n_o`               | 18 | 6  | 596  | 64 | 19u   | 2^-800    |
+//! | radius: `n1·x2² − n2·x1²`               | 25 | 10 | 2284 | 48 | 26u   | 2^-670    |
+//! | circumcenter numerator `ux`, `uy`       | 7  | 3  | 6    | 64 | 8u    | 2^-1000   |
+//!
+//! Inputs whose leaves exceed `2^H`, or are so small that the values sink towards `c0`, are
+//! rescaled by a power of two (exactly, which leaves every sign unchanged) and filtered again
+//! by the caller; only then do they go to the slower stages.
+
+use super::arith::{Arith, U};
+use super::poly::{
+    circ, dot_terms, dot_terms_at_vertex, orient_from_circ, orientation_term, radius_terms,
+    Circ,
+};
+use super::Sign;
+
+/// A value and its permanent, evaluated side by side in `f64`.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Sf {
+    /// The value `v̂`.
+    pub(super) v: f64,
+    /// The permanent `Â ≥ |v̂|`.
+    pub(super) a: f64,
+}
+
+impl Sf {
+    /// An input coordinate (used only through differences).
+    #[inline(always)]
+    pub(super) fn input(x: f64) -> Sf {
+        Sf { v: x, a: x.abs() }
+    }
+}
+
+impl Arith for Sf {
+    #[inline(always)]
+    fn add(&self, other: &Self) -> Self {
+        Sf {
+            v: self.v + other.v,
+            a: self.a + other.a,
+        }
+    }
+
+    #[inline(always)]
+    fn sub(&self, other: &Self) -> Self {
+        Sf {
+            v: self.v - other.v,
+            a: self.a + other.a,
+        }
+    }
+
+    #[inline(always)]
+    fn mul(&self, other: &Self) -> Self {
+        Sf {
+            v: self.v * other.v,
+            a: self.a * other.a,
+        }
+    }
+
+    #[inline(always)]
+    fn leaf_sub(&self, other: &Self) -> Self {
+        let v = self.v - other.v;
+        Sf { v, a: v.abs() }
+    }
+
+    fn sign(&self) -> Option<Sign> {
+        None // certified only against a term's constants, by `Term::sure`
+    }
+}
+
+/// The filter constants of one expression (see the table in the module docs).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Term {
+    /// Depth `K` of the expression.
+    pub(super) depth: u32,
+    /// Degree `D` in the leaves.
+    pub(super) degree: u32,
+    /// Underflow weight `W` (Lemma 2).
+    pub(super) weight: f64,
+    /// `log2` of the largest leaf magnitude the constants allow.
+    pub(super) h: i32,
+    /// `(K + 1)·u`.
+    pub(super) c1: f64,
+    /// The absolute term.
+    pub(super) c0: f64,
+}
+
+impl Term {
+    /// Whether the sign of `x.v` is certified (false for NaN and infinities).
+    #[inline(always)]
+    fn sure(&self, x: Sf) -> bool {
+        x.v.abs() > self.c1 * x.a + self.c0
+    }
+}
+
+pub(super) const ORIENTATION: Term = Term {
+    depth: 4,
+    degree: 2,
+    weight: 2.0,
+    h: 1000,
+    c1: 5.0 * U,
+    c0: 8e-323, // 2^-1070
+};
+pub(super) const D: Term = Term {
+    depth: 5,
+    degree: 2,
+    weight: 4.0,
+    h: 1000,
+    c1: 6.0 * U,
+    c0: 3.16e-322, // 2^-1068
+};
+pub(super) const ORIENT: Term = Term {
+    depth: 11,
+    degree: 4,
+    weight: 24.0,
+    h: 64,
+    c1: 12.0 * U,
+    c0: 1.101803207925311e-280, // 2^-930
+};
+pub(super) const DOT_AT_VERTEX: Term = Term {
+    depth: 16,
+    degree: 6,
+    weight: 170.0,
+    h: 64,
+    c1: 17.0 * U,
+    c0: 1.499696813895631e-241, // 2^-800
+};
+pub(super) const DOT: Term = Term {
+    depth: 18,
+    degree: 6,
+    weight: 596.0,
+    h: 64,
+    c1: 19.0 * U,
+    c0: 1.499696813895631e-241, // 2^-800
+};
+pub(super) const RADIUS: Term = Term {
+    depth: 25,
+    degree: 10,
+    weight: 2284.0,
+    h: 48,
+    c1: 26.0 * U,
+    c0: 2.041281525984782e-202, // 2^-670
+};
+pub(super) const CIRC_U: Term = Term {
+    depth: 7,
+    degree: 3,
+    weight: 6.0,
+    h: 64,
+    c1: 8.0 * U,
+    c0: 9.332636185032189e-302, // 2^-1000
+};
+
+/// `2^64`: the leaf limit of the degree-2 to degree-6 expressions.
+const LEAF_MAX: f64 = 18446744073709551616.0;
+/// `2^48`: the leaf limit of the radius comparison.
+const LEAF_MAX_RADIUS: f64 = 281474976710656.0;
+
+/// Leaf magnitudes outside `[2^-LEAF_MIN_EXP, 2^H]` make the caller rescale and retry.
+pub(super) const LEAF_RANGE: (i32, i32) = (-64, 64);
+/// The same for the radius comparison.
+pub(super) const LEAF_RANGE_RADIUS: (i32, i32) = (-48, 48);
+
+#[inline(always)]
+fn max(a: f64, b: f64) -> f64 {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
+
+/// The largest `|t_i − t_0|` coordinate (the leaves of [`circ`]). A NaN may be dropped; the
+/// callers' polynomials then are NaN themselves.
+#[inline(always)]
+fn spread3(t: &[[f64; 2]; 3]) -> f64 {
+    let b = max((t[1][0] - t[0][0]).abs(), (t[1][1] - t[0][1]).abs());
+    let c = max((t[2][0] - t[0][0]).abs(), (t[2][1] - t[0][1]).abs());
+    max(b, c)
+}
+
+#[inline(always)]
+fn spread2(p: [f64; 2], q: [f64; 2]) -> f64 {
+    max((p[0] - q[0]).abs(), (p[1] - q[1]).abs())
+}
+
+#[inline(always)]
+fn lift(t: &[[f64; 2]; 3]) -> [[Sf; 2]; 3] {
+    t.map(|p| p.map(Sf::input))
+}
+
+#[inline(always)]
+fn sign_of(negative: bool) -> Sign {
+    if negative {
+        Sign::Negative
+    } else {
+        Sign::Positive
+    }
+}
+
+/// The orientation sign of a triangle, if certified.
+#[inline]
+pub(super) fn orientation(t: &[[f64; 2]; 3]) -> Option<Sign> {
+    let x = orientation_term(&lift(t));
+    ORIENTATION.sure(x).then(|| sign_of(x.v < 0.0))
+}
+
+/// The circumcenter of one triangle in filter values, for repeated orientation tests.
+pub(super) struct CircFilter {
+    t0: [f64; 2],
+    c: Circ<Sf>,
+    /// Largest leaf of the triangle.
+    spread: f64,
+    /// Whether the sign of `d` is certified.
+    d_sure: bool,
+}
+
+impl CircFilter {
+    #[inline]
+    pub(super) fn new(t: &[[f64; 2]; 3]) -> CircFilter {
+        let c = circ(&lift(t));
+        CircFilter {
+            t0: t[0],
+            d_sure: D.sure(c.d),
+            c,
+            spread: spread3(t),
+        }
+    }
+
+    /// The sign of the orientation of `(a, b, O)`, if certified.
+    #[inline]
+    pub(super) fn orient(&self, a: [f64; 2], b: [f64; 2]) -> Option<Sign> {
+        let spread = max(max(self.spread, spread2(self.t0, a)), spread2(b, a));
+        let [t0, a2, b2] = [self.t0, a, b].map(|p| p.map(Sf::input));
+        let v = orient_from_circ(&self.c, &t0, &a2, &b2);
+        let sure = self.d_sure & (spread <= LEAF_MAX) & ORIENT.sure(v);
+        sure.then(|| sign_of((v.v < 0.0) ^ (self.c.d.v < 0.0)))
+    }
+}
+
+/// The sign of the orientation of `(a, b, O(tri))`, if certified.
+#[inline]
+pub(super) fn orient(a: [f64; 2], b: [f64; 2], tri: &[[f64; 2]; 3]) -> Option<Sign> {
+    CircFilter::new(tri).orient(a, b)
+}
+
+/// The sign of `(O_o − p)·(O_s − p)`, if certified; `s` and `o` have `p` first when it is a
+/// vertex of theirs.
+#[inline]
+pub(super) fn dot(p: [f64; 2], s: &[[f64; 2]; 3], o: &[[f64; 2]; 3]) -> Option<Sign> {
+    let at_vertex = s[0] == p && o[0] == p;
+    let spread = max(spread3(s), spread3(o));
+    let [xs, xo, v] = if at_vertex {
+        let [xs, xo, v] = dot_terms_at_vertex(&lift(s), &lift(o));
+        let sure = (spread <= LEAF_MAX)
+            & DOT_AT_VERTEX.sure(v)
+            & ORIENTATION.sure(xs)
+            & ORIENTATION.sure(xo);
+        if !sure {
+            return None;
+        }
+        [xs, xo, v]
+    } else {
+        let spread = max(max(spread, spread2(s[0], p)), spread2(o[0], p));
+        let [ds, d_o, v] = dot_terms(&[Sf::input(p[0]), Sf::input(p[1])], &lift(s), &lift(o));
+        let sure = (spread <= LEAF_MAX) & DOT.sure(v) & D.sure(ds) & D.sure(d_o);
+        if !sure {
+            return None;
+        }
+        [ds, d_o, v]
+    };
+    Some(sign_of((v.v < 0.0) ^ (xs.v < 0.0) ^ (xo.v < 0.0)))
+}
+
+/// The sign of `R1 − R2`, if certified.
+#[inline]
+pub(super) fn radius(t1: &[[f64; 2]; 3], t2: &[[f64; 2]; 3]) -> Option<Sign> {
+    let third = |t: &[[f64; 2]; 3]| spread2(t[2], t[1]);
+    let spread = max(max(spread3(t1), spread3(t2)), max(third(t1), third(t2)));
+    let [v] = radius_terms(&lift(t1), &lift(t2));
+    let sure = (spread <= LEAF_MAX_RADIUS) & RADIUS.sure(v);
+    sure.then(|| sign_of(v.v < 0.0))
+}
+
+/// `2^-20`: the largest relative uncertainty of the denominator `d` accepted.
+const RHO_MAX: f64 = 9.5367431640625e-7;
+/// `2^-900`: below this circumcenter magnitude the absolute underflow terms are not
+/// negligible; such circumcenters take the slower stages.
+const NORM_MIN: f64 = 1.1830521861667747e-271;
+/// `2^-46·(1 − 2^-12)`: the accepted bound relative to the larger output coordinate.
+const TAU: f64 = 1.420738526825005e-14;
+
+/// The circumcenter of `t` in `f64` if its proven error is at most `2^-46` times its larger
+/// coordinate magnitude, in each coordinate.
+///
+/// With `d̂`, `û` from [`circ`] and their error bounds `E_d = fl(6u·D̂ + c0_d)`,
+/// `E_u = fl(8u·Û + c0_u)` (the theorem above, `u` rows of the table), the output is
+/// `ô = fl(t0 + fl(û·r̂))` with `r̂ = fl(1/d̂)`. Writing `q = u/d`, `s = |r̂|`, `ρ = E_d/|d̂|`:
+/// `|û/d̂ − q| = |−(û/d̂)(d̂ − d) + (û − u)|/|d| ≤ (|û/d̂|·ρ + E_u/|d̂|)/(1 − ρ)` (as
+/// `d̂ − d` has the bound `E_d` and `|d| ≥ |d̂|(1 − ρ)`); the two roundings of `fl(û·r̂)` add
+/// `γ_2·|û/d̂| + η`, and the final sum `u·|ô|/(1 − u)`. Since `1/|d̂| ≤ s/(1 − u)`,
+/// `ρ ≤ (fl(E_d·s) + η)/(1 − u)²` and `|û/d̂| ≤ (|q̂| + η)/(1 − γ_2)`, requiring
+/// `ρ̂ = fl(E_d·s) ≤ 2^-20` gives, per coordinate,
+/// `|ô − O| ≤ (1 + 2^-14)·B + 4η` with `B = u·N + (3u + ρ̂)·Q + E·s` computed in `f64`
+/// (`N`, `Q`, `E`: the larger of the two `|ô|`, `|q̂|`, `E_u`; the three roundings of `B` and
+/// the `η` terms of `ρ` and `Q` are inside the `2^-14`, an underflow of `B`'s products in the
+/// `4η`). Accepting `B ≤ fl(TAU·N)` with `N ≥ 2^-900` finite then gives
+/// `|ô − O| ≤ 2^-46·N·(1 − 2^-13) + 4η ≤ 2^-46·N`.
+#[inline]
+pub(super) fn circumcenter(t: &[[f64; 2]; 3]) -> Option<[f64; 2]> {
+    let spread = spread3(t);
+    let c = circ(&lift(t));
+    let ed = D.c1 * c.d.a + D.c0;
+    let eux = CIRC_U.c1 * c.ux.a + CIRC_U.c0;
+    let euy = CIRC_U.c1 * c.uy.a + CIRC_U.c0;
+    let r = 1.0 / c.d.v;
+    let (qx, qy) = (c.ux.v * r, c.uy.v * r);
+    let (ox, oy) = (t[0][0] + qx, t[0][1] + qy);
+    let s = r.abs();
+    let n = max(ox.abs(), oy.abs());
+    let q = max(qx.abs(), qy.abs());
+    let e = max(eux, euy);
+    let rho = ed * s;
+    let b = U * n + q * (3.0 * U + rho) + e * s;
+    let sure = (spread <= LEAF_MAX)
+        & ox.is_finite()
+        & oy.is_finite()
+        & (rho <= RHO_MAX)
+        & (n >= NORM_MIN)
+        & (b <= TAU * n);
+    sure.then_some([ox, oy])
+}

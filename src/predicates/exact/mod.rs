@@ -448,7 +448,7 @@ const CIRCUMCENTER_RELATIVE: f64 = 1.4210854715202004e-14;
 /// `o · 2^k` if that is exact and its larger coordinate is normal, so that the relative
 /// error bound and its ulp reading carry over.
 fn scale_back(o: [f64; 2], k: i32) -> Option<[f64; 2]> {
-    let out = scale(o, -k)?;
+    let [out] = scale([o], -k)?;
     (out[0].abs().max(out[1].abs())).is_normal().then_some(out)
 }
 

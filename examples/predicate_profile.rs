@@ -217,11 +217,14 @@ fn main() {
     );
     let c = fallback_counts();
     let rate = |c: wdm_crust::predicates::exact::PredicateCounts| {
+        let pct = |x: u64| 100.0 * x as f64 / c.calls.max(1) as f64;
         format!(
-            "{} / {} = {:.4} %",
+            "exact {} / {} = {:.4} %, slow {} = {:.4} %",
             c.exact,
             c.calls,
-            100.0 * c.exact as f64 / c.calls.max(1) as f64
+            pct(c.exact),
+            c.slow,
+            pct(c.slow)
         )
     };
     println!("fallbacks in the loops ({reps} runs):");

@@ -16,11 +16,15 @@ use wdm_crust_fuzz::scene::{permutation, Scene};
 
 const MAX_POINTS: usize = 600;
 
-/// Bitwise-equal Voronoi vertex positions under permutation. Off while the known issue
-/// `merged_face_position_depends_on_input_order` (tests/fuzz_regressions.rs) is open: the
-/// boundary cycle of a merged face starts at its smallest point index, so its position is
-/// computed from a different triangle when the input is permuted.
-const STRICT_POSITIONS: bool = false;
+/// Known issue, open: the boundary cycle of a merged (cocircular) Voronoi face starts at its
+/// smallest point index (`order_face_cycle` in src/voronoi.rs), so permuting the input
+/// rotates it. Then the vertex position is computed from another triangle (ulps apart), and
+/// the peeled medial axis, decided by a breadth-first parity walk in that order, can differ
+/// (tests `merged_face_position_depends_on_input_order` and
+/// `peeled_medial_axis_depends_on_input_order` in tests/fuzz_regressions.rs). While it is
+/// open, positions are compared within the accuracy of `circumcenter` and the peeled medial
+/// axis is not compared; set to `false` once fixed.
+const KNOWN_MERGED_FACE_ORDER_ISSUE: bool = true;
 
 fuzz_target!(|scene: Scene| {
     let points = scene.points(MAX_POINTS);
@@ -56,9 +60,11 @@ fuzz_target!(|scene: Scene| {
         (single_options, &single, "single pass"),
         (Options::default(), &full, "peeling"),
     ] {
+        let strict = !KNOWN_MERGED_FACE_ORDER_ISSUE;
+        let axis = strict || !options.peeling;
         match reconstruct_with(&shuffled, &options) {
             Ok(other) => {
-                if let Err(e) = check_permuted(&points, &perm, rec, &other, STRICT_POSITIONS) {
+                if let Err(e) = check_permuted(&points, &perm, rec, &other, strict, axis) {
                     fail(
                         &format!("reconstruct ({what}) under permutation"),
                         &points,

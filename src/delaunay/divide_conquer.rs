@@ -16,10 +16,11 @@
 
 use std::cmp::Ordering;
 
-use super::mesh::{Mesh, GHOST};
+use super::filter::{ccw, inside};
+use super::mesh::{prev, Mesh, GHOST};
 use super::triangulation::{Triangulation, NO_TWIN};
 use super::zorder::{lexicographic, order, Grid};
-use crate::predicates::{incircle, orient2d, CirclePosition, Orientation};
+use crate::predicates::{orient2d, Orientation};
 
 /// Triangulates validated points (finite, inside the exact envelope).
 pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
@@ -127,18 +128,6 @@ impl DivideConquer<'_> {
     #[inline]
     fn p(&self, v: u32) -> [f64; 2] {
         self.pts[v as usize]
-    }
-
-    /// Is `c` strictly left of `a → b`?
-    #[inline]
-    fn ccw(&self, a: u32, b: u32, c: u32) -> bool {
-        orient2d(self.p(a), self.p(b), self.p(c)) == Orientation::CounterClockwise
-    }
-
-    /// Is `d` strictly inside the circle through the counterclockwise `a, b, c`?
-    #[inline]
-    fn inside(&self, a: u32, b: u32, c: u32, d: u32) -> bool {
-        incircle(self.p(a), self.p(b), self.p(c), self.p(d)) == CirclePosition::Inside
     }
 
     #[inline]
@@ -281,9 +270,10 @@ impl DivideConquer<'_> {
         loop {
             let [l, l_cw, _] = self.mesh.tri[gl as usize];
             let [r_ccw, r, _] = self.mesh.tri[gr as usize];
-            if self.ccw(l, l_cw, r) {
+            let (pl, pr) = (self.p(l), self.p(r));
+            if ccw(pl, self.p(l_cw), pr) {
                 gl = self.mesh.ring_prev(gl);
-            } else if self.ccw(l, r_ccw, r) {
+            } else if ccw(pl, self.p(r_ccw), pr) {
                 gr = self.mesh.ring_next(gr);
             } else {
                 break;
@@ -296,48 +286,63 @@ impl DivideConquer<'_> {
         let mut base = self.mesh.open(opened, gl, gr);
         let mut l = self.mesh.tri[gl as usize][0];
         let mut r = self.mesh.tri[gr as usize][1];
+        let (mut pl, mut pr) = (self.p(l), self.p(r));
         loop {
+            // Left candidate: the edge l–lc, deleted (flipped into the ghost ring) while the
+            // next neighbour x of l lies inside the circle through l, r, lc.
             let mut lc = self.mesh.tri[a as usize][0];
-            let mut l_valid = self.ccw(lc, l, r);
+            let mut plc = self.p(lc);
+            let mut l_valid = ccw(plc, pl, pr);
             if l_valid {
                 let mut flipped = false;
                 loop {
-                    let x = self.mesh.org(super::mesh::prev(self.mesh.twin[3 * a as usize]));
-                    if x == GHOST || !self.inside(l, r, lc, x) {
+                    let x = self.mesh.org(prev(self.mesh.twin[3 * a as usize]));
+                    if x == GHOST {
+                        break;
+                    }
+                    let px = self.p(x);
+                    if !inside(pl, pr, plc, px) {
                         break;
                     }
                     lc = self.mesh.flip_left(a);
+                    plc = px;
                     flipped = true;
                 }
                 if flipped {
-                    l_valid = self.ccw(lc, l, r);
+                    l_valid = ccw(plc, pl, pr);
                 }
             }
             let mut rc = self.mesh.tri[b as usize][1];
-            let mut r_valid = self.ccw(rc, l, r);
+            let mut prc = self.p(rc);
+            let mut r_valid = ccw(prc, pl, pr);
             if r_valid {
                 let mut flipped = false;
                 loop {
-                    let z = self.mesh.org(super::mesh::prev(self.mesh.twin[3 * b as usize]));
-                    if z == GHOST || !self.inside(l, r, rc, z) {
+                    let z = self.mesh.org(prev(self.mesh.twin[3 * b as usize]));
+                    if z == GHOST {
+                        break;
+                    }
+                    let pz = self.p(z);
+                    if !inside(pl, pr, prc, pz) {
                         break;
                     }
                     rc = self.mesh.flip_right(b);
+                    prc = pz;
                     flipped = true;
                 }
                 if flipped {
-                    r_valid = self.ccw(rc, l, r);
+                    r_valid = ccw(prc, pl, pr);
                 }
             }
             if !l_valid && !r_valid {
                 break;
             }
-            if !l_valid || (r_valid && self.inside(lc, l, r, rc)) {
+            if !l_valid || (r_valid && inside(plc, pl, pr, prc)) {
                 (base, b) = self.mesh.take_right(b, base, l);
-                r = rc;
+                (r, pr) = (rc, prc);
             } else {
                 (base, a) = self.mesh.take_left(a, base, r);
-                l = lc;
+                (l, pl) = (lc, plc);
             }
         }
         let closed = opened + 1;

@@ -6,6 +6,7 @@
 //! place; that is all later stages see.
 
 mod divide_conquer;
+mod filter;
 mod mesh;
 mod triangulation;
 mod validate;

@@ -111,7 +111,10 @@ pub fn order(points: &[[f64; 2]], grid: &Grid) -> Ordered {
     let mut start = 0;
     while start < items.len() {
         let key = items[start].0;
-        let end = start + items[start..].partition_point(|item| item.0 == key);
+        let mut end = start + 1;
+        while end < items.len() && items[end].0 == key {
+            end += 1;
+        }
         if end - start > 1 {
             items[start..end].sort_unstable_by(|a, b| {
                 lexicographic(points[a.1 as usize], points[b.1 as usize]).then(a.1.cmp(&b.1))

@@ -261,7 +261,8 @@ mod tests {
         let mut perm = [0usize, 1, 2, 3, 4];
         for _ in 0..40 {
             perm.rotate_left(1);
-            perm.swap(1, (perm[0] + 2) % 5);
+            let j = (perm[0] + 2) % 5;
+            perm.swap(1, j);
             let pts: Vec<[f64; 2]> = perm.iter().map(|&i| base[i]).collect();
             assert_eq!(expected_pairs(&pts), reference);
         }

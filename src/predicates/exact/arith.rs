@@ -391,6 +391,7 @@ pub(super) fn pow2(k: i32) -> f64 {
 }
 
 /// The unit in the last place of a finite `v`: the gap from `|v|` to the next larger `f64`.
+#[cfg(test)]
 pub(super) fn ulp(v: f64) -> f64 {
     let a = v.abs();
     f64::from_bits(a.to_bits() + 1) - a

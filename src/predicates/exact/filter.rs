@@ -78,8 +78,8 @@
 //!
 //! | expression                              | K  | D  | W    | H  | c1    | c0        |
 //! |-----------------------------------------|----|----|------|----|-------|-----------|
-//! | orientation `bx·cy − by·cx`             | 4  | 2  | 2    | any| 5u    | 2^-1070   |
-//! | `d = 2 (bx·cy − by·cx)`                 | 5  | 2  | 4    | any| 6u    | 2^-1068   |
+//! | orientation `bx·cy − by·cx`             | 4  | 2  | 2    | 64 | 5u    | 2^-1070   |
+//! | `d = 2 (bx·cy − by·cx)`                 | 5  | 2  | 4    | 64 | 6u    | 2^-1068   |
 //! | orient: `(b − a) × (d·(t0 − a) + u)`    | 11 | 4  | 24   | 64 | 12u   | 2^-930    |
 //! | dot, `p` a vertex of both: `u_s · u_o`  | 16 | 6  | 170  | 64 | 17u   | 2^-800    |
 //! | dot, general: `n_s · n_o`               | 18 | 6  | 596  | 64 | 19u   | 2^-800    |
@@ -91,10 +91,7 @@
 //! by the caller; only then do they go to the slower stages.
 
 use super::arith::{Arith, U};
-use super::poly::{
-    circ, dot_terms, dot_terms_at_vertex, orient_from_circ, orientation_term, radius_terms,
-    Circ,
-};
+use super::poly::{circ, dot_terms, dot_terms_at_vertex, orient_from_circ, radius_terms, Circ};
 use super::Sign;
 
 /// A value and its permanent, evaluated side by side in `f64`.
@@ -150,8 +147,10 @@ impl Arith for Sf {
     }
 }
 
-/// The filter constants of one expression (see the table in the module docs).
+/// The filter constants of one expression (see the table in the module docs); the fields
+/// besides `c1` and `c0` document them and are checked by the tests.
 #[derive(Debug, Clone, Copy)]
+#[cfg_attr(not(test), allow(dead_code))]
 pub(super) struct Term {
     /// Depth `K` of the expression.
     pub(super) depth: u32,
@@ -179,7 +178,7 @@ pub(super) const ORIENTATION: Term = Term {
     depth: 4,
     degree: 2,
     weight: 2.0,
-    h: 1000,
+    h: 64,
     c1: 5.0 * U,
     c0: 8e-323, // 2^-1070
 };
@@ -187,7 +186,7 @@ pub(super) const D: Term = Term {
     depth: 5,
     degree: 2,
     weight: 4.0,
-    h: 1000,
+    h: 64,
     c1: 6.0 * U,
     c0: 3.16e-322, // 2^-1068
 };
@@ -233,9 +232,9 @@ pub(super) const CIRC_U: Term = Term {
 };
 
 /// `2^64`: the leaf limit of the degree-2 to degree-6 expressions.
-const LEAF_MAX: f64 = 18446744073709551616.0;
+pub(super) const LEAF_MAX: f64 = 18446744073709551616.0;
 /// `2^48`: the leaf limit of the radius comparison.
-const LEAF_MAX_RADIUS: f64 = 281474976710656.0;
+pub(super) const LEAF_MAX_RADIUS: f64 = 281474976710656.0;
 
 /// Leaf magnitudes outside `[2^-LEAF_MIN_EXP, 2^H]` make the caller rescale and retry.
 pub(super) const LEAF_RANGE: (i32, i32) = (-64, 64);
@@ -277,13 +276,6 @@ fn sign_of(negative: bool) -> Sign {
     } else {
         Sign::Positive
     }
-}
-
-/// The orientation sign of a triangle, if certified.
-#[inline]
-pub(super) fn orientation(t: &[[f64; 2]; 3]) -> Option<Sign> {
-    let x = orientation_term(&lift(t));
-    ORIENTATION.sure(x).then(|| sign_of(x.v < 0.0))
 }
 
 /// The circumcenter of one triangle in filter values, for repeated orientation tests.
@@ -368,25 +360,30 @@ const RHO_MAX: f64 = 9.5367431640625e-7;
 /// `2^-900`: below this circumcenter magnitude the absolute underflow terms are not
 /// negligible; such circumcenters take the slower stages.
 const NORM_MIN: f64 = 1.1830521861667747e-271;
-/// `2^-46·(1 − 2^-12)`: the accepted bound relative to the larger output coordinate.
-const TAU: f64 = 1.420738526825005e-14;
+/// `2^-44·(1 − 2^-12)`: the accepted bound relative to the larger output coordinate
+/// rounded down to a power of two (256 ulps of it, with a margin).
+const TAU: f64 = 5.68295410730002e-14;
+/// The exponent bits of an `f64`.
+const EXPONENT_MASK: u64 = 0x7ff0_0000_0000_0000;
 
-/// The circumcenter of `t` in `f64` if its proven error is at most `2^-46` times its larger
-/// coordinate magnitude, in each coordinate.
+/// The circumcenter of `t` in `f64` if its proven error is below 256 units in the last place
+/// of its larger coordinate magnitude `N`, in each coordinate.
 ///
 /// With `d̂`, `û` from [`circ`] and their error bounds `E_d = fl(6u·D̂ + c0_d)`,
-/// `E_u = fl(8u·Û + c0_u)` (the theorem above, `u` rows of the table), the output is
-/// `ô = fl(t0 + fl(û·r̂))` with `r̂ = fl(1/d̂)`. Writing `q = u/d`, `s = |r̂|`, `ρ = E_d/|d̂|`:
-/// `|û/d̂ − q| = |−(û/d̂)(d̂ − d) + (û − u)|/|d| ≤ (|û/d̂|·ρ + E_u/|d̂|)/(1 − ρ)` (as
-/// `d̂ − d` has the bound `E_d` and `|d| ≥ |d̂|(1 − ρ)`); the two roundings of `fl(û·r̂)` add
-/// `γ_2·|û/d̂| + η`, and the final sum `u·|ô|/(1 − u)`. Since `1/|d̂| ≤ s/(1 − u)`,
-/// `ρ ≤ (fl(E_d·s) + η)/(1 − u)²` and `|û/d̂| ≤ (|q̂| + η)/(1 − γ_2)`, requiring
+/// `E_u = fl(8u·Û + c0_u)` (the theorem above, `d` and `u` rows of the table), the output
+/// is `ô = fl(t0 + fl(û/d̂))`. Write `q = u/d`, `s = fl(1/|d̂|)`, `ρ = E_d/|d̂|`. Then
+/// `|û/d̂ − q| = |−(û/d̂)(d̂ − d) + (û − u)|/|d| ≤ (|û/d̂|·ρ + E_u/|d̂|)/(1 − ρ)`, as `d̂ − d`
+/// and `û − u` are within `E_d`, `E_u` and `|d| ≥ |d̂|(1 − ρ)`; the rounding of `fl(û/d̂)`
+/// adds `u·|û/d̂| + η`, the final sum `u·|ô|/(1 − u)`. With `1/|d̂| ≤ s/(1 − u)`,
+/// `ρ ≤ (fl(E_d·s) + η)/(1 − u)²` and `|û/d̂| ≤ (|q̂| + η)/(1 − u)`, requiring
 /// `ρ̂ = fl(E_d·s) ≤ 2^-20` gives, per coordinate,
 /// `|ô − O| ≤ (1 + 2^-14)·B + 4η` with `B = u·N + (3u + ρ̂)·Q + E·s` computed in `f64`
-/// (`N`, `Q`, `E`: the larger of the two `|ô|`, `|q̂|`, `E_u`; the three roundings of `B` and
-/// the `η` terms of `ρ` and `Q` are inside the `2^-14`, an underflow of `B`'s products in the
-/// `4η`). Accepting `B ≤ fl(TAU·N)` with `N ≥ 2^-900` finite then gives
-/// `|ô − O| ≤ 2^-46·N·(1 − 2^-13) + 4η ≤ 2^-46·N`.
+/// (`Q`, `E`: the larger of the two `|q̂|` and `E_u`): the three roundings of `B`, the
+/// `(1 − u)` and `(1 − ρ)` factors and the `η` terms multiplying `Q` fit in the `2^-14` (an
+/// `η·Q` is below `2^-1000·u·Q`), the other `η` terms and an underflow of `B`'s products in
+/// the `4η`. Accepting `B ≤ fl(TAU·P)`, where `P ≤ N < 2P` is a power of two and
+/// `256·ulp(N) = 2^-44·P`, with `N ≥ 2^-900` finite, then gives
+/// `|ô − O| ≤ 2^-44·P·(1 − 2^-13) + 4η < 256·ulp(N)`.
 #[inline]
 pub(super) fn circumcenter(t: &[[f64; 2]; 3]) -> Option<[f64; 2]> {
     let spread = spread3(t);
@@ -394,20 +391,22 @@ pub(super) fn circumcenter(t: &[[f64; 2]; 3]) -> Option<[f64; 2]> {
     let ed = D.c1 * c.d.a + D.c0;
     let eux = CIRC_U.c1 * c.ux.a + CIRC_U.c0;
     let euy = CIRC_U.c1 * c.uy.a + CIRC_U.c0;
-    let r = 1.0 / c.d.v;
-    let (qx, qy) = (c.ux.v * r, c.uy.v * r);
+    // Quotients rather than products with `1/d̂`: exact whenever the quotient is
+    // representable (right triangles give the exact midpoint of the hypotenuse).
+    let (qx, qy) = (c.ux.v / c.d.v, c.uy.v / c.d.v);
     let (ox, oy) = (t[0][0] + qx, t[0][1] + qy);
-    let s = r.abs();
+    let s = 1.0 / c.d.v.abs();
     let n = max(ox.abs(), oy.abs());
     let q = max(qx.abs(), qy.abs());
     let e = max(eux, euy);
     let rho = ed * s;
     let b = U * n + q * (3.0 * U + rho) + e * s;
+    let p = f64::from_bits(n.to_bits() & EXPONENT_MASK);
     let sure = (spread <= LEAF_MAX)
         & ox.is_finite()
         & oy.is_finite()
         & (rho <= RHO_MAX)
         & (n >= NORM_MIN)
-        & (b <= TAU * n);
+        & (b <= TAU * p);
     sure.then_some([ox, oy])
 }

@@ -441,9 +441,14 @@ fn radius_slow(t1: [[f64; 2]; 3], t2: [[f64; 2]; 3]) -> (Sign, Stage) {
     (v, stage)
 }
 
-/// `2^-46`: every coordinate of [`circumcenter`] is within this much of the larger output
-/// coordinate magnitude of the exact circumcenter.
-const CIRCUMCENTER_RELATIVE: f64 = 1.4210854715202004e-14;
+/// Every coordinate of [`circumcenter`] is within this many units in the last place of the
+/// larger output coordinate magnitude of the exact circumcenter.
+const CIRCUMCENTER_ULPS: f64 = 256.0;
+
+/// The unit in the last place of a positive normal `x`.
+fn ulp_of_normal(x: f64) -> f64 {
+    f64::from_bits(x.to_bits() & 0x7ff0_0000_0000_0000) * f64::EPSILON
+}
 
 /// `o · 2^k` if that is exact and its larger coordinate is normal, so that the relative
 /// error bound and its ulp reading carry over.
@@ -453,7 +458,8 @@ fn scale_back(o: [f64; 2], k: i32) -> Option<[f64; 2]> {
 }
 
 /// The circumcenter `t0 + u/d` from running-error values of points scaled by `2^-k`,
-/// rescaled, if its proven error is within `2^-46` of its larger coordinate magnitude.
+/// rescaled, if its proven error is within 256 units in the last place of its larger
+/// coordinate magnitude.
 fn fast_circumcenter(c: &Circ<Bounded>, t0: [f64; 2], k: i32) -> Option<[f64; 2]> {
     let x = Bounded::from_f64(t0[0]).add(&c.ux.div(&c.d)?);
     let y = Bounded::from_f64(t0[1]).add(&c.uy.div(&c.d)?);
@@ -464,7 +470,7 @@ fn fast_circumcenter(c: &Circ<Bounded>, t0: [f64; 2], k: i32) -> Option<[f64; 2]
     if !(x.v.is_finite() && y.v.is_finite() && norm.is_normal()) {
         return None;
     }
-    let tolerance = CIRCUMCENTER_RELATIVE * norm; // exact: norm is normal
+    let tolerance = CIRCUMCENTER_ULPS * ulp_of_normal(norm);
     let accurate = x.e <= tolerance && y.e <= tolerance; // false for NaN
     if !accurate {
         return None;
@@ -561,9 +567,9 @@ pub fn circumcenter_exact(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Exact
 
 /// The circumcenter of `a, b, c` in `f64`, or `None` iff they are exactly collinear.
 ///
-/// Each coordinate is within `2^-46·N` of the exact circumcenter `O`, where `N` is the larger
-/// magnitude of the two returned coordinates: fewer than 129 units in the last place of the
-/// larger coordinate magnitude of `O`. This is proven per call, by an a priori bound of the
+/// Each coordinate is within 256 units in the last place of `N` of the exact circumcenter
+/// `O`, where `N` is the larger magnitude of the two returned coordinates (a normwise
+/// relative error below `2^-44`). This is proven per call, by an a priori error bound of the
 /// floating-point formula translated to `a` (one division) or, where that is too coarse, by
 /// a running error bound; where neither proves it (nearly collinear triangles, a circumcenter
 /// much closer to the origin than to `a`, results near the ends of the `f64` range) the exact

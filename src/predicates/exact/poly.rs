@@ -39,12 +39,6 @@ fn cross<T: Arith>(v: &Pt<T>, w: &Pt<T>) -> T {
     v[0].mul(&w[1]).sub(&v[1].mul(&w[0]))
 }
 
-/// `bx·cy − by·cx` for `b = t1 − t0`, `c = t2 − t0`: the orientation of `t` (half of `d`).
-#[inline(always)]
-pub(super) fn orientation_term<T: Arith>(t: &[Pt<T>; 3]) -> T {
-    cross(&diff(&t[1], &t[0]), &diff(&t[2], &t[0]))
-}
-
 /// `(bx·cy − by·cx, ux, uy)`: the circumcenter relative to `t0` is `u / (2·cross)`.
 #[inline(always)]
 fn circ_half<T: Arith>(t: &[Pt<T>; 3]) -> (T, T, T) {

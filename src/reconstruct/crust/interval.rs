@@ -25,6 +25,7 @@
 use std::cell::OnceCell;
 use std::cmp::Ordering;
 
+use num_bigint::{BigInt, Sign as BigSign};
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
@@ -226,16 +227,55 @@ pub(crate) fn rational(x: f64) -> BigRational {
     BigRational::from_float(x).unwrap_or_default()
 }
 
+/// A point in homogeneous integer coordinates: `(x / w, y / w)` with `w > 0`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct Homogeneous {
+    x: BigInt,
+    y: BigInt,
+    w: BigInt,
+}
+
+impl Homogeneous {
+    /// The exact point `(x, y)` (reduced rationals, positive denominators).
+    fn from_rationals(x: &BigRational, y: &BigRational) -> Homogeneous {
+        Homogeneous {
+            x: x.numer() * y.denom(),
+            y: y.numer() * x.denom(),
+            w: x.denom() * y.denom(),
+        }
+    }
+}
+
+/// `det [[a0, a1, a2], [b0, b1, b2], [c0, c1, c2]]`.
+fn det3(a: [&BigInt; 3], b: [&BigInt; 3], c: [&BigInt; 3]) -> BigInt {
+    a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+        + a[2] * (b[0] * c[1] - b[1] * c[0])
+}
+
+fn integer_sign(x: &BigInt) -> Ordering {
+    match x.sign() {
+        BigSign::Minus => Ordering::Less,
+        BigSign::NoSign => Ordering::Equal,
+        BigSign::Plus => Ordering::Greater,
+    }
+}
+
 /// The samples of a triangulation together with its Voronoi vertices, addressed by one index
 /// space: `i < n` is sample `i` (the caller's index), `n + v` is Voronoi vertex `v`.
+///
+/// Exact evaluation uses homogeneous integer coordinates, computed once per point: then an
+/// orientation is the sign of a 3 × 3 integer determinant of rows `(x, y, w)`, and an incircle
+/// test, after translating to the fourth point, of rows `(P·R, Q·R, P² + Q²)` where
+/// `(P, Q) / R` is the translated point. Scaling a row by a positive factor keeps the sign, so
+/// no division and no gcd is ever needed.
 pub(crate) struct MixedPoints<'a> {
     samples: &'a [[f64; 2]],
     /// Defining triangle of every Voronoi vertex (its circumcenter is the vertex).
     triangles: Vec<[[f64; 2]; 3]>,
     /// Enclosing intervals of the Voronoi vertices.
     approx: Vec<[Iv; 2]>,
-    /// Exact Voronoi vertices, computed when first needed.
-    exact: Vec<OnceCell<Box<[BigRational; 2]>>>,
+    /// Exact points (samples first, then Voronoi vertices), computed when first needed.
+    exact: Vec<OnceCell<Box<Homogeneous>>>,
 }
 
 /// Enclosing intervals of the circumcenter `t0 + u / d` of `t` (see
@@ -259,29 +299,31 @@ fn circumcenter_interval(t: [[f64; 2]; 3]) -> Option<[Iv; 2]> {
     (tight(&x) && tight(&y)).then_some([x, y])
 }
 
-/// Enclosing intervals of an exact point, from its correctly rounded coordinates.
-fn interval_of_exact(e: &ExactPoint) -> [Iv; 2] {
-    let [x, y] = e.to_f64();
-    [Iv::around(x), Iv::around(y)]
+/// The exact circumcenter of a (non-collinear) Delaunay triangle.
+fn exact_circumcenter(t: [[f64; 2]; 3]) -> ExactPoint {
+    circumcenter_exact(t[0], t[1], t[2]).unwrap_or(ExactPoint {
+        x: rational(t[0][0]),
+        y: rational(t[0][1]),
+    })
 }
 
 impl<'a> MixedPoints<'a> {
     /// Samples `samples` and Voronoi vertices that are the circumcenters of `triangles`
     /// (each non-collinear).
     pub(crate) fn new(samples: &'a [[f64; 2]], triangles: Vec<[[f64; 2]; 3]>) -> Self {
-        let exact: Vec<OnceCell<Box<[BigRational; 2]>>> =
-            (0..triangles.len()).map(|_| OnceCell::new()).collect();
+        let n = samples.len();
+        let exact: Vec<OnceCell<Box<Homogeneous>>> =
+            (0..n + triangles.len()).map(|_| OnceCell::new()).collect();
         let approx = triangles
             .iter()
-            .zip(&exact)
+            .zip(&exact[n..])
             .map(|(&t, cell)| {
                 circumcenter_interval(t).unwrap_or_else(|| {
-                    let e = circumcenter_exact(t[0], t[1], t[2]);
-                    let iv = e.as_ref().map_or([NAN, NAN], interval_of_exact);
-                    if let Some(e) = e {
-                        let _ = cell.set(Box::new([e.x, e.y]));
-                    }
-                    iv
+                    // Rounded to nearest, so the exact value is within one step each way.
+                    let e = exact_circumcenter(t);
+                    let [x, y] = e.to_f64();
+                    let _ = cell.set(Box::new(Homogeneous::from_rationals(&e.x, &e.y)));
+                    [Iv::around(x), Iv::around(y)]
                 })
             })
             .collect();
@@ -307,25 +349,28 @@ impl<'a> MixedPoints<'a> {
         }
     }
 
-    /// The exact coordinates of point `i`.
-    pub(crate) fn exact(&self, i: u32) -> [BigRational; 2] {
+    /// The exact point `i`.
+    fn exact(&self, i: u32) -> &Homogeneous {
         let i = i as usize;
-        match self.samples.get(i) {
-            Some(&[x, y]) => [rational(x), rational(y)],
-            None => {
-                let v = i - self.samples.len();
-                let t = self.triangles[v];
-                let e = self.exact[v].get_or_init(|| {
-                    // Voronoi vertices come from non-collinear Delaunay triangles.
-                    let e = circumcenter_exact(t[0], t[1], t[2]).unwrap_or(ExactPoint {
-                        x: rational(t[0][0]),
-                        y: rational(t[0][1]),
-                    });
-                    Box::new([e.x, e.y])
-                });
-                (**e).clone()
-            }
-        }
+        self.exact[i].get_or_init(|| {
+            Box::new(match self.samples.get(i) {
+                Some(&[x, y]) => Homogeneous::from_rationals(&rational(x), &rational(y)),
+                None => {
+                    let e = exact_circumcenter(self.triangles[i - self.samples.len()]);
+                    Homogeneous::from_rationals(&e.x, &e.y)
+                }
+            })
+        })
+    }
+
+    /// The exact coordinates of point `i`.
+    #[cfg(test)]
+    pub(crate) fn exact_rational(&self, i: u32) -> [BigRational; 2] {
+        let h = self.exact(i);
+        [
+            BigRational::new(h.x.clone(), h.w.clone()),
+            BigRational::new(h.y.clone(), h.w.clone()),
+        ]
     }
 
     /// Exact orientation of `a → b → c`.
@@ -339,7 +384,11 @@ impl<'a> MixedPoints<'a> {
             .sign()
             .unwrap_or_else(|| {
                 let [ea, eb, ec] = [self.exact(a), self.exact(b), self.exact(c)];
-                rational_sign(&orient_expr(&ea, &eb, &ec, |x, y| x - y, |x, y| x * y))
+                integer_sign(&det3(
+                    [&ea.x, &ea.y, &ea.w],
+                    [&eb.x, &eb.y, &eb.w],
+                    [&ec.x, &ec.y, &ec.w],
+                ))
             });
         match sign {
             Ordering::Greater => Orientation::CounterClockwise,
@@ -358,15 +407,20 @@ impl<'a> MixedPoints<'a> {
         let sign = incircle_expr(&pa, &pb, &pc, &pd, Iv::add, Iv::sub, Iv::mul)
             .sign()
             .unwrap_or_else(|| {
-                let [ea, eb, ec, ed] = [a, b, c, d].map(|i| self.exact(i));
-                rational_sign(&incircle_expr(
-                    &ea,
-                    &eb,
-                    &ec,
-                    &ed,
-                    |x, y| x + y,
-                    |x, y| x - y,
-                    |x, y| x * y,
+                let ed = self.exact(d);
+                // (P, Q) / R = point − d, with R = w·w_d > 0; row (P·R, Q·R, P² + Q²).
+                let row = |i: u32| {
+                    let e = self.exact(i);
+                    let p = &e.x * &ed.w - &ed.x * &e.w;
+                    let q = &e.y * &ed.w - &ed.y * &e.w;
+                    let r = &e.w * &ed.w;
+                    [&p * &r, &q * &r, &p * &p + &q * &q]
+                };
+                let [ra, rb, rc] = [row(a), row(b), row(c)];
+                integer_sign(&det3(
+                    [&ra[0], &ra[1], &ra[2]],
+                    [&rb[0], &rb[1], &rb[2]],
+                    [&rc[0], &rc[1], &rc[2]],
                 ))
             });
         match sign {
@@ -377,7 +431,7 @@ impl<'a> MixedPoints<'a> {
     }
 }
 
-/// `(b − a) × (c − a)`, in any number type.
+/// `(b − a) × (c − a)`.
 fn orient_expr<T: Clone>(
     a: &[T; 2],
     b: &[T; 2],
@@ -385,14 +439,8 @@ fn orient_expr<T: Clone>(
     sub: impl Fn(T, T) -> T,
     mul: impl Fn(T, T) -> T,
 ) -> T {
-    let (bx, by) = (
-        sub(b[0].clone(), a[0].clone()),
-        sub(b[1].clone(), a[1].clone()),
-    );
-    let (cx, cy) = (
-        sub(c[0].clone(), a[0].clone()),
-        sub(c[1].clone(), a[1].clone()),
-    );
+    let (bx, by) = (sub(b[0].clone(), a[0].clone()), sub(b[1].clone(), a[1].clone()));
+    let (cx, cy) = (sub(c[0].clone(), a[0].clone()), sub(c[1].clone(), a[1].clone()));
     sub(mul(bx, cy), mul(by, cx))
 }
 
@@ -407,12 +455,7 @@ fn incircle_expr<T: Clone>(
     sub: impl Fn(T, T) -> T,
     mul: impl Fn(T, T) -> T,
 ) -> T {
-    let rel = |p: &[T; 2]| {
-        [
-            sub(p[0].clone(), d[0].clone()),
-            sub(p[1].clone(), d[1].clone()),
-        ]
-    };
+    let rel = |p: &[T; 2]| [sub(p[0].clone(), d[0].clone()), sub(p[1].clone(), d[1].clone())];
     let [ax, ay] = rel(a);
     let [bx, by] = rel(b);
     let [cx, cy] = rel(c);
@@ -463,36 +506,68 @@ mod tests {
     #[test]
     fn grid_circumcenters_are_exact() {
         let t = [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]];
-        let c = circumcenter_interval(t).unwrap();
-        assert_eq!(c, [Iv::point(1.0), Iv::point(1.0)]);
-        // Circle through two samples and a vertex, exactly cocircular with another sample.
-        let samples = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
+        assert_eq!(circumcenter_interval(t).unwrap(), [Iv::point(1.0), Iv::point(1.0)]);
+        let samples = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, -1.0]];
+        // Point 5: the centre (1, 1) of the square.
         let mp = MixedPoints::new(&samples, vec![[samples[0], samples[1], samples[3]]]);
-        // (0,0), (2,0), center (1,1), (1,-1)? Use sample (0,2) on circle through
-        // (0,0),(2,0),(1,1)? That circle has centre (1,0), radius 1: (0,2) is outside.
-        assert_eq!(mp.incircle(0, 1, 4, 3), CirclePosition::Outside);
-        // The centre is strictly inside the square's circle.
-        assert_eq!(mp.incircle(0, 1, 2, 4), CirclePosition::Inside);
-        assert_eq!(mp.orient(0, 2, 4), Orientation::Collinear);
+        assert_eq!(mp.incircle(0, 1, 2, 5), CirclePosition::Inside);
+        assert_eq!(mp.orient(0, 2, 5), Orientation::Collinear);
+        // (0,0), (1,-1), (2,0) and the centre (1,1) are cocircular (circle about (1,0)).
+        assert_eq!(mp.incircle(0, 4, 1, 5), CirclePosition::On);
+        assert_eq!(mp.incircle(0, 4, 5, 3), CirclePosition::Outside);
     }
 
     #[test]
-    fn filter_and_exact_path_agree_on_near_degenerate_input() {
-        // Circumcenter of a thin triangle, tested against lines through it: the exact path
-        // must decide what the interval cannot.
-        let t = [[0.1, 0.3], [0.7, 0.30000000000000004], [0.4, 0.9]];
-        let samples = [t[0], t[1], t[2]];
+    fn exact_path_decides_what_intervals_cannot() {
+        // Scaled by 1/3 (not dyadic): the same cocircular and collinear configurations as in
+        // the grid test, now only decidable exactly.
+        let k = 1.0 / 3.0;
+        let t = [[0.0, 0.0], [6.0 * k, 0.0], [0.0, 6.0 * k]];
+        let samples = [t[0], t[1], [6.0 * k, 6.0 * k], t[2], [3.0 * k, -3.0 * k]];
         let mp = MixedPoints::new(&samples, vec![t]);
-        let [ex, ey] = mp.exact(3);
-        // The circumcenter is equidistant from the three corners, exactly.
+        let [ex, ey] = mp.exact_rational(5);
         let d2 = |i: usize| {
             let (x, y) = (rational(samples[i][0]), rational(samples[i][1]));
             (&x - &ex) * (&x - &ex) + (&y - &ey) * (&y - &ey)
         };
         assert_eq!(d2(0), d2(1));
-        assert_eq!(d2(1), d2(2));
-        // Every sample is on the circle of its own triangle's corners with the centre… no:
-        // the centre is inside the circle through the corners.
-        assert_eq!(mp.incircle(0, 1, 2, 3), CirclePosition::Inside);
+        assert_eq!(d2(1), d2(3));
+        assert_eq!(mp.incircle(0, 1, 2, 5), CirclePosition::Inside);
+        // Both answers agree with a direct rational evaluation.
+        for (a, b, c, d) in [(0, 4, 1, 5), (0, 4, 5, 3), (4, 1, 5, 2), (0, 1, 5, 2)] {
+            let [pa, pb, pc, pd] = [a, b, c, d].map(|i| mp.exact_rational(i));
+            let value = incircle_expr(
+                &pa,
+                &pb,
+                &pc,
+                &pd,
+                |x, y| x + y,
+                |x, y| x - y,
+                |x, y| x * y,
+            );
+            let orientation = orient_expr(&pa, &pb, &pc, |x, y| x - y, |x, y| x * y);
+            let expected = match rational_sign(&(value * orientation.signum())) {
+                Ordering::Greater => CirclePosition::Inside,
+                Ordering::Less => CirclePosition::Outside,
+                Ordering::Equal => CirclePosition::On,
+            };
+            let got = match mp.orient(a, b, c) {
+                Orientation::Clockwise => match mp.incircle(a, c, b, d) {
+                    CirclePosition::Inside => CirclePosition::Inside,
+                    other => other,
+                },
+                _ => mp.incircle(a, b, c, d),
+            };
+            assert_eq!(got, expected, "{a} {b} {c} {d}");
+        }
+        for (a, b, c) in [(0, 2, 5), (1, 3, 5), (4, 5, 0), (4, 5, 2)] {
+            let [pa, pb, pc] = [a, b, c].map(|i| mp.exact_rational(i));
+            let expected = match rational_sign(&orient_expr(&pa, &pb, &pc, |x, y| x - y, |x, y| x * y)) {
+                Ordering::Greater => Orientation::CounterClockwise,
+                Ordering::Less => Orientation::Clockwise,
+                Ordering::Equal => Orientation::Collinear,
+            };
+            assert_eq!(mp.orient(a, b, c), expected, "{a} {b} {c}");
+        }
     }
 }

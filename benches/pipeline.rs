@@ -1,0 +1,97 @@
+//! Phases of the reconstruction pipeline on curve samples, and the exact predicates.
+//!
+//! `cargo bench --bench pipeline` (filter with e.g. `-- pipeline/` or `-- predicates/`).
+
+mod common;
+
+use common::{curve_points, sizes, Rng};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use wdm_crust::predicates::{incircle, orient2d};
+use wdm_crust::reconstruct::wdm::label_vertices;
+
+fn bench_phases(c: &mut Criterion) {
+    let mut group = c.benchmark_group("pipeline");
+    for n in sizes() {
+        group.sample_size(if n >= 100_000 { 10 } else { 30 });
+        group.throughput(Throughput::Elements(n as u64));
+        let points = curve_points(n, &mut Rng::new(7));
+        let tri = wdm_crust::triangulate(&points).expect("valid points");
+        let vor = tri.voronoi();
+        group.bench_with_input(BenchmarkId::new("triangulate", n), &points, |b, p| {
+            b.iter(|| wdm_crust::triangulate(p).expect("valid points"))
+        });
+        group.bench_with_input(BenchmarkId::new("voronoi", n), &tri, |b, t| {
+            b.iter(|| t.voronoi())
+        });
+        group.bench_with_input(BenchmarkId::new("label_vertices", n), &vor, |b, v| {
+            b.iter(|| label_vertices(v, Default::default()))
+        });
+        group.bench_with_input(BenchmarkId::new("reconstruct", n), &points, |b, p| {
+            b.iter(|| wdm_crust::reconstruct(p).expect("valid points"))
+        });
+    }
+    group.finish();
+}
+
+/// Batches of 1024 predicate calls: on random points (the floating-point filter decides)
+/// and on points a few ulps off a line or circle (the exact arithmetic decides).
+fn bench_predicates(c: &mut Criterion) {
+    const BATCH: usize = 1024;
+    let mut rng = Rng::new(11);
+    let random: Vec<[[f64; 2]; 4]> = (0..BATCH)
+        .map(|_| [0; 4].map(|_| [rng.uniform(), rng.uniform()]))
+        .collect();
+    let nudge = |x: f64, k: i64| f64::from_bits((x.to_bits() as i64 + k) as u64);
+    let near_line: Vec<[[f64; 2]; 3]> = (0..BATCH)
+        .map(|_| {
+            let (a, b) = ([rng.uniform(), rng.uniform()], [rng.uniform(), rng.uniform()]);
+            let t = rng.uniform();
+            let k = (rng.next_u64() % 5) as i64 - 2;
+            [a, b, [a[0] + t * (b[0] - a[0]), nudge(a[1] + t * (b[1] - a[1]), k)]]
+        })
+        .collect();
+    let near_circle: Vec<[[f64; 2]; 4]> = (0..BATCH)
+        .map(|_| {
+            let mut on = || {
+                let t = rng.uniform() * std::f64::consts::TAU;
+                [t.cos(), t.sin()]
+            };
+            let (a, b, c, d) = (on(), on(), on(), on());
+            let k = (rng.next_u64() % 5) as i64 - 2;
+            let (a, b) = if orient2d(a, b, c) == wdm_crust::predicates::Orientation::Clockwise {
+                (b, a)
+            } else {
+                (a, b)
+            };
+            [a, b, c, [d[0], nudge(d[1], k)]]
+        })
+        .collect();
+    let mut group = c.benchmark_group("predicates");
+    group.throughput(Throughput::Elements(BATCH as u64));
+    group.bench_function("orient2d/random", |b| {
+        b.iter(|| random.iter().filter(|p| orient2d(p[0], p[1], p[2]) as u8 == 0).count())
+    });
+    group.bench_function("orient2d/near_collinear", |b| {
+        b.iter(|| near_line.iter().filter(|p| orient2d(p[0], p[1], p[2]) as u8 == 0).count())
+    });
+    group.bench_function("incircle/random", |b| {
+        b.iter(|| {
+            random
+                .iter()
+                .filter(|p| incircle(p[0], p[1], p[2], p[3]) as u8 == 0)
+                .count()
+        })
+    });
+    group.bench_function("incircle/near_cocircular", |b| {
+        b.iter(|| {
+            near_circle
+                .iter()
+                .filter(|p| incircle(p[0], p[1], p[2], p[3]) as u8 == 0)
+                .count()
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench_phases, bench_predicates);
+criterion_main!(benches);

@@ -1,0 +1,787 @@
+//! Reconstruction quality of WDM_CRUST against the crust and the NN-crust.
+//!
+//! ```text
+//! cargo run --release --example quality
+//! ```
+//!
+//! For point sets with known ground-truth edges it reports, per algorithm, the recall and
+//! precision of the edges (pooled over the trials of a row), the rate of exact polygons (the
+//! output equals the ground truth), and for noisy sets the symmetric Hausdorff distance and the
+//! RMS distance (output → truth) between the output edges and the true curve, in % of the
+//! bounding-box diagonal of the truth. Inputs:
+//! * ε-samples of smooth analytic curves at ε = 0.2, 0.39 (within the theory) and 0.5, 0.8,
+//!   1.2 (beyond it), randomly moved, scaled and shuffled;
+//! * polygons with sharp corners, several disjoint curves, nested curves, 10–40 % outliers,
+//!   Gaussian noise proportional to the local feature size;
+//! * ε-samples of the SVG drawings of `sampling2d`, and the real point sets in
+//!   `/work/shared/data` whose file order gives the ground truth (see its README).
+//!
+//! Every random choice comes from fixed seeds: the output is deterministic.
+
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use wdm_crust::reconstruct::{reconstruct_with, Algorithm, Options};
+use wdm_crust::sample::{
+    ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Sample, SampleConfig, Similarity,
+    Star, Superellipse,
+};
+
+const ALGORITHMS: [Algorithm; 3] = [Algorithm::Wdm, Algorithm::Crust, Algorithm::NnCrust];
+const DATA: &str = "/work/shared/data";
+/// Dense points per analytic curve.
+const DENSE: usize = 4000;
+
+// ---------------------------------------------------------------------------------------
+// Cases and scores.
+
+/// One input with its ground truth.
+struct Case {
+    points: Vec<[f64; 2]>,
+    /// Ground-truth edges `(min, max)`.
+    truth: HashSet<(u32, u32)>,
+    /// The true curves as dense polylines, when known (for distances).
+    curves: Vec<DenseCurve>,
+}
+
+impl Case {
+    fn from_sample(sample: &Sample, curves: Vec<DenseCurve>) -> Case {
+        Case {
+            points: sample.points.clone(),
+            truth: sample
+                .edge_set()
+                .into_iter()
+                .map(|(a, b)| (a as u32, b as u32))
+                .collect(),
+            curves,
+        }
+    }
+}
+
+/// Sums over the trials of one row for one algorithm.
+#[derive(Default, Clone)]
+struct Tally {
+    trials: usize,
+    exact: usize,
+    true_positives: usize,
+    truth: usize,
+    output: usize,
+    hausdorff: f64,
+    rms: f64,
+    distances: usize,
+    seconds: f64,
+}
+
+impl Tally {
+    fn add(&mut self, case: &Case, edges: &[[u32; 2]], seconds: f64, distances: bool) {
+        let output: HashSet<(u32, u32)> = edges.iter().map(|&[a, b]| (a, b)).collect();
+        let tp = output.intersection(&case.truth).count();
+        self.trials += 1;
+        self.true_positives += tp;
+        self.truth += case.truth.len();
+        self.output += output.len();
+        self.exact += usize::from(output == case.truth);
+        self.seconds += seconds;
+        if distances && !case.curves.is_empty() {
+            let (h, r) = curve_distances(&case.points, edges, &case.curves);
+            self.hausdorff += h;
+            self.rms += r;
+            self.distances += 1;
+        }
+    }
+
+    fn recall(&self) -> f64 {
+        percent(self.true_positives, self.truth)
+    }
+
+    fn precision(&self) -> f64 {
+        percent(self.true_positives, self.output)
+    }
+
+    fn exact_rate(&self) -> f64 {
+        percent(self.exact, self.trials)
+    }
+}
+
+fn percent(a: usize, b: usize) -> f64 {
+    if b == 0 {
+        100.0
+    } else {
+        100.0 * a as f64 / b as f64
+    }
+}
+
+/// One table row: a label and a tally per algorithm.
+struct Row {
+    label: String,
+    points: usize,
+    tallies: Vec<Tally>,
+}
+
+/// Runs every algorithm on every case of a row.
+fn run_row(label: &str, cases: &[Case], distances: bool) -> Row {
+    let mut tallies = vec![Tally::default(); ALGORITHMS.len()];
+    for case in cases {
+        for (tally, &algorithm) in tallies.iter_mut().zip(&ALGORITHMS) {
+            let options = Options {
+                algorithm,
+                ..Options::default()
+            };
+            let start = Instant::now();
+            let edges = match reconstruct_with(&case.points, &options) {
+                Ok(rec) => rec.edges().to_vec(),
+                Err(e) => {
+                    eprintln!("{label}: {} failed: {e}", algorithm.name());
+                    Vec::new()
+                }
+            };
+            tally.add(case, &edges, start.elapsed().as_secs_f64(), distances);
+        }
+    }
+    let points = cases.iter().map(|c| c.points.len()).sum::<usize>() / cases.len().max(1);
+    Row {
+        label: label.to_string(),
+        points,
+        tallies,
+    }
+}
+
+fn print_table(title: &str, rows: &[Row], distances: bool) {
+    println!("\n### {title}\n");
+    let mut header = String::from("| category | trials | n |");
+    let mut rule = String::from("|---|---:|---:|");
+    for a in ALGORITHMS {
+        let name = a.name();
+        header += &format!(" {name} R | {name} P | {name} exact |");
+        rule += "---:|---:|---:|";
+        if distances {
+            header += &format!(" {name} Hausdorff | {name} RMS |");
+            rule += "---:|---:|";
+        }
+    }
+    println!("{header}\n{rule}");
+    for row in rows {
+        let trials = row.tallies.first().map_or(0, |t| t.trials);
+        let mut line = format!("| {} | {} | {} |", row.label, trials, row.points);
+        for t in &row.tallies {
+            line += &format!(
+                " {:.1} | {:.1} | {:.0} % |",
+                t.recall(),
+                t.precision(),
+                t.exact_rate()
+            );
+            if distances {
+                let d = t.distances.max(1) as f64;
+                line += &format!(" {:.2} | {:.3} |", t.hausdorff / d, t.rms / d);
+            }
+        }
+        println!("{line}");
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Distances between output edges and the true curves.
+
+/// A uniform grid over segments, for nearest-segment queries.
+struct SegmentGrid {
+    segments: Vec<[[f64; 2]; 2]>,
+    origin: [f64; 2],
+    cell: f64,
+    size: [usize; 2],
+    cells: Vec<Vec<u32>>,
+}
+
+impl SegmentGrid {
+    fn new(segments: Vec<[[f64; 2]; 2]>, lo: [f64; 2], hi: [f64; 2]) -> SegmentGrid {
+        let extent = (hi[0] - lo[0]).max(hi[1] - lo[1]).max(1e-300);
+        let per_side = ((segments.len() as f64).sqrt().ceil() as usize).clamp(1, 512);
+        let cell = extent / per_side as f64 * (1.0 + 1e-9);
+        let size = [
+            (((hi[0] - lo[0]) / cell) as usize + 1).max(1),
+            (((hi[1] - lo[1]) / cell) as usize + 1).max(1),
+        ];
+        let mut grid = SegmentGrid {
+            segments,
+            origin: lo,
+            cell,
+            size,
+            cells: vec![Vec::new(); size[0] * size[1]],
+        };
+        for (i, s) in grid.segments.iter().enumerate() {
+            let (a, b) = (grid.index(s[0]), grid.index(s[1]));
+            for x in a[0].min(b[0])..=a[0].max(b[0]) {
+                for y in a[1].min(b[1])..=a[1].max(b[1]) {
+                    grid.cells[y * size[0] + x].push(i as u32);
+                }
+            }
+        }
+        grid
+    }
+
+    fn index(&self, p: [f64; 2]) -> [usize; 2] {
+        let c = |k: usize| {
+            let f = ((p[k] - self.origin[k]) / self.cell).floor();
+            (f.max(0.0) as usize).min(self.size[k] - 1)
+        };
+        [c(0), c(1)]
+    }
+
+    /// Distance from `p` to the nearest segment (infinite if there are none).
+    fn distance(&self, p: [f64; 2]) -> f64 {
+        if self.segments.is_empty() {
+            return f64::INFINITY;
+        }
+        let [cx, cy] = self.index(p);
+        let mut best = f64::INFINITY;
+        let reach = self.size[0].max(self.size[1]);
+        for r in 0..=reach {
+            let (x0, x1) = (cx.saturating_sub(r), (cx + r).min(self.size[0] - 1));
+            let (y0, y1) = (cy.saturating_sub(r), (cy + r).min(self.size[1] - 1));
+            for y in y0..=y1 {
+                for x in x0..=x1 {
+                    let ring = x.abs_diff(cx).max(y.abs_diff(cy));
+                    if ring != r {
+                        continue;
+                    }
+                    for &s in &self.cells[y * self.size[0] + x] {
+                        let [a, b] = self.segments[s as usize];
+                        best = best.min(point_segment(p, a, b));
+                    }
+                }
+            }
+            // Cells beyond ring r are at least r cells away from p's cell.
+            if best <= r as f64 * self.cell {
+                break;
+            }
+        }
+        best
+    }
+}
+
+fn point_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 > 0.0 {
+        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let (x, y) = (a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
+    (x * x + y * y).sqrt()
+}
+
+fn bbox(points: impl Iterator<Item = [f64; 2]>) -> ([f64; 2], [f64; 2]) {
+    let mut lo = [f64::INFINITY; 2];
+    let mut hi = [f64::NEG_INFINITY; 2];
+    for p in points {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    (lo, hi)
+}
+
+/// `(Hausdorff, RMS)` in % of the truth's bounding-box diagonal: Hausdorff is symmetric
+/// (points along the output edges to the curves, dense curve points to the output edges); RMS
+/// is over points along the output edges. No output edges: 100 % for both.
+fn curve_distances(points: &[[f64; 2]], edges: &[[u32; 2]], curves: &[DenseCurve]) -> (f64, f64) {
+    let mut truth_segments = Vec::new();
+    for c in curves {
+        let n = c.points.len();
+        let count = if c.closed { n } else { n.saturating_sub(1) };
+        truth_segments.extend((0..count).map(|i| [c.points[i], c.points[(i + 1) % n]]));
+    }
+    let (lo, hi) = bbox(curves.iter().flat_map(|c| c.points.iter().copied()));
+    let diag = ((hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2)).sqrt();
+    if edges.is_empty() || diag == 0.0 {
+        return (100.0, 100.0);
+    }
+    let out_segments: Vec<[[f64; 2]; 2]> = edges
+        .iter()
+        .map(|&[a, b]| [points[a as usize], points[b as usize]])
+        .collect();
+    let (olo, ohi) = bbox(out_segments.iter().flatten().copied());
+    let all_lo = [lo[0].min(olo[0]), lo[1].min(olo[1])];
+    let all_hi = [hi[0].max(ohi[0]), hi[1].max(ohi[1])];
+    let truth = SegmentGrid::new(truth_segments, all_lo, all_hi);
+    let output = SegmentGrid::new(out_segments.clone(), all_lo, all_hi);
+    let step = diag / 1000.0;
+    let (mut forward_max, mut sum2, mut count) = (0.0f64, 0.0, 0usize);
+    for [a, b] in &out_segments {
+        let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
+        let pieces = ((len / step).ceil() as usize).clamp(1, 1000);
+        for k in 0..=pieces {
+            let t = k as f64 / pieces as f64;
+            let p = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+            let d = truth.distance(p);
+            forward_max = forward_max.max(d);
+            sum2 += d * d;
+            count += 1;
+        }
+    }
+    let backward_max = curves
+        .iter()
+        .flat_map(|c| c.points.iter())
+        .map(|&p| output.distance(p))
+        .fold(0.0f64, f64::max);
+    let hausdorff = forward_max.max(backward_max);
+    let rms = (sum2 / count.max(1) as f64).sqrt();
+    (100.0 * hausdorff / diag, 100.0 * rms / diag)
+}
+
+// ---------------------------------------------------------------------------------------
+// Synthetic inputs.
+
+fn smooth_shapes() -> Vec<(&'static str, DenseCurve)> {
+    vec![
+        ("ellipse", Ellipse { a: 2.0, b: 1.0 }.dense(DENSE)),
+        ("star5", Star { a: 0.25, k: 5 }.dense(DENSE)),
+        ("star3", Star { a: 0.3, k: 3 }.dense(DENSE)),
+        ("peanut", Peanut { a: 0.3, b: 0.15 }.dense(DENSE)),
+        (
+            "superellipse",
+            Superellipse {
+                a: 1.5,
+                b: 1.0,
+                p: 4.0,
+            }
+            .dense(DENSE),
+        ),
+    ]
+}
+
+/// `trials` randomized ε-samples of each curve set (lfs floor as a fraction of the bounding
+/// box diagonal, for sharp corners), transformed by `spoil`.
+fn sampled_cases(
+    sets: &[CurveSet],
+    eps: f64,
+    floor_fraction: f64,
+    trials: usize,
+    seed: u64,
+    spoil: &dyn Fn(Sample, &mut Rng) -> Sample,
+) -> Vec<Case> {
+    let mut rng = Rng::new(seed);
+    let mut cases = Vec::new();
+    for set in sets {
+        let (lo, hi) = bbox(set.curves.iter().flat_map(|c| c.points.iter().copied()));
+        let diag = ((hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2)).sqrt();
+        let config = SampleConfig {
+            eps,
+            min_step_fraction: 0.5,
+            lfs_floor: floor_fraction * diag,
+        };
+        for _ in 0..trials {
+            let sample = set.eps_sample_with(&config, &mut rng);
+            let similarity = Similarity::random(&mut rng);
+            let moved = sample.transformed(&similarity).shuffled(&mut rng);
+            let spoiled = spoil(moved, &mut rng);
+            let curves = set
+                .curves
+                .iter()
+                .map(|c| c.transformed(&similarity))
+                .collect();
+            cases.push(Case::from_sample(&spoiled, curves));
+        }
+    }
+    cases
+}
+
+fn keep(sample: Sample, _: &mut Rng) -> Sample {
+    sample
+}
+
+fn translated(curve: &DenseCurve, offset: [f64; 2], scale: f64) -> DenseCurve {
+    curve.transformed(&Similarity::scaling(scale).then(&Similarity::translation(offset)))
+}
+
+fn polygons() -> Vec<(&'static str, Vec<[f64; 2]>)> {
+    let star: Vec<[f64; 2]> = (0..10)
+        .map(|i| {
+            let r = if i % 2 == 0 { 1.0 } else { 0.45 };
+            let t = i as f64 * std::f64::consts::PI / 5.0 + std::f64::consts::FRAC_PI_2;
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect();
+    let mut comb = vec![[0.0, 0.0], [4.0, 0.0]];
+    for k in (0..4).rev() {
+        let x = k as f64;
+        comb.extend([[x + 1.0, 2.0], [x + 0.5, 1.0]]);
+    }
+    comb.push([0.0, 2.0]);
+    vec![
+        ("triangle", vec![[0.0, 0.0], [3.0, 0.0], [1.0, 2.0]]),
+        ("square", vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]]),
+        (
+            "L-shape",
+            vec![[0.0, 0.0], [3.0, 0.0], [3.0, 1.0], [1.0, 1.0], [1.0, 3.0], [0.0, 3.0]],
+        ),
+        ("star polygon", star),
+        ("comb", comb),
+    ]
+}
+
+// ---------------------------------------------------------------------------------------
+// Real data.
+
+fn read_points(path: &Path) -> Option<Vec<[f64; 2]>> {
+    match wdm_crust::io::read_points_from_path(path) {
+        Ok(points) => Some(points),
+        Err(e) => {
+            eprintln!("skipping {}: {e}", path.display());
+            None
+        }
+    }
+}
+
+/// Ground truth from the file order: components split where the step to the next point
+/// exceeds `jump` times the median step (`None`: one component); a component is closed when
+/// its last point is within `jump` median steps of its first (always, for one component).
+fn ordered_case(points: Vec<[f64; 2]>, jump: Option<f64>) -> Case {
+    let n = points.len();
+    let step = |i: usize, j: usize| {
+        let (a, b) = (points[i], points[j]);
+        ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt()
+    };
+    let mut steps: Vec<f64> = (1..n).map(|i| step(i - 1, i)).collect();
+    steps.sort_by(f64::total_cmp);
+    let median = steps.get(steps.len() / 2).copied().unwrap_or(0.0);
+    let mut components: Vec<(usize, usize)> = Vec::new();
+    let mut first = 0;
+    for i in 1..=n {
+        let split = i == n || jump.is_some_and(|j| step(i - 1, i) > j * median);
+        if split {
+            components.push((first, i));
+            first = i;
+        }
+    }
+    let mut truth = HashSet::new();
+    let mut add = |a: usize, b: usize| {
+        if a != b && points[a] != points[b] {
+            truth.insert((a.min(b) as u32, a.max(b) as u32));
+        }
+    };
+    for &(s, e) in &components {
+        for i in s + 1..e {
+            add(i - 1, i);
+        }
+        let closed = match jump {
+            None => true,
+            Some(j) => e - s >= 3 && step(e - 1, s) <= j * median,
+        };
+        if closed && e - s >= 3 {
+            add(e - 1, s);
+        }
+    }
+    Case {
+        points,
+        truth,
+        curves: Vec::new(),
+    }
+}
+
+fn data(path: &str) -> PathBuf {
+    Path::new(DATA).join(path)
+}
+
+/// Structure of a reconstruction without ground truth.
+fn structure_line(name: &str, points: &[[f64; 2]]) -> String {
+    let mut line = format!("| {name} | {} |", points.len());
+    for algorithm in ALGORITHMS {
+        let options = Options {
+            algorithm,
+            ..Options::default()
+        };
+        let start = Instant::now();
+        match reconstruct_with(points, &options) {
+            Ok(rec) => {
+                let seconds = start.elapsed().as_secs_f64();
+                let closed = rec.curves().iter().filter(|c| c.closed).count();
+                let open = rec.curves().len() - closed;
+                line += &format!(
+                    " {} | {closed} / {open} | {} | {:.0} |",
+                    rec.edges().len(),
+                    rec.irregular_points().len(),
+                    seconds * 1e3
+                );
+            }
+            Err(e) => line += &format!(" error: {e} | | | |"),
+        }
+    }
+    line
+}
+
+// ---------------------------------------------------------------------------------------
+
+fn main() {
+    let started = Instant::now();
+    println!("# Reconstruction quality: WDM_CRUST vs crust vs NN-crust\n");
+    println!(
+        "`cargo run --release --example quality`. R = recall, P = precision (edges, % pooled \
+         over the trials of a row), exact = share of trials whose output equals the ground \
+         truth. Distances in % of the truth's bounding-box diagonal (Hausdorff symmetric, RMS \
+         from the output edges to the true curve), averaged over trials. n = mean points."
+    );
+
+    // Smooth curves at several ε.
+    let shapes = smooth_shapes();
+    let sets: Vec<CurveSet> = shapes.iter().map(|(_, c)| CurveSet::new(vec![c.clone()])).collect();
+    let mut rows = Vec::new();
+    for (i, &eps) in [0.2, 0.39, 0.5, 0.8, 1.2].iter().enumerate() {
+        let cases = sampled_cases(&sets, eps, 0.0, 8, 100 + i as u64, &keep);
+        rows.push(run_row(&format!("smooth, ε = {eps}"), &cases, false));
+    }
+    print_table(
+        "Smooth closed curves (ellipse, 2 stars, peanut, superellipse; 8 trials each)",
+        &rows,
+        false,
+    );
+
+    // Sharp corners.
+    let mut rows = Vec::new();
+    for (i, (name, vertices)) in polygons().into_iter().enumerate() {
+        let set = CurveSet::new(vec![DenseCurve::polygon(&vertices, DENSE)]);
+        for (j, &eps) in [0.3, 0.6].iter().enumerate() {
+            let cases = sampled_cases(
+                std::slice::from_ref(&set),
+                eps,
+                0.02,
+                10,
+                200 + 10 * i as u64 + j as u64,
+                &keep,
+            );
+            rows.push(run_row(&format!("{name}, ε = {eps}"), &cases, false));
+        }
+    }
+    print_table(
+        "Polygons with sharp corners (lfs floor 2 % of the diagonal; 10 trials each)",
+        &rows,
+        false,
+    );
+
+    // Several disjoint curves, and nested curves.
+    let ellipse = Ellipse { a: 2.0, b: 1.0 }.dense(DENSE);
+    let star = Star { a: 0.25, k: 5 }.dense(DENSE);
+    let peanut = Peanut { a: 0.3, b: 0.15 }.dense(DENSE);
+    let circle = Ellipse::circle(1.0).dense(DENSE);
+    let square = DenseCurve::polygon(&[[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]], DENSE);
+    let multi = [
+        (
+            "2 curves",
+            vec![ellipse.clone(), translated(&star, [4.5, 0.0], 1.0)],
+        ),
+        (
+            "3 curves",
+            vec![
+                ellipse.clone(),
+                translated(&star, [4.5, 0.0], 1.0),
+                translated(&peanut, [1.0, 3.0], 1.0),
+            ],
+        ),
+        (
+            "4 curves, close",
+            vec![
+                circle.clone(),
+                translated(&circle, [2.3, 0.0], 1.0),
+                translated(&star, [0.0, 2.4], 1.0),
+                translated(&peanut, [2.4, 2.4], 1.0),
+            ],
+        ),
+    ];
+    let nested = [
+        (
+            "1 hole",
+            vec![ellipse.clone(), translated(&circle, [0.0, 0.0], 0.5)],
+        ),
+        (
+            "2 holes",
+            vec![
+                translated(&ellipse, [0.0, 0.0], 1.5),
+                translated(&circle, [-1.3, 0.0], 0.6),
+                translated(&star, [1.3, 0.0], 0.6),
+            ],
+        ),
+        (
+            "3 levels",
+            vec![
+                translated(&circle, [0.0, 0.0], 3.0),
+                translated(&peanut, [0.0, 0.0], 1.8),
+                translated(&circle, [0.0, 0.0], 0.6),
+            ],
+        ),
+        (
+            "square in circle",
+            vec![translated(&circle, [0.0, 0.0], 2.0), square.clone()],
+        ),
+    ];
+    let mut rows = Vec::new();
+    for (i, (name, curves)) in multi.iter().chain(nested.iter()).enumerate() {
+        let set = CurveSet::new(curves.clone());
+        let cases = sampled_cases(&[set], 0.3, 0.02, 10, 300 + i as u64, &keep);
+        rows.push(run_row(name, &cases, false));
+    }
+    print_table(
+        "Several curves (first 3 rows) and nested curves (last 4), ε = 0.3, 10 trials each",
+        &rows,
+        false,
+    );
+
+    // Outliers.
+    let mut rows = Vec::new();
+    for (i, &pct) in [10.0, 20.0, 40.0].iter().enumerate() {
+        let spoil = move |s: Sample, rng: &mut Rng| s.with_outliers(pct, rng);
+        let cases = sampled_cases(&sets, 0.3, 0.0, 6, 400 + i as u64, &spoil);
+        rows.push(run_row(&format!("{pct} % outliers"), &cases, false));
+    }
+    print_table(
+        "Smooth curves, ε = 0.3, with uniform outliers in the bounding box (edges to outliers \
+         are false positives; 5 shapes × 6 trials)",
+        &rows,
+        false,
+    );
+
+    // Noise.
+    let mut rows = Vec::new();
+    for (i, &fraction) in [0.0, 0.02, 0.05, 0.1].iter().enumerate() {
+        let spoil = move |s: Sample, rng: &mut Rng| s.with_lfs_noise(fraction, rng);
+        let cases = sampled_cases(&sets, 0.3, 0.0, 6, 500 + i as u64, &spoil);
+        rows.push(run_row(&format!("σ = {fraction} lfs"), &cases, true));
+    }
+    print_table(
+        "Smooth curves, ε = 0.3, Gaussian noise σ proportional to lfs (5 shapes × 6 trials)",
+        &rows,
+        true,
+    );
+
+    // SVG drawings.
+    let mut rows = Vec::new();
+    let groups: [(&str, &[&str]); 3] = [
+        ("closed drawings", &["simple", "blob2", "complex", "spiral"]),
+        ("multi-curve f1–f7", &["f1", "f2", "f3", "f4", "f5", "f6", "f7"]),
+        (
+            "animal line drawings",
+            &["Croco", "Deery", "Fishi", "Frog2", "Goldi", "Porpi", "Snail", "Spidy"],
+        ),
+    ];
+    for (g, (name, files)) in groups.iter().enumerate() {
+        let mut sets = Vec::new();
+        for file in *files {
+            let path = data(&format!("sampling2d/data/{file}.svg"));
+            let curves = std::fs::read_to_string(&path)
+                .map_err(|e| e.to_string())
+                .and_then(|svg| {
+                    wdm_crust::sample::svg_dense_curves(&svg, 8000).map_err(|e| e.to_string())
+                });
+            match curves {
+                Ok(curves) if !curves.is_empty() => sets.push(CurveSet::new(curves)),
+                Ok(_) => eprintln!("{}: no curves", path.display()),
+                Err(e) => eprintln!("skipping {}: {e}", path.display()),
+            }
+        }
+        let cases = sampled_cases(&sets, 0.3, 0.005, 2, 600 + g as u64, &keep);
+        rows.push(run_row(&format!("{name} ({} files)", sets.len()), &cases, false));
+    }
+    print_table(
+        "ε-samples (ε = 0.3, lfs floor 0.5 % of the diagonal) of the sampling2d SVG drawings, \
+         2 samples per file",
+        &rows,
+        false,
+    );
+
+    // Real data with ground-truth order.
+    let mut rows = Vec::new();
+    let ordered = [
+        ("hnn-crust-sgp16/mushroom.p2d", None),
+        ("fitconnect/data/apple_2percent_noise.txt", None),
+        ("fitconnect/data/butterfly_2percent_noise.txt", None),
+        ("fitconnect/data/crab_2percent_noise.txt", None),
+        ("fitconnect/data/dolphin_2percent_noise.txt", None),
+        ("stretchdenoise/data/Circle0.txt", None),
+        ("stretchdenoise/data/drill.txt", None),
+        ("stretchdenoise/data/thing.txt", None),
+        ("hnn-crust-sgp16/crocodile-conf.p2d", Some(5.0)),
+        ("stretchdenoise/data/vase.txt", Some(20.0)),
+        ("stretchdenoise/data/vase_xyz.txt", Some(20.0)),
+        ("stretchdenoise/data/drill_xyz.txt", Some(20.0)),
+        ("stretchdenoise/data/drillcase_xyz.txt", Some(20.0)),
+    ];
+    for (file, jump) in ordered {
+        if let Some(points) = read_points(&data(file)) {
+            let case = ordered_case(points, jump);
+            let name = file.rsplit('/').next().unwrap_or(file);
+            let label = match jump {
+                None => name.to_string(),
+                Some(j) => format!("{name} (components, break > {j}× median step)"),
+            };
+            rows.push(run_row(&label, &[case], false));
+        }
+    }
+    print_table(
+        "Real point sets with ground-truth order (/work/shared/data; closed curves in file \
+         order, multi-component files split at jumps; ventilator.p2d skipped: its order \
+         interleaves components)",
+        &rows,
+        false,
+    );
+
+    // Real data without ground truth: structure and time.
+    println!("\n### Real point sets without ground-truth order: structure of the output\n");
+    let mut header = String::from("| file | n |");
+    let mut rule = String::from("|---|---:|");
+    for a in ALGORITHMS {
+        let name = a.name();
+        header += &format!(" {name} edges | {name} closed / open | {name} irregular | {name} ms |");
+        rule += "---:|---:|---:|---:|";
+    }
+    println!("{header}\n{rule}");
+    for file in [
+        "fitconnect/data/fish.txt",
+        "fitconnect/data/bot.txt",
+        "fitconnect/data/Cup0.txt",
+        "fitconnect/data/Keyboard0.txt",
+        "fitconnect/data/Monitor0.txt",
+        "fitconnect/data/Mouse0.txt",
+        "stretchdenoise/data/stair.xy",
+        "stretchdenoise/data/family.p2d",
+        "hnn-crust-sgp16/ventilator.p2d",
+    ] {
+        if let Some(points) = read_points(&data(file)) {
+            let name = file.rsplit('/').next().unwrap_or(file);
+            println!("{}", structure_line(name, &points));
+        }
+    }
+
+    // Scale.
+    println!("\n### Running time on large inputs (ms)\n");
+    println!("| input | n | wdm | crust | nn-crust |\n|---|---:|---:|---:|---:|");
+    for &n in &[10_000usize, 100_000] {
+        let mut rng = Rng::new(n as u64);
+        let points: Vec<[f64; 2]> = (0..n)
+            .map(|_| {
+                let t = rng.f64() * std::f64::consts::TAU;
+                let r = 1.0 + 0.25 * (5.0 * t).cos() + 1e-4 * rng.normal();
+                [r * t.cos(), r * t.sin()]
+            })
+            .collect();
+        let mut line = format!("| noisy star, random order | {n} |");
+        for algorithm in ALGORITHMS {
+            let options = Options {
+                algorithm,
+                ..Options::default()
+            };
+            let start = Instant::now();
+            let ok = reconstruct_with(&points, &options).is_ok();
+            line += &format!(
+                " {:.0}{} |",
+                start.elapsed().as_secs_f64() * 1e3,
+                if ok { "" } else { " (error)" }
+            );
+        }
+        println!("{line}");
+    }
+    println!(
+        "\nTotal time: {:.1} s",
+        started.elapsed().as_secs_f64()
+    );
+}

@@ -1,0 +1,141 @@
+//! Inputs found by the fuzz targets (`fuzz/`), pasted as literals, with the same exact
+//! oracles the targets use (`fuzz/src/checks.rs`, included by path).
+//!
+//! Tests marked `#[ignore]` pin open issues in core code: they fail until the issue is fixed
+//! (run them with `cargo test --test fuzz_regressions -- --ignored`); remove the `ignore`
+//! with the fix.
+
+#[allow(dead_code)]
+#[path = "../fuzz/src/checks.rs"]
+mod checks;
+
+use wdm_crust::reconstruct::{reconstruct_with, Options};
+
+/// Every check of the `triangulate` and `reconstruct` targets, on `points` and on `points`
+/// reversed.
+fn check_everything(points: &[[f64; 2]]) {
+    let result = wdm_crust::triangulate(points);
+    checks::check_triangulate(points, &result).unwrap();
+    let Ok(tri) = result else { return };
+    checks::check_voronoi(&tri.voronoi()).unwrap();
+    let single_options = Options {
+        peeling: false,
+        ..Options::default()
+    };
+    let single = reconstruct_with(points, &single_options).unwrap();
+    let full = wdm_crust::reconstruct(points).unwrap();
+    checks::check_single_pass(points, &single).unwrap();
+    checks::check_peeled(points, &single, &full).unwrap();
+    let perm: Vec<usize> = (0..points.len()).rev().collect();
+    let reversed = checks::permute(points, &perm);
+    let other = reconstruct_with(&reversed, &single_options).unwrap();
+    checks::check_permuted(points, &perm, &single, &other, false, true).unwrap();
+}
+
+/// Sorted vertex positions of the Voronoi diagram, as bits.
+fn position_bits(points: &[[f64; 2]]) -> Vec<[u64; 2]> {
+    let tri = wdm_crust::triangulate(points).unwrap();
+    let mut out: Vec<[u64; 2]> = tri
+        .voronoi()
+        .vertex_positions()
+        .iter()
+        .map(|p| p.map(f64::to_bits))
+        .collect();
+    out.sort_unstable();
+    out
+}
+
+/// Found by `triangulate` (a bug of the oracle, not of the library): a circumcenter whose x
+/// is `2.4e-17` while the points are of order 1. `circumcenter` is accurate normwise (within
+/// 256 ulps of the larger coordinate), so `0.0` and `1.1e-16` are both right.
+#[test]
+fn circumcenter_near_an_axis_is_accurate_normwise() {
+    let points = [
+        [1.0, -1.0],
+        [-0.4999999999999998, -0.1339745962155613],
+        [-0.5000000000000004, -1.8660254037844384],
+    ];
+    check_everything(&points);
+    let tri = [points[0], points[1], points[2]];
+    checks::check_circumcenter(tri).unwrap();
+    checks::check_circumcenter([tri[1], tri[2], tri[0]]).unwrap();
+    checks::check_circumcenter([tri[2], tri[0], tri[1]]).unwrap();
+}
+
+/// Found by `triangulate` (a bug of the oracle's reference circumcenter, off by a factor 2):
+/// an equilateral triangle around the origin.
+#[test]
+fn equilateral_triangle_around_the_origin() {
+    check_everything(&[
+        [1.0, 0.0],
+        [-0.4999999999999998, 0.8660254037844387],
+        [-0.5000000000000004, -0.8660254037844384],
+    ]);
+}
+
+/// Open issue, found by `reconstruct` (medial axis compared bitwise under permutation).
+///
+/// src/voronoi.rs, `order_face_cycle`: the boundary cycle of a merged (cocircular) face starts
+/// at the half-edge whose origin has the smallest *point index*, so permuting the input
+/// rotates the cycle. `vertex_triangle(v)` is the triangle of the first boundary half-edge,
+/// and `vertex_position(v)` is computed from it: the merged face of the isosceles trapezoid
+/// (points 1, 2, 4, 5) is at `[-164.66167381789984, 4.000000000000001]` for one order and
+/// `[-164.66167381789984, 3.999999999999999]` for the other (exact: y = 4 to within 1e-16).
+/// Both are within the documented accuracy, but the medial-axis output then depends on the
+/// input order, and so does the order of `vertex_sites`/`vertex_edges` of merged vertices,
+/// which the water flow and the parity walk follow. Starting the cycle at a half-edge chosen
+/// independently of point indices (e.g. the smallest half-edge id of the face: the triangle
+/// arrays are identical under permutation) fixes it.
+#[test]
+#[ignore = "open issue: merged Voronoi face cycle starts at the smallest point index"]
+fn merged_face_position_depends_on_input_order() {
+    let points = [
+        [1.570784008902847, 4.999976474595966],
+        [-162.48185981524023, 4.704677472743322],
+        [-166.84776782337477, 4.684947024235719],
+        [-228.46147733521087, 4.068539948665641],
+        [-166.84776782337477, 3.3150529757642806],
+        [-162.48185981524023, 3.295322527256678],
+        [228.91380798907963, 3.972565952009143],
+    ];
+    let reversed: Vec<[f64; 2]> = points.iter().rev().copied().collect();
+    assert_eq!(position_bits(&points), position_bits(&reversed));
+}
+
+/// Open issue, same root cause as [`merged_face_position_depends_on_input_order`], found by
+/// `reconstruct` (peeling on, 600 points of rotated grids; reduced to 17 points).
+///
+/// With peeling, src/reconstruct/mod.rs `parity_inside` labels vertices by the parity of crust
+/// edges crossed on a breadth-first walk from the rays; where the crust is not closed the
+/// first path found decides, and that path follows the (index-dependent) boundary order of
+/// merged faces. Here the medial axis has 16 segments for the input and 13 for the same
+/// points reversed (the crust edges are the same).
+#[test]
+#[ignore = "open issue: merged Voronoi face cycle starts at the smallest point index"]
+fn peeled_medial_axis_depends_on_input_order() {
+    let points = [
+        [58.40224834496213, 71.42952742566177],
+        [57.71236069786755, 70.70561097027048],
+        [57.02247305077298, 69.98169451487918],
+        [56.3325854036784, 69.25777805948788],
+        [54.092778420911046, 74.15504920574338],
+        [53.40289077381647, 73.43113275035208],
+        [52.713003126721894, 72.70721629496077],
+        [52.644945510128444, 75.53482449993253],
+        [51.95505786303387, 74.81090804454122],
+        [51.26517021593929, 74.08699158914992],
+        [50.57528256884471, 73.36307513375861],
+        [51.23114140764257, 75.5007956916358],
+        [50.54125376054799, 74.7768792362445],
+        [49.85136611345341, 74.05296278085319],
+        [72.58362965927778, 99.35600991125202],
+        [49.817337305156684, 75.46676688333908],
+        [69.10016261550817, 97.1502317367814],
+    ];
+    let reversed: Vec<[f64; 2]> = points.iter().rev().copied().collect();
+    let a = wdm_crust::reconstruct(&points).unwrap();
+    let b = wdm_crust::reconstruct(&reversed).unwrap();
+    let perm: Vec<usize> = (0..points.len()).rev().collect();
+    checks::check_permuted(&points, &perm, &a, &b, false, false).unwrap();
+    assert_eq!(checks::axis_segments(&a), checks::axis_segments(&b));
+}

@@ -402,14 +402,18 @@ fn face_boundaries(
     (start, boundary)
 }
 
-/// Reorders the boundary half-edges of one merged face into a counterclockwise cycle.
+/// Reorders the boundary half-edges of one merged face into a counterclockwise cycle that
+/// starts at the smallest half-edge id: the triangle arrays do not depend on the order of the
+/// input points, so neither does the cycle (a start chosen by point index would).
 fn order_face_cycle(tri: &Triangulation, row: &mut [u32]) {
     let mut by_origin: Vec<(u32, u32)> = row
         .iter()
         .map(|&e| (tri.halfedge_origin(e as usize), e))
         .collect();
     by_origin.sort_unstable();
-    let mut e = by_origin[0].1;
+    let Some(mut e) = row.iter().copied().min() else {
+        return;
+    };
     for slot in row.iter_mut() {
         *slot = e;
         let dest = tri.halfedge_destination(e as usize);

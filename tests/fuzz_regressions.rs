@@ -73,7 +73,7 @@ fn equilateral_triangle_around_the_origin() {
     ]);
 }
 
-/// Open issue, found by `reconstruct` (medial axis compared bitwise under permutation).
+/// Fixed issue, found by `reconstruct` (medial axis compared bitwise under permutation).
 ///
 /// src/voronoi.rs, `order_face_cycle`: the boundary cycle of a merged (cocircular) face starts
 /// at the half-edge whose origin has the smallest *point index*, so permuting the input
@@ -87,7 +87,6 @@ fn equilateral_triangle_around_the_origin() {
 /// independently of point indices (e.g. the smallest half-edge id of the face: the triangle
 /// arrays are identical under permutation) fixes it.
 #[test]
-#[ignore = "open issue: merged Voronoi face cycle starts at the smallest point index"]
 fn merged_face_position_depends_on_input_order() {
     let points = [
         [1.570784008902847, 4.999976474595966],
@@ -102,7 +101,7 @@ fn merged_face_position_depends_on_input_order() {
     assert_eq!(position_bits(&points), position_bits(&reversed));
 }
 
-/// Open issue, same root cause as [`merged_face_position_depends_on_input_order`], found by
+/// Fixed issue, same root cause as [`merged_face_position_depends_on_input_order`], found by
 /// `reconstruct` (peeling on, 600 points of rotated grids; reduced to 17 points).
 ///
 /// With peeling, src/reconstruct/mod.rs `parity_inside` labels vertices by the parity of crust
@@ -111,7 +110,6 @@ fn merged_face_position_depends_on_input_order() {
 /// merged faces. Here the medial axis has 16 segments for the input and 13 for the same
 /// points reversed (the crust edges are the same).
 #[test]
-#[ignore = "open issue: merged Voronoi face cycle starts at the smallest point index"]
 fn peeled_medial_axis_depends_on_input_order() {
     let points = [
         [58.40224834496213, 71.42952742566177],
@@ -137,5 +135,7 @@ fn peeled_medial_axis_depends_on_input_order() {
     let b = wdm_crust::reconstruct(&reversed).unwrap();
     let perm: Vec<usize> = (0..points.len()).rev().collect();
     checks::check_permuted(&points, &perm, &a, &b, false, false).unwrap();
+    assert_eq!(a.edges().len(), b.edges().len());
+    assert_eq!(a.medial_axis().edges.len(), b.medial_axis().edges.len());
     assert_eq!(checks::axis_segments(&a), checks::axis_segments(&b));
 }

@@ -114,7 +114,8 @@ fn loop_orient(cases: &[(P, P, T)]) -> usize {
 fn loop_hull(hull: &[P], tris: &[T]) -> usize {
     let mut acc = 0;
     for t in tris {
-        acc += usize::from(circumcenter_in_convex_hull(hull, black_box(*t)) == HullPosition::Inside);
+        acc +=
+            usize::from(circumcenter_in_convex_hull(hull, black_box(*t)) == HullPosition::Inside);
     }
     acc
 }
@@ -229,9 +230,18 @@ fn main() {
     };
     println!("fallbacks in the loops ({reps} runs):");
     println!("  circumcenter                {}", rate(c.circumcenter));
-    println!("  dot_sign_circumcenters      {}", rate(c.dot_sign_circumcenters));
-    println!("  compare_circumradius        {}", rate(c.compare_circumradius));
-    println!("  orient2d_circumcenter       {}", rate(c.orient2d_circumcenter));
+    println!(
+        "  dot_sign_circumcenters      {}",
+        rate(c.dot_sign_circumcenters)
+    );
+    println!(
+        "  compare_circumradius        {}",
+        rate(c.compare_circumradius)
+    );
+    println!(
+        "  orient2d_circumcenter       {}",
+        rate(c.orient2d_circumcenter)
+    );
     println!(
         "  circumcenter_in_convex_hull {}",
         rate(c.circumcenter_in_convex_hull)

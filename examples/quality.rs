@@ -22,13 +22,60 @@ use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use wdm_crust::reconstruct::{reconstruct_with, Algorithm, Options};
+use wdm_crust::reconstruct::{reconstruct_with, Algorithm, LabelRule, Options};
 use wdm_crust::sample::{
     ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Sample, SampleConfig, Similarity,
     Star, Superellipse,
 };
 
 const ALGORITHMS: [Algorithm; 3] = [Algorithm::Wdm, Algorithm::Crust, Algorithm::NnCrust];
+
+/// A named reconstruction method.
+struct Method {
+    name: &'static str,
+    options: Options,
+}
+
+/// The three algorithms with their default options.
+fn algorithms() -> Vec<Method> {
+    ALGORITHMS
+        .iter()
+        .map(|&algorithm| Method {
+            name: algorithm.name(),
+            options: Options {
+                algorithm,
+                ..Options::default()
+            },
+        })
+        .collect()
+}
+
+/// WDM_CRUST with peeling on and off and with the three label rules.
+fn wdm_variants() -> Vec<Method> {
+    let wdm = |peeling, label_rule| Options {
+        algorithm: Algorithm::Wdm,
+        peeling,
+        label_rule,
+    };
+    vec![
+        Method {
+            name: "wdm (default)",
+            options: wdm(true, LabelRule::WaterReached),
+        },
+        Method {
+            name: "wdm 1 pass",
+            options: wdm(false, LabelRule::WaterReached),
+        },
+        Method {
+            name: "wdm literal",
+            options: wdm(true, LabelRule::Literal),
+        },
+        Method {
+            name: "wdm complement",
+            options: wdm(true, LabelRule::Complement),
+        },
+    ]
+}
 const DATA: &str = "/work/shared/data";
 /// Dense points per analytic curve.
 const DENSE: usize = 4000;
@@ -37,6 +84,7 @@ const DENSE: usize = 4000;
 // Cases and scores.
 
 /// One input with its ground truth.
+#[derive(Clone)]
 struct Case {
     points: Vec<[f64; 2]>,
     /// Ground-truth edges `(min, max)`.
@@ -119,20 +167,16 @@ struct Row {
     tallies: Vec<Tally>,
 }
 
-/// Runs every algorithm on every case of a row.
-fn run_row(label: &str, cases: &[Case], distances: bool) -> Row {
-    let mut tallies = vec![Tally::default(); ALGORITHMS.len()];
+/// Runs every method on every case of a row.
+fn run_row(label: &str, cases: &[Case], methods: &[Method], distances: bool) -> Row {
+    let mut tallies = vec![Tally::default(); methods.len()];
     for case in cases {
-        for (tally, &algorithm) in tallies.iter_mut().zip(&ALGORITHMS) {
-            let options = Options {
-                algorithm,
-                ..Options::default()
-            };
+        for (tally, method) in tallies.iter_mut().zip(methods) {
             let start = Instant::now();
-            let edges = match reconstruct_with(&case.points, &options) {
+            let edges = match reconstruct_with(&case.points, &method.options) {
                 Ok(rec) => rec.edges().to_vec(),
                 Err(e) => {
-                    eprintln!("{label}: {} failed: {e}", algorithm.name());
+                    eprintln!("{label}: {} failed: {e}", method.name);
                     Vec::new()
                 }
             };
@@ -147,12 +191,12 @@ fn run_row(label: &str, cases: &[Case], distances: bool) -> Row {
     }
 }
 
-fn print_table(title: &str, rows: &[Row], distances: bool) {
+fn print_table(title: &str, rows: &[Row], methods: &[Method], distances: bool) {
     println!("\n### {title}\n");
     let mut header = String::from("| category | trials | n |");
     let mut rule = String::from("|---|---:|---:|");
-    for a in ALGORITHMS {
-        let name = a.name();
+    for method in methods {
+        let name = method.name;
         header += &format!(" {name} R | {name} P | {name} exact |");
         rule += "---:|---:|---:|";
         if distances {
@@ -412,10 +456,20 @@ fn polygons() -> Vec<(&'static str, Vec<[f64; 2]>)> {
     comb.push([0.0, 2.0]);
     vec![
         ("triangle", vec![[0.0, 0.0], [3.0, 0.0], [1.0, 2.0]]),
-        ("square", vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]]),
+        (
+            "square",
+            vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]],
+        ),
         (
             "L-shape",
-            vec![[0.0, 0.0], [3.0, 0.0], [3.0, 1.0], [1.0, 1.0], [1.0, 3.0], [0.0, 3.0]],
+            vec![
+                [0.0, 0.0],
+                [3.0, 0.0],
+                [3.0, 1.0],
+                [1.0, 1.0],
+                [1.0, 3.0],
+                [0.0, 3.0],
+            ],
         ),
         ("star polygon", star),
         ("comb", comb),
@@ -524,22 +578,39 @@ fn main() {
          from the output edges to the true curve), averaged over trials. n = mean points."
     );
 
+    let methods = algorithms();
+    // Inputs rerun with the WDM variants at the end.
+    let mut variant_inputs: Vec<(String, Vec<Case>)> = Vec::new();
+
     // Smooth curves at several ε.
     let shapes = smooth_shapes();
-    let sets: Vec<CurveSet> = shapes.iter().map(|(_, c)| CurveSet::new(vec![c.clone()])).collect();
+    let sets: Vec<CurveSet> = shapes
+        .iter()
+        .map(|(_, c)| CurveSet::new(vec![c.clone()]))
+        .collect();
     let mut rows = Vec::new();
     for (i, &eps) in [0.2, 0.39, 0.5, 0.8, 1.2].iter().enumerate() {
         let cases = sampled_cases(&sets, eps, 0.0, 8, 100 + i as u64, &keep);
-        rows.push(run_row(&format!("smooth, ε = {eps}"), &cases, false));
+        rows.push(run_row(
+            &format!("smooth, ε = {eps}"),
+            &cases,
+            &methods,
+            false,
+        ));
+        if eps > 1.0 {
+            variant_inputs.push((format!("smooth, ε = {eps}"), cases));
+        }
     }
     print_table(
         "Smooth closed curves (ellipse, 2 stars, peanut, superellipse; 8 trials each)",
         &rows,
+        &methods,
         false,
     );
 
     // Sharp corners.
     let mut rows = Vec::new();
+    let mut corner_cases = Vec::new();
     for (i, (name, vertices)) in polygons().into_iter().enumerate() {
         let set = CurveSet::new(vec![DenseCurve::polygon(&vertices, DENSE)]);
         for (j, &eps) in [0.3, 0.6].iter().enumerate() {
@@ -551,14 +622,24 @@ fn main() {
                 200 + 10 * i as u64 + j as u64,
                 &keep,
             );
-            rows.push(run_row(&format!("{name}, ε = {eps}"), &cases, false));
+            rows.push(run_row(
+                &format!("{name}, ε = {eps}"),
+                &cases,
+                &methods,
+                false,
+            ));
+            if eps > 0.5 {
+                corner_cases.extend(cases);
+            }
         }
     }
     print_table(
         "Polygons with sharp corners (lfs floor 2 % of the diagonal; 10 trials each)",
         &rows,
+        &methods,
         false,
     );
+    variant_inputs.push(("polygons, ε = 0.6".to_string(), corner_cases));
 
     // Several disjoint curves, and nested curves.
     let ellipse = Ellipse { a: 2.0, b: 1.0 }.dense(DENSE);
@@ -585,7 +666,7 @@ fn main() {
                 circle.clone(),
                 translated(&circle, [2.3, 0.0], 1.0),
                 translated(&star, [0.0, 2.4], 1.0),
-                translated(&peanut, [2.4, 2.4], 1.0),
+                translated(&peanut, [2.9, 2.5], 1.0),
             ],
         ),
     ];
@@ -618,12 +699,19 @@ fn main() {
     let mut rows = Vec::new();
     for (i, (name, curves)) in multi.iter().chain(nested.iter()).enumerate() {
         let set = CurveSet::new(curves.clone());
-        let cases = sampled_cases(&[set], 0.3, 0.02, 10, 300 + i as u64, &keep);
-        rows.push(run_row(name, &cases, false));
+        // Only the square has corners (lfs → 0); the smooth sets are true ε-samples.
+        let floor = if name.contains("square") { 0.02 } else { 0.0 };
+        let cases = sampled_cases(&[set], 0.3, floor, 10, 300 + i as u64, &keep);
+        rows.push(run_row(name, &cases, &methods, false));
+        if i >= multi.len() || name.contains("close") {
+            variant_inputs.push((name.to_string(), cases));
+        }
     }
     print_table(
-        "Several curves (first 3 rows) and nested curves (last 4), ε = 0.3, 10 trials each",
+        "Several curves (first 3 rows; the 4 curves are 0.3–0.5 apart at radius 1) and nested \
+         curves (last 4), ε = 0.3 (lfs floor 2 % for the square), 10 trials each",
         &rows,
+        &methods,
         false,
     );
 
@@ -632,12 +720,21 @@ fn main() {
     for (i, &pct) in [10.0, 20.0, 40.0].iter().enumerate() {
         let spoil = move |s: Sample, rng: &mut Rng| s.with_outliers(pct, rng);
         let cases = sampled_cases(&sets, 0.3, 0.0, 6, 400 + i as u64, &spoil);
-        rows.push(run_row(&format!("{pct} % outliers"), &cases, false));
+        rows.push(run_row(
+            &format!("{pct} % outliers"),
+            &cases,
+            &methods,
+            false,
+        ));
+        if pct == 20.0 {
+            variant_inputs.push((format!("{pct} % outliers"), cases));
+        }
     }
     print_table(
         "Smooth curves, ε = 0.3, with uniform outliers in the bounding box (edges to outliers \
          are false positives; 5 shapes × 6 trials)",
         &rows,
+        &methods,
         false,
     );
 
@@ -646,11 +743,20 @@ fn main() {
     for (i, &fraction) in [0.0, 0.02, 0.05, 0.1].iter().enumerate() {
         let spoil = move |s: Sample, rng: &mut Rng| s.with_lfs_noise(fraction, rng);
         let cases = sampled_cases(&sets, 0.3, 0.0, 6, 500 + i as u64, &spoil);
-        rows.push(run_row(&format!("σ = {fraction} lfs"), &cases, true));
+        rows.push(run_row(
+            &format!("σ = {fraction} lfs"),
+            &cases,
+            &methods,
+            true,
+        ));
+        if fraction == 0.1 {
+            variant_inputs.push((format!("noise σ = {fraction} lfs"), cases));
+        }
     }
     print_table(
         "Smooth curves, ε = 0.3, Gaussian noise σ proportional to lfs (5 shapes × 6 trials)",
         &rows,
+        &methods,
         true,
     );
 
@@ -658,10 +764,15 @@ fn main() {
     let mut rows = Vec::new();
     let groups: [(&str, &[&str]); 3] = [
         ("closed drawings", &["simple", "blob2", "complex", "spiral"]),
-        ("multi-curve f1–f7", &["f1", "f2", "f3", "f4", "f5", "f6", "f7"]),
+        (
+            "multi-curve f1–f7",
+            &["f1", "f2", "f3", "f4", "f5", "f6", "f7"],
+        ),
         (
             "animal line drawings",
-            &["Croco", "Deery", "Fishi", "Frog2", "Goldi", "Porpi", "Snail", "Spidy"],
+            &[
+                "Croco", "Deery", "Fishi", "Frog2", "Goldi", "Porpi", "Snail", "Spidy",
+            ],
         ),
     ];
     for (g, (name, files)) in groups.iter().enumerate() {
@@ -680,12 +791,15 @@ fn main() {
             }
         }
         let cases = sampled_cases(&sets, 0.3, 0.005, 2, 600 + g as u64, &keep);
-        rows.push(run_row(&format!("{name} ({} files)", sets.len()), &cases, false));
+        let label = format!("{name} ({} files)", sets.len());
+        rows.push(run_row(&label, &cases, &methods, false));
+        variant_inputs.push((format!("SVG {name}"), cases));
     }
     print_table(
         "ε-samples (ε = 0.3, lfs floor 0.5 % of the diagonal) of the sampling2d SVG drawings, \
          2 samples per file",
         &rows,
+        &methods,
         false,
     );
 
@@ -706,15 +820,21 @@ fn main() {
         ("stretchdenoise/data/drill_xyz.txt", Some(20.0)),
         ("stretchdenoise/data/drillcase_xyz.txt", Some(20.0)),
     ];
+    let (mut real_closed, mut real_components) = (Vec::new(), Vec::new());
     for (file, jump) in ordered {
         if let Some(points) = read_points(&data(file)) {
             let case = ordered_case(points, jump);
+            if jump.is_none() {
+                real_closed.push(case.clone());
+            } else {
+                real_components.push(case.clone());
+            }
             let name = file.rsplit('/').next().unwrap_or(file);
             let label = match jump {
                 None => name.to_string(),
                 Some(j) => format!("{name} (components, break > {j}× median step)"),
             };
-            rows.push(run_row(&label, &[case], false));
+            rows.push(run_row(&label, &[case], &methods, false));
         }
     }
     print_table(
@@ -722,6 +842,25 @@ fn main() {
          order, multi-component files split at jumps; ventilator.p2d skipped: its order \
          interleaves components)",
         &rows,
+        &methods,
+        false,
+    );
+
+    variant_inputs.push(("real, one closed curve (8 files)".to_string(), real_closed));
+    variant_inputs.push(("real, components (5 files)".to_string(), real_components));
+
+    // WDM variants.
+    let variants = wdm_variants();
+    let rows: Vec<Row> = variant_inputs
+        .iter()
+        .map(|(label, cases)| run_row(label, cases, &variants, false))
+        .collect();
+    print_table(
+        "WDM_CRUST variants on inputs from the tables above: peeling on (default) and off (the \
+         paper's single pass), and the three readings of the labels (DESIGN.md, water flow \
+         step 6)",
+        &rows,
+        &variants,
         false,
     );
 
@@ -780,8 +919,5 @@ fn main() {
         }
         println!("{line}");
     }
-    println!(
-        "\nTotal time: {:.1} s",
-        started.elapsed().as_secs_f64()
-    );
+    println!("\nTotal time: {:.1} s", started.elapsed().as_secs_f64());
 }

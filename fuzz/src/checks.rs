@@ -460,6 +460,21 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
             ensure!(vor.has_dual(edge.halfedge), "edge {e}: has_dual false");
             ensure!(vor.edge(edge.halfedge) == edge, "edge({e}) differs from vertex_edges");
             let [s0, s1] = edge.sites;
+            // The edge runs along the bisector of its sites, `sites[1]` on its left (the
+            // opposite of what the `VoronoiEdge::sites` docs said when this was written).
+            let direction = match edge.to {
+                EdgeEnd::Vertex(u) => sub(&centres[u as usize], c),
+                EdgeEnd::Infinity => {
+                    let (a, b) = (rpoint(pts[s0 as usize]), rpoint(pts[s1 as usize]));
+                    [&b[1] - &a[1], &a[0] - &b[0]]
+                }
+            };
+            let side = |s: u32| sign(&cross(&direction, &sub(&rpoint(pts[s as usize]), c)));
+            ensure!(
+                side(s1) == Sign::Positive && side(s0) == Sign::Negative,
+                "edge {e} from {v}: sites {:?} not right and left of it",
+                edge.sites
+            );
             match edge.to {
                 EdgeEnd::Infinity => {
                     ensure!(halfedges[e] == NO_TWIN, "edge {e}: ray but the half-edge has a twin");

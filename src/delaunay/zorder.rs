@@ -157,7 +157,7 @@ fn radix_sort(items: &mut Vec<(u64, u32)>) {
     }
     let mut buffer: Vec<(u64, u32)> = Vec::new();
     for (d, count) in counts.iter().enumerate() {
-        if count.iter().any(|&c| c == n) {
+        if count.contains(&n) {
             continue;
         }
         if buffer.is_empty() {

@@ -72,9 +72,12 @@ pub fn nn_crust_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
             continue;
         };
         let pq = points[q as usize];
-        let half = nearest(&mut around.iter().copied().filter(|&s| {
-            dot_sign(pp, points[s as usize], pq) == Ordering::Less
-        }));
+        let half = nearest(
+            &mut around
+                .iter()
+                .copied()
+                .filter(|&s| dot_sign(pp, points[s as usize], pq) == Ordering::Less),
+        );
         let p = p as u32;
         edges.push([p.min(q), p.max(q)]);
         if let Some(s) = half {
@@ -202,8 +205,8 @@ mod tests {
         let perm: Vec<usize> = (0..n).map(|i| (i * 17 + 5) % n).collect();
         let mut pts = vec![[0.0; 2]; n];
         for (k, &i) in perm.iter().enumerate() {
-            let t = (k as f64 + 0.3 * ((k * 7) % 5) as f64 / 5.0) * std::f64::consts::TAU
-                / n as f64;
+            let t =
+                (k as f64 + 0.3 * ((k * 7) % 5) as f64 / 5.0) * std::f64::consts::TAU / n as f64;
             pts[i] = [2.0 * t.cos() - 1.0, 2.0 * t.sin() + 3.0];
         }
         assert_eq!(nn_crust_of(&pts), polygon_edges(&perm));
@@ -216,8 +219,8 @@ mod tests {
         let pairs = 9;
         let pts: Vec<[f64; 2]> = (0..2 * pairs)
             .map(|i| {
-                let t = (i / 2) as f64 * std::f64::consts::TAU / pairs as f64
-                    + (i % 2) as f64 * 0.1;
+                let t =
+                    (i / 2) as f64 * std::f64::consts::TAU / pairs as f64 + (i % 2) as f64 * 0.1;
                 [t.cos(), t.sin()]
             })
             .collect();
@@ -229,42 +232,70 @@ mod tests {
         assert_eq!(pair_edges, pairs);
     }
 
+    /// The output as pairs of points (not indices), sorted.
+    fn edges_by_coordinates(pts: &[[f64; 2]]) -> Vec<[[u64; 2]; 2]> {
+        let key = |i: u32| pts[i as usize].map(f64::to_bits);
+        let mut e: Vec<[[u64; 2]; 2]> = nn_crust_of(pts)
+            .iter()
+            .map(|&[a, b]| {
+                let (ka, kb) = (key(a), key(b));
+                [ka.min(kb), ka.max(kb)]
+            })
+            .collect();
+        e.sort_unstable();
+        e
+    }
+
     #[test]
     fn ties_are_broken_by_coordinates_not_by_index() {
-        // A plus sign: the centre has four neighbours at distance 1. Its nearest neighbour is
-        // the one with the smallest coordinates, (−1, 0); its half neighbour is then (1, 0)
-        // (the only one strictly beyond 90°).
-        let base = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]];
-        let expected_pairs = |pts: &[[f64; 2]]| -> Vec<[[u64; 2]; 2]> {
-            let mut e: Vec<[[u64; 2]; 2]> = nn_crust_of(pts)
-                .iter()
-                .map(|&[a, b]| {
-                    let key = |i: u32| pts[i as usize].map(f64::to_bits);
-                    let (ka, kb) = (key(a), key(b));
-                    if ka < kb {
-                        [ka, kb]
-                    } else {
-                        [kb, ka]
+        // Equal distances: smaller x first, then smaller y, whatever the argument order.
+        let p = [0.0, 0.0];
+        let (a, b, c) = ([1.0, 0.0], [0.0, 1.0], [0.0, -1.0]);
+        assert_eq!(closer(p, b, a), Ordering::Less);
+        assert_eq!(closer(p, a, b), Ordering::Greater);
+        assert_eq!(closer(p, c, b), Ordering::Less);
+        assert_eq!(closer(p, [0.5, 0.0], b), Ordering::Less);
+        // Inputs full of ties (a grid, a plus sign, a regular hexagon with its centre): every
+        // order of the input gives the same edges between the same points.
+        let mut grid = Vec::new();
+        for y in 0..4 {
+            for x in 0..4 {
+                grid.push([f64::from(x) * 0.1, f64::from(y) * 0.1]);
+            }
+        }
+        let plus = vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]];
+        let mut hexagon = vec![[0.0, 0.0]];
+        hexagon.extend([
+            [2.0, 0.0],
+            [1.0, 2.0],
+            [-1.0, 2.0],
+            [-2.0, 0.0],
+            [-1.0, -2.0],
+            [1.0, -2.0],
+        ]);
+        for base in [grid, plus, hexagon] {
+            let reference = edges_by_coordinates(&base);
+            let n = base.len();
+            for step in [1, 3, 5, 7] {
+                for offset in 0..n {
+                    if step % n == 0 || gcd(step, n) != 1 {
+                        continue;
                     }
-                })
-                .collect();
-            e.sort_unstable();
-            e
-        };
-        let reference = expected_pairs(&base);
-        let centre_edges = nn_crust_of(&base)
-            .into_iter()
-            .filter(|e| e[0] == 0)
-            .collect::<Vec<_>>();
-        assert_eq!(centre_edges, vec![[0, 1], [0, 3]]);
-        // Every permutation of the input gives the same edges between the same points.
-        let mut perm = [0usize, 1, 2, 3, 4];
-        for _ in 0..40 {
-            perm.rotate_left(1);
-            let j = (perm[0] + 2) % 5;
-            perm.swap(1, j);
-            let pts: Vec<[f64; 2]> = perm.iter().map(|&i| base[i]).collect();
-            assert_eq!(expected_pairs(&pts), reference);
+                    let pts: Vec<[f64; 2]> =
+                        (0..n).map(|i| base[(i * step + offset) % n]).collect();
+                    assert_eq!(edges_by_coordinates(&pts), reference);
+                    let reversed: Vec<[f64; 2]> = pts.iter().rev().copied().collect();
+                    assert_eq!(edges_by_coordinates(&reversed), reference);
+                }
+            }
+        }
+    }
+
+    fn gcd(a: usize, b: usize) -> usize {
+        if b == 0 {
+            a
+        } else {
+            gcd(b, a % b)
         }
     }
 
@@ -275,14 +306,158 @@ mod tests {
         let a = [0.1 + 1e-9, 0.2 + 3e-9];
         let b = [0.1 - 3e-9, 0.2 + 1e-9];
         let exact = |x: [f64; 2]| {
-            let (dx, dy) = (rational(x[0]) - rational(p[0]), rational(x[1]) - rational(p[1]));
+            let (dx, dy) = (
+                rational(x[0]) - rational(p[0]),
+                rational(x[1]) - rational(p[1]),
+            );
             &dx * &dx + &dy * &dy
         };
         assert_eq!(distance_order(p, a, b), exact(a).cmp(&exact(b)));
         assert_eq!(distance_order(p, a, a), Ordering::Equal);
         // A right angle exactly: not a half neighbour.
-        assert_eq!(dot_sign([0.0, 0.0], [0.0, 0.3], [0.7, 0.0]), Ordering::Equal);
-        assert_eq!(dot_sign([0.1, 0.1], [0.1, 0.4], [0.7, 0.1]), Ordering::Equal);
+        assert_eq!(
+            dot_sign([0.0, 0.0], [0.0, 0.3], [0.7, 0.0]),
+            Ordering::Equal
+        );
+        assert_eq!(
+            dot_sign([0.1, 0.1], [0.1, 0.4], [0.7, 0.1]),
+            Ordering::Equal
+        );
+    }
+
+    /// Brute-force exact reference: the strict Delaunay graph from the interval of circle
+    /// centres on each pair's bisector that keeps all other points strictly outside, then
+    /// nearest and half neighbours by exact squared distances, ties by coordinates.
+    fn reference_nn_crust(points: &[[f64; 2]]) -> Vec<[u32; 2]> {
+        type Q = BigRational;
+        let mut ids: Vec<usize> = Vec::new();
+        for i in 0..points.len() {
+            if !ids.iter().any(|&j| points[j] == points[i]) {
+                ids.push(i);
+            }
+        }
+        let s: Vec<[Q; 2]> = ids
+            .iter()
+            .map(|&i| [rational(points[i][0]), rational(points[i][1])])
+            .collect();
+        let d2 = |a: &[Q; 2], b: &[Q; 2]| {
+            let (dx, dy) = (&a[0] - &b[0], &a[1] - &b[1]);
+            &dx * &dx + &dy * &dy
+        };
+        let two = Q::from_integer(2.into());
+        let delaunay = |i: usize, j: usize| {
+            let (p, q) = (&s[i], &s[j]);
+            let m = [(&p[0] + &q[0]) / &two, (&p[1] + &q[1]) / &two];
+            let n = [&p[1] - &q[1], &q[0] - &p[0]];
+            let mp = d2(&m, p);
+            let (mut lo, mut hi): (Option<Q>, Option<Q>) = (None, None);
+            for (k, x) in s.iter().enumerate() {
+                if k == i || k == j {
+                    continue;
+                }
+                let side = &n[0] * (&x[0] - &m[0]) + &n[1] * (&x[1] - &m[1]);
+                let c = d2(&m, x) - &mp;
+                if side == Q::from_integer(0.into()) {
+                    if c < Q::from_integer(0.into()) {
+                        return false;
+                    }
+                    continue;
+                }
+                let t = c / (&side * &two);
+                if side > Q::from_integer(0.into()) {
+                    hi = Some(hi.map_or(t.clone(), |h| if t < h { t.clone() } else { h }));
+                } else {
+                    lo = Some(lo.map_or(t.clone(), |l| if t > l { t.clone() } else { l }));
+                }
+            }
+            match (lo, hi) {
+                (Some(l), Some(h)) => l < h,
+                _ => true,
+            }
+        };
+        let mut edges = Vec::new();
+        for p in 0..s.len() {
+            let nbrs: Vec<usize> = (0..s.len()).filter(|&a| a != p && delaunay(p, a)).collect();
+            let better = |a: usize, b: usize| {
+                let (da, db) = (d2(&s[p], &s[a]), d2(&s[p], &s[b]));
+                da < db
+                    || (da == db
+                        && (points[ids[a]][0], points[ids[a]][1])
+                            < (points[ids[b]][0], points[ids[b]][1]))
+            };
+            let pick = |cands: &mut dyn Iterator<Item = usize>| {
+                cands.fold(None, |best: Option<usize>, a| match best {
+                    Some(b) if !better(a, b) => Some(b),
+                    _ => Some(a),
+                })
+            };
+            let Some(q) = pick(&mut nbrs.iter().copied()) else {
+                continue;
+            };
+            let zero = Q::from_integer(0.into());
+            let half = pick(&mut nbrs.iter().copied().filter(|&a| {
+                let dot = (&s[a][0] - &s[p][0]) * (&s[q][0] - &s[p][0])
+                    + (&s[a][1] - &s[p][1]) * (&s[q][1] - &s[p][1]);
+                dot < zero
+            }));
+            for o in std::iter::once(q).chain(half) {
+                let (a, b) = (ids[p] as u32, ids[o] as u32);
+                edges.push([a.min(b), a.max(b)]);
+            }
+        }
+        edges.sort_unstable();
+        edges.dedup();
+        edges
+    }
+
+    #[test]
+    fn matches_brute_force_reference() {
+        let mut state = 12345u64;
+        let mut next = move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for case in 0..200 {
+            let n = 3 + case % 14;
+            let pts: Vec<[f64; 2]> = (0..n)
+                .map(|_| match case % 3 {
+                    0 => [(next() * 5.0).floor() * 0.1, (next() * 5.0).floor() * 0.1],
+                    1 => [next() * 3.0, next() - 0.5],
+                    _ => {
+                        let t = next() * std::f64::consts::TAU;
+                        let r = 1.0 + 0.1 * next();
+                        [r * t.cos(), r * t.sin()]
+                    }
+                })
+                .collect();
+            let tri = triangulate(&pts).unwrap();
+            if tri.is_degenerate() {
+                continue;
+            }
+            assert_eq!(
+                nn_crust_edges(&tri),
+                reference_nn_crust(&pts),
+                "case {case}: {pts:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn exact_under_extreme_scaling() {
+        let base: Vec<[f64; 2]> = (0..40)
+            .map(|i| {
+                let t = i as f64 * 0.157 + 0.01 * ((i * 7) % 3) as f64;
+                [(1.0 + 0.2 * (2.0 * t).sin()) * t.cos(), t.sin() + 2.0]
+            })
+            .collect();
+        let expected = nn_crust_of(&base);
+        for k in [-130, 190] {
+            let f = 2f64.powi(k);
+            let scaled: Vec<[f64; 2]> = base.iter().map(|p| [p[0] * f, p[1] * f]).collect();
+            assert_eq!(nn_crust_of(&scaled), expected, "scale 2^{k}");
+        }
     }
 
     #[test]

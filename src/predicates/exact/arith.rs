@@ -1,8 +1,10 @@
-//! The two number types every derived predicate is evaluated in.
+//! The number types of the slower stages (the fast one, `filter::Sf`, lives beside its
+//! proof).
 //!
-//! Each predicate's polynomial is written once, generic over [`Arith`], and evaluated first
-//! with [`Bounded`] (an `f64` value with a proven bound on its distance from the exact value)
-//! and, only when that bound cannot decide the sign, again exactly: every finite `f64` is
+//! Each predicate's polynomial is written once, generic over [`Arith`]. When the
+//! semi-static filter cannot decide, it is evaluated with [`Bounded`] (an `f64` value with a
+//! proven bound on its distance from the exact value) and, only when that bound cannot
+//! decide the sign either, again exactly: every finite `f64` is
 //! `m·2^e` with an integer `m`, so the inputs of one call, taken in units of the smallest
 //! `2^e` among them ([`lift_exact`]), are integers, and the (homogeneous) polynomials are
 //! evaluated in [`BigInt`] with no rational normalization at all.

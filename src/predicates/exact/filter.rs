@@ -55,7 +55,7 @@
 //!
 //! **Theorem.** Let `m̂ = max |δ̂| ≤ 2^H` (`H ≥ 0`), `K` the depth, `D` the degree and `W` the
 //! weight of the root. If `c1 = (K + 1)·u` and `c0 ≥ η·(1 + 3(K + 1)·W·2^(H(D − 2)))`, then
-//! `|v̂ − v| < fl(fl(c1·Â) + c0)`, so `|v̂| > fl(fl(c1·Â) + c0)` implies `sign v = sign v̂`.
+//! `|v̂ − v| ≤ fl(fl(c1·Â) + c0)`, so `|v̂| > fl(fl(c1·Â) + c0)` implies `sign v = sign v̂`.
 //! *Proof.* All leaves (exact and computed) are at most `m* = 2^H/(1 − u)`. By Lemmas 1–2
 //! and the bound on `Â`, `|v̂ − v| ≤ α·Â + 2γ_K·λ·W·m*^(D−2)/(1 − u)` with
 //! `α = γ_K (1 − u)^-D / (1 − γ_(K−1)) ≤ K·u·(1 + (2K + D + 1)·u)`. The threshold is
@@ -91,7 +91,10 @@
 //! by the caller; only then do they go to the slower stages.
 
 use super::arith::{Arith, U};
-use super::poly::{circ, dot_terms, dot_terms_at_vertex, orient_from_circ, radius_terms, Circ};
+use super::poly::{
+    circ, dot_terms, dot_terms_at_vertex, orient_from_circ, orient_from_offset, radius_terms,
+    scaled_offset, Circ,
+};
 use super::Sign;
 
 /// A value and its permanent, evaluated side by side in `f64`.
@@ -286,26 +289,41 @@ pub(super) struct CircFilter {
     spread: f64,
     /// Whether the sign of `d` is certified.
     d_sure: bool,
+    /// The last line origin `a` (NaN initially), `d·(O − a)` and the largest leaf so far.
+    a: [f64; 2],
+    n: [Sf; 2],
+    spread_a: f64,
 }
 
 impl CircFilter {
     #[inline]
     pub(super) fn new(t: &[[f64; 2]; 3]) -> CircFilter {
         let c = circ(&lift(t));
+        let zero = Sf { v: 0.0, a: 0.0 };
         CircFilter {
             t0: t[0],
             d_sure: D.sure(c.d),
             c,
             spread: spread3(t),
+            a: [f64::NAN; 2],
+            n: [zero; 2],
+            spread_a: f64::NAN,
         }
     }
 
-    /// The sign of the orientation of `(a, b, O)`, if certified.
+    /// The sign of the orientation of `(a, b, O)`, if certified. Consecutive calls with the
+    /// same `a` (the fan of a hull search) share `d·(O − a)`: the same operations as
+    /// [`orient_from_circ`], so the same bound.
     #[inline]
-    pub(super) fn orient(&self, a: [f64; 2], b: [f64; 2]) -> Option<Sign> {
-        let spread = max(max(self.spread, spread2(self.t0, a)), spread2(b, a));
-        let [t0, a2, b2] = [self.t0, a, b].map(|p| p.map(Sf::input));
-        let v = orient_from_circ(&self.c, &t0, &a2, &b2);
+    pub(super) fn orient(&mut self, a: [f64; 2], b: [f64; 2]) -> Option<Sign> {
+        let a2 = a.map(Sf::input);
+        if (a[0] != self.a[0]) | (a[1] != self.a[1]) {
+            self.a = a;
+            self.n = scaled_offset(&self.c, &self.t0.map(Sf::input), &a2);
+            self.spread_a = max(self.spread, spread2(self.t0, a));
+        }
+        let spread = max(self.spread_a, spread2(b, a));
+        let v = orient_from_offset(&self.n, &a2, &b.map(Sf::input));
         let sure = self.d_sure & (spread <= LEAF_MAX) & ORIENT.sure(v);
         sure.then(|| sign_of((v.v < 0.0) ^ (self.c.d.v < 0.0)))
     }
@@ -314,14 +332,23 @@ impl CircFilter {
 /// The sign of the orientation of `(a, b, O(tri))`, if certified.
 #[inline]
 pub(super) fn orient(a: [f64; 2], b: [f64; 2], tri: &[[f64; 2]; 3]) -> Option<Sign> {
-    CircFilter::new(tri).orient(a, b)
+    let spread = max(max(spread3(tri), spread2(tri[0], a)), spread2(b, a));
+    let c = circ(&lift(tri));
+    let v = orient_from_circ(
+        &c,
+        &tri[0].map(Sf::input),
+        &a.map(Sf::input),
+        &b.map(Sf::input),
+    );
+    let sure = (spread <= LEAF_MAX) & D.sure(c.d) & ORIENT.sure(v);
+    sure.then(|| sign_of((v.v < 0.0) ^ (c.d.v < 0.0)))
 }
 
 /// The sign of `(O_o − p)·(O_s − p)`, if certified; `s` and `o` have `p` first when it is a
 /// vertex of theirs.
 #[inline]
 pub(super) fn dot(p: [f64; 2], s: &[[f64; 2]; 3], o: &[[f64; 2]; 3]) -> Option<Sign> {
-    let at_vertex = s[0] == p && o[0] == p;
+    let at_vertex = (s[0][0] == p[0]) & (s[0][1] == p[1]) & (o[0][0] == p[0]) & (o[0][1] == p[1]);
     let spread = max(spread3(s), spread3(o));
     let [xs, xo, v] = if at_vertex {
         let [xs, xo, v] = dot_terms_at_vertex(&lift(s), &lift(o));
@@ -377,13 +404,14 @@ const EXPONENT_MASK: u64 = 0x7ff0_0000_0000_0000;
 /// adds `u·|û/d̂| + η`, the final sum `u·|ô|/(1 − u)`. With `1/|d̂| ≤ s/(1 − u)`,
 /// `ρ ≤ (fl(E_d·s) + η)/(1 − u)²` and `|û/d̂| ≤ (|q̂| + η)/(1 − u)`, requiring
 /// `ρ̂ = fl(E_d·s) ≤ 2^-20` gives, per coordinate,
-/// `|ô − O| ≤ (1 + 2^-14)·B + 4η` with `B = u·N + (3u + ρ̂)·Q + E·s` computed in `f64`
-/// (`Q`, `E`: the larger of the two `|q̂|` and `E_u`): the three roundings of `B`, the
-/// `(1 − u)` and `(1 − ρ)` factors and the `η` terms multiplying `Q` fit in the `2^-14` (an
-/// `η·Q` is below `2^-1000·u·Q`), the other `η` terms and an underflow of `B`'s products in
-/// the `4η`. Accepting `B ≤ fl(TAU·P)`, where `P ≤ N < 2P` is a power of two and
-/// `256·ulp(N) = 2^-44·P`, with `N ≥ 2^-900` finite, then gives
-/// `|ô − O| ≤ 2^-44·P·(1 − 2^-13) + 4η < 256·ulp(N)`.
+/// `|ô − O| ≤ uN/(1 − u) + η + |û/d̂|·(u + ρ/(1 − ρ)) + E_u/(|d̂|(1 − ρ))
+/// ≤ (1 + 2^-14)·B + 8η` with `B = u·N + (3u + ρ̂)·Q + E·s` computed in `f64` (`Q`, `E`: the
+/// larger of the two `|q̂|` and `E_u`): the roundings of `B` (`u·N` is exact), the `(1 − u)`
+/// and `(1 − ρ)` factors fit in the `2^-14`, the `η` terms multiplying `Q` in the spare
+/// `2u·Q` (an `η·Q` is below `2^-1000·u·Q`), the other `η` terms and underflows of `B`'s
+/// products in the `8η`. Accepting `B ≤ fl(TAU·P)`, where `P ≤ N < 2P` is a power of two
+/// (so `TAU·P` is exact and `256·ulp(N) = 2^-44·P`), with `N ≥ 2^-900` finite, then gives
+/// `|ô − O| ≤ 2^-44·P·(1 − 2^-12)(1 + 2^-14) + 8η < 2^-44·P = 256·ulp(N)`.
 #[inline]
 pub(super) fn circumcenter(t: &[[f64; 2]; 3]) -> Option<[f64; 2]> {
     let spread = spread3(t);

@@ -297,7 +297,10 @@ fn scale<const N: usize>(points: [[f64; 2]; N], k: i32) -> Option<[[f64; 2]; N]>
 /// the scaled polynomials is then below 4), and `k`; `None` if that difference is already
 /// in `[2^lo, 2^(hi − 1))` (rescaling would not help), zero or not finite, or if the
 /// scaling is not exact.
-fn rescale<const N: usize>(points: [[f64; 2]; N], (lo, hi): (i32, i32)) -> Option<([[f64; 2]; N], i32)> {
+fn rescale<const N: usize>(
+    points: [[f64; 2]; N],
+    (lo, hi): (i32, i32),
+) -> Option<([[f64; 2]; N], i32)> {
     let p0 = points[0];
     let spread = points.iter().fold(0.0f64, |m, p| {
         m.max((p[0] - p0[0]).abs()).max((p[1] - p0[1]).abs())
@@ -361,13 +364,19 @@ fn signs<const K: usize>(
     (out, Stage::Exact)
 }
 
+/// `p == q`, without the slice comparison machinery.
+#[inline(always)]
+fn same(p: [f64; 2], q: [f64; 2]) -> bool {
+    (p[0] == q[0]) & (p[1] == q[1])
+}
+
 /// Puts `p` first if it is a vertex of `t` (a cyclic shift keeps the orientation): the
 /// translation `t0 − p` is then an exact zero and the filters sharper.
 #[inline(always)]
 fn rotate_to(t: [[f64; 2]; 3], p: [f64; 2]) -> [[f64; 2]; 3] {
-    if t[1] == p {
+    if same(t[1], p) {
         [t[1], t[2], t[0]]
-    } else if t[2] == p {
+    } else if same(t[2], p) {
         [t[2], t[0], t[1]]
     } else {
         t
@@ -689,7 +698,7 @@ pub fn compare_circumradius(t1: [[f64; 2]; 3], t2: [[f64; 2]; 3]) -> Ordering {
 pub fn circumcenter_in_convex_hull(hull: &[[f64; 2]], tri: [[f64; 2]; 3]) -> HullPosition {
     HULL.call();
     // The circumcenter's filter values are computed once for all orientation tests.
-    let fast = filter::CircFilter::new(&tri);
+    let mut fast = filter::CircFilter::new(&tri);
     let mut slowest: Option<Stage> = None;
     let position = hull_position(hull, |a, b| {
         if let Some(s) = fast.orient(a, b) {

@@ -63,17 +63,22 @@ pub(super) fn circ<T: Arith>(t: &[Pt<T>; 3]) -> Circ<T> {
 
 /// `d·(O − p)` for the circumcenter `O = t0 + u/d` described by `c`.
 #[inline(always)]
-fn scaled_offset<T: Arith>(c: &Circ<T>, t0: &Pt<T>, p: &Pt<T>) -> Pt<T> {
+pub(super) fn scaled_offset<T: Arith>(c: &Circ<T>, t0: &Pt<T>, p: &Pt<T>) -> Pt<T> {
     let [dx, dy] = diff(t0, p);
     [c.d.mul(&dx).add(&c.ux), c.d.mul(&dy).add(&c.uy)]
+}
+
+/// `(b − a) × n` for `n = d·(O − a)` from [`scaled_offset`].
+#[inline(always)]
+pub(super) fn orient_from_offset<T: Arith>(n: &Pt<T>, a: &Pt<T>, b: &Pt<T>) -> T {
+    cross(&diff(b, a), n)
 }
 
 /// `(b − a) × d·(O − a)` (degree 4) for the circumcenter `c` of a triangle with first vertex
 /// `t0`: times the sign of `d`, the orientation of `(a, b, O)`.
 #[inline(always)]
 pub(super) fn orient_from_circ<T: Arith>(c: &Circ<T>, t0: &Pt<T>, a: &Pt<T>, b: &Pt<T>) -> T {
-    let n = scaled_offset(c, t0, a);
-    cross(&diff(b, a), &n)
+    orient_from_offset(&scaled_offset(c, t0, a), a, b)
 }
 
 /// `[d, (b − a) × d·(O − a)]` (degrees 2 and 4): the orientation of `(a, b, O)` is the sign

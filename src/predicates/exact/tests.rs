@@ -496,8 +496,12 @@ fn circumcenter_stages_are_accurate() {
     let cases = 1000;
     for i in 0..cases {
         let offset = if i % 2 == 0 { 0.0 } else { 1000.0 };
-        let t: [[f64; 2]; 3] =
-            std::array::from_fn(|_| [rng.unit() * 200.0 - 100.0 + offset, rng.unit() * 200.0 - 100.0]);
+        let t: [[f64; 2]; 3] = std::array::from_fn(|_| {
+            [
+                rng.unit() * 200.0 - 100.0 + offset,
+                rng.unit() * 200.0 - 100.0,
+            ]
+        });
         let bounded = fast_circumcenter(&circ(&lift_filter(t)), t[0], 0);
         let exact = circumcenter_exact(t[0], t[1], t[2]).unwrap();
         assert_eq!(circumcenter_rounded(t[0], t[1], t[2]), Some(exact.to_f64()));
@@ -580,7 +584,10 @@ impl Arith for Meta {
     }
 
     fn leaf_sub(&self, other: &Self) -> Self {
-        assert!(self.input && other.input, "a leaf is not a difference of inputs");
+        assert!(
+            self.input && other.input,
+            "a leaf is not a difference of inputs"
+        );
         Meta {
             input: false,
             depth: 1,
@@ -628,8 +635,18 @@ fn filter_constants_match_the_expressions() {
     check_term("dot d_o", d_o, &filter::D, filter::LEAF_MAX);
     check_term("dot", v, &filter::DOT, filter::LEAF_MAX);
     let [xs, xo, v] = dot_terms_at_vertex(&t, &t);
-    check_term("dot orientation s", xs, &filter::ORIENTATION, filter::LEAF_MAX);
-    check_term("dot orientation o", xo, &filter::ORIENTATION, filter::LEAF_MAX);
+    check_term(
+        "dot orientation s",
+        xs,
+        &filter::ORIENTATION,
+        filter::LEAF_MAX,
+    );
+    check_term(
+        "dot orientation o",
+        xo,
+        &filter::ORIENTATION,
+        filter::LEAF_MAX,
+    );
     check_term("dot at vertex", v, &filter::DOT_AT_VERTEX, filter::LEAF_MAX);
     let [v] = radius_terms(&t, &t);
     check_term("radius", v, &filter::RADIUS, filter::LEAF_MAX_RADIUS);
@@ -759,7 +776,11 @@ fn adversarial_points(seed: u64) -> [[f64; 2]; 8] {
         let x = f[i][j];
         if x != 0.0 {
             let bits = x.to_bits();
-            f[i][j] = f64::from_bits(if rng.below(2) == 0 { bits + 1 } else { bits - 1 });
+            f[i][j] = f64::from_bits(if rng.below(2) == 0 {
+                bits + 1
+            } else {
+                bits - 1
+            });
         }
     }
     // Keep the shared vertex shared in most cases.
@@ -820,17 +841,15 @@ fn check_stage1(pts: [[f64; 2]; 8], tally: &mut Tally) -> Result<(), TestCaseErr
     let rt = |t: [[f64; 2]; 3]| t.map(|x| x.map(rat));
     let sp = |x: [f64; 2]| x.map(Sf::input);
     let rp = |x: [f64; 2]| x.map(rat);
-    let mut note = |decided: Option<Sign>, exact: Sign, x: Sf, v: &BigRational| {
-        match decided {
-            Some(_) => {
-                tally.decided += 1;
-                let tiny = rat(x.a) * rat(pow2(-40));
-                if exact == Sign::Zero || v.abs() < tiny {
-                    tally.hard += 1;
-                }
+    let mut note = |decided: Option<Sign>, exact: Sign, x: Sf, v: &BigRational| match decided {
+        Some(_) => {
+            tally.decided += 1;
+            let tiny = rat(x.a) * rat(pow2(-40));
+            if exact == Sign::Zero || v.abs() < tiny {
+                tally.hard += 1;
             }
-            None => tally.undecided += 1,
         }
+        None => tally.undecided += 1,
     };
     let orientation = |x: &BigRational| exact_sign(x);
 
@@ -853,8 +872,12 @@ fn check_stage1(pts: [[f64; 2]; 8], tally: &mut Tally) -> Result<(), TestCaseErr
         prop_assert_eq!(g, exact, "orient {:?}", pts);
     }
     note(got, exact, vf, &ve);
-    // The hull test's cached form gives the same answers.
-    prop_assert_eq!(filter::CircFilter::new(&s).orient(p, q), got);
+    // The hull test's cached form gives the same answers, also after another line origin.
+    let mut cached = filter::CircFilter::new(&s);
+    prop_assert_eq!(cached.orient(p, q), got);
+    prop_assert_eq!(cached.orient(p, q), got);
+    let _ = cached.orient(q, p);
+    prop_assert_eq!(cached.orient(p, q), got);
 
     // dot, general form (p need not be a vertex).
     let leaves = largest_difference(&[p, s0, s1, s2, o0, o1, o2]);
@@ -863,7 +886,9 @@ fn check_stage1(pts: [[f64; 2]; 8], tally: &mut Tally) -> Result<(), TestCaseErr
     prop_assert!(bound_holds(dsf, &dse, &filter::D, leaves));
     prop_assert!(bound_holds(dof, &doe, &filter::D, leaves));
     prop_assert!(bound_holds(vf, &ve, &filter::DOT, leaves));
-    let exact = exact_sign(&ve).times(orientation(&dse)).times(orientation(&doe));
+    let exact = exact_sign(&ve)
+        .times(orientation(&dse))
+        .times(orientation(&doe));
     let (sr, or) = (rotate_to(s, p), rotate_to(o, p));
     let got = filter::dot(p, &sr, &or);
     if let Some(g) = got {
@@ -917,7 +942,7 @@ fn check_stage1_scaled(pts: [[f64; 2]; 8], tally: &mut Tally) -> Result<(), Test
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 600, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
 
     /// The semi-static filter's bound holds, and it never decides a sign that exact
     /// evaluation contradicts, on near-cocircular, near-collinear, perpendicular and
@@ -954,7 +979,11 @@ fn one_ulp_off_degenerate_configurations() {
     for k in [-142, -120, -60, -1, 0, 1, 40, 100, 150] {
         for offset in [0.0, 1048576.0, 1099511627776.0] {
             // A right triangle: the circumcenter is the hypotenuse's midpoint (5, 3).
-            let tri = [[3.0 + offset, 1.0], [7.0 + offset, 5.0], [3.0 + offset, 5.0]];
+            let tri = [
+                [3.0 + offset, 1.0],
+                [7.0 + offset, 5.0],
+                [3.0 + offset, 5.0],
+            ];
             let p = [5.0 + offset, 3.0];
             let s = pow2(k);
             let f = |x: [f64; 2]| [x[0] * s, x[1] * s];
@@ -969,7 +998,10 @@ fn one_ulp_off_degenerate_configurations() {
                     assert_eq!(got, want, "k = {k}, offset = {offset}");
                     decided += 1;
                 }
-                assert_eq!(orient2d_circumcenter(tri[0], tri[1], t), orientation_of(want));
+                assert_eq!(
+                    orient2d_circumcenter(tri[0], tri[1], t),
+                    orientation_of(want)
+                );
                 // p is (nearly) the circumcenter: the dot product of the two radius
                 // vectors from a vertex, to O(t) and to O(tri) = p, is (nearly) |p − t0|².
                 let got = dot_sign_circumcenters(t[0], t, tri);

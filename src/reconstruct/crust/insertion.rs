@@ -19,7 +19,7 @@ use crate::predicates::{CirclePosition, Orientation};
 use super::interval::MixedPoints;
 
 /// The vertex at infinity of ghost triangles.
-pub(super) const GHOST: u32 = u32::MAX;
+const GHOST: u32 = u32::MAX;
 /// No triangle.
 const NONE: u32 = u32::MAX;
 
@@ -304,13 +304,5 @@ impl<'p, 'a> Dt<'p, 'a> {
                 }
             }
         }
-    }
-
-    /// Number of live solid triangles.
-    #[cfg(test)]
-    pub(super) fn solid_count(&self) -> usize {
-        (0..self.v.len())
-            .filter(|&t| self.alive[t] && self.v[t][2] != GHOST)
-            .count()
     }
 }

@@ -18,9 +18,14 @@
 //! only where those residuals are proven exact (no overflow, no underflow). This certifies the
 //! exact zeros of symmetric inputs (grids, regular polygons) without rational arithmetic.
 //!
-//! When the interval cannot decide, the same expression is evaluated in [`BigRational`] on
-//! the exact points: every finite `f64` is a dyadic rational, and a circumcenter of three
-//! `f64` points is the rational [`circumcenter_exact`].
+//! Round-to-nearest returns one of the two floats that bracket the exact result, so the exact
+//! result lies between the neighbours of the returned float; that is the whole proof.
+//!
+//! When the interval cannot decide, the predicate is evaluated exactly: every finite `f64` is
+//! a dyadic rational and a circumcenter of three `f64` points is the rational
+//! [`circumcenter_exact`]; [`MixedPoints`] turns them into homogeneous integer coordinates
+//! once and evaluates integer determinants (the NN-crust's degree-2 tests use
+//! [`BigRational`] directly).
 
 use std::cell::OnceCell;
 use std::cmp::Ordering;
@@ -439,8 +444,14 @@ fn orient_expr<T: Clone>(
     sub: impl Fn(T, T) -> T,
     mul: impl Fn(T, T) -> T,
 ) -> T {
-    let (bx, by) = (sub(b[0].clone(), a[0].clone()), sub(b[1].clone(), a[1].clone()));
-    let (cx, cy) = (sub(c[0].clone(), a[0].clone()), sub(c[1].clone(), a[1].clone()));
+    let (bx, by) = (
+        sub(b[0].clone(), a[0].clone()),
+        sub(b[1].clone(), a[1].clone()),
+    );
+    let (cx, cy) = (
+        sub(c[0].clone(), a[0].clone()),
+        sub(c[1].clone(), a[1].clone()),
+    );
     sub(mul(bx, cy), mul(by, cx))
 }
 
@@ -455,7 +466,12 @@ fn incircle_expr<T: Clone>(
     sub: impl Fn(T, T) -> T,
     mul: impl Fn(T, T) -> T,
 ) -> T {
-    let rel = |p: &[T; 2]| [sub(p[0].clone(), d[0].clone()), sub(p[1].clone(), d[1].clone())];
+    let rel = |p: &[T; 2]| {
+        [
+            sub(p[0].clone(), d[0].clone()),
+            sub(p[1].clone(), d[1].clone()),
+        ]
+    };
     let [ax, ay] = rel(a);
     let [bx, by] = rel(b);
     let [cx, cy] = rel(c);
@@ -506,7 +522,10 @@ mod tests {
     #[test]
     fn grid_circumcenters_are_exact() {
         let t = [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]];
-        assert_eq!(circumcenter_interval(t).unwrap(), [Iv::point(1.0), Iv::point(1.0)]);
+        assert_eq!(
+            circumcenter_interval(t).unwrap(),
+            [Iv::point(1.0), Iv::point(1.0)]
+        );
         let samples = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, -1.0]];
         // Point 5: the centre (1, 1) of the square.
         let mp = MixedPoints::new(&samples, vec![[samples[0], samples[1], samples[3]]]);
@@ -536,37 +555,28 @@ mod tests {
         // Both answers agree with a direct rational evaluation.
         for (a, b, c, d) in [(0, 4, 1, 5), (0, 4, 5, 3), (4, 1, 5, 2), (0, 1, 5, 2)] {
             let [pa, pb, pc, pd] = [a, b, c, d].map(|i| mp.exact_rational(i));
-            let value = incircle_expr(
-                &pa,
-                &pb,
-                &pc,
-                &pd,
-                |x, y| x + y,
-                |x, y| x - y,
-                |x, y| x * y,
-            );
+            let value = incircle_expr(&pa, &pb, &pc, &pd, |x, y| x + y, |x, y| x - y, |x, y| x * y);
             let orientation = orient_expr(&pa, &pb, &pc, |x, y| x - y, |x, y| x * y);
             let expected = match rational_sign(&(value * orientation.signum())) {
                 Ordering::Greater => CirclePosition::Inside,
                 Ordering::Less => CirclePosition::Outside,
                 Ordering::Equal => CirclePosition::On,
             };
+            // `incircle` wants a counterclockwise triangle.
             let got = match mp.orient(a, b, c) {
-                Orientation::Clockwise => match mp.incircle(a, c, b, d) {
-                    CirclePosition::Inside => CirclePosition::Inside,
-                    other => other,
-                },
+                Orientation::Clockwise => mp.incircle(a, c, b, d),
                 _ => mp.incircle(a, b, c, d),
             };
             assert_eq!(got, expected, "{a} {b} {c} {d}");
         }
         for (a, b, c) in [(0, 2, 5), (1, 3, 5), (4, 5, 0), (4, 5, 2)] {
             let [pa, pb, pc] = [a, b, c].map(|i| mp.exact_rational(i));
-            let expected = match rational_sign(&orient_expr(&pa, &pb, &pc, |x, y| x - y, |x, y| x * y)) {
-                Ordering::Greater => Orientation::CounterClockwise,
-                Ordering::Less => Orientation::Clockwise,
-                Ordering::Equal => Orientation::Collinear,
-            };
+            let expected =
+                match rational_sign(&orient_expr(&pa, &pb, &pc, |x, y| x - y, |x, y| x * y)) {
+                    Ordering::Greater => Orientation::CounterClockwise,
+                    Ordering::Less => Orientation::Clockwise,
+                    Ordering::Equal => Orientation::Collinear,
+                };
             assert_eq!(mp.orient(a, b, c), expected, "{a} {b} {c}");
         }
     }

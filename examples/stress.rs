@@ -1,0 +1,159 @@
+//! Resource stress driver: one large or pathological input through `triangulate`, the Voronoi
+//! dual and `reconstruct`, with the time of each stage and the peak resident memory.
+//!
+//! ```text
+//! cargo build --release --example stress
+//! /usr/bin/time -v target/release/examples/stress <set> <n> [stages]
+//! ```
+//!
+//! Point sets (`n` points each, in shuffled order, seed fixed):
+//! * `uniform`: uniform in the unit square;
+//! * `curve`: on a smooth closed star-shaped curve `r = 1 + 0.3 cos 5t`, random parameters;
+//! * `circle`: on the unit circle, random angles (nearly cocircular: exact fallbacks galore);
+//! * `grid`: the integer grid `⌈√n⌉ × ⌈√n⌉` truncated to `n` (every cell cocircular);
+//! * `two-lines`: half on `y = 0`, half on `y = 1`, integer x (every quad cocircular);
+//! * `crossing-lines`: half on `y = x`, half on `y = −x` (two lines through one point);
+//! * `dup3`: `n` copies of three points;
+//! * `collinear`: `n` distinct points on the line `y = 3x + 1`, irregular spacing.
+//!
+//! Stages: a comma-separated subset of `points,triangulate,voronoi,reconstruct` (default: all).
+//! `points` alone only generates the input (the baseline for memory). Each run prints one line
+//! per stage and a final line with the peak resident set size read from `/proc/self/status`
+//! (`VmHWM`, the same figure as `/usr/bin/time -v`'s "Maximum resident set size").
+
+use std::time::Instant;
+
+use wdm_crust::sample::Rng;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let (Some(set), Some(n)) = (
+        args.first(),
+        args.get(1).and_then(|s| s.parse::<usize>().ok()),
+    ) else {
+        eprintln!("usage: stress <uniform|curve|circle|grid|two-lines|crossing-lines|dup3|collinear> <n> [points,triangulate,voronoi,reconstruct]");
+        std::process::exit(2);
+    };
+    let stages = args
+        .get(2)
+        .map_or("points,triangulate,voronoi,reconstruct", String::as_str);
+    let start = Instant::now();
+    let Some(points) = generate(set, n) else {
+        eprintln!("unknown point set {set}");
+        std::process::exit(2);
+    };
+    println!(
+        "{set} n={} generated in {:.2}s",
+        points.len(),
+        start.elapsed().as_secs_f64()
+    );
+    if stages.contains("triangulate") || stages.contains("voronoi") {
+        let t = Instant::now();
+        let tri = wdm_crust::triangulate(&points).expect("valid points");
+        println!(
+            "triangulate: {:.2}s, {} distinct, {} triangles, hull {}",
+            t.elapsed().as_secs_f64(),
+            tri.distinct_point_count(),
+            tri.triangles().len(),
+            tri.hull().len()
+        );
+        if stages.contains("voronoi") {
+            let t = Instant::now();
+            let vor = tri.voronoi();
+            let merged = (0..vor.vertex_count() as u32)
+                .filter(|&v| vor.degree(v) > 3)
+                .count();
+            println!(
+                "voronoi: {:.2}s, {} vertices ({merged} merged), {} finite edges",
+                t.elapsed().as_secs_f64(),
+                vor.vertex_count(),
+                vor.finite_edges().count()
+            );
+        }
+    }
+    if stages.contains("reconstruct") {
+        let t = Instant::now();
+        let rec = wdm_crust::reconstruct(&points).expect("valid points");
+        println!(
+            "reconstruct: {:.2}s, {} edges, {} curves, {} passes, {} untouched, {} medial-axis segments",
+            t.elapsed().as_secs_f64(),
+            rec.edges().len(),
+            rec.curves().len(),
+            rec.passes(),
+            rec.untouched_points().len(),
+            rec.medial_axis().edges.len()
+        );
+    }
+    let peak = peak_rss_kib();
+    println!(
+        "total {:.2}s, peak RSS {} KiB = {:.0} bytes/point",
+        start.elapsed().as_secs_f64(),
+        peak,
+        peak as f64 * 1024.0 / points.len().max(1) as f64
+    );
+}
+
+/// `VmHWM` of this process in KiB, 0 if unavailable.
+fn peak_rss_kib() -> u64 {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("VmHWM:"))
+                .and_then(|l| l.split_whitespace().nth(1))
+                .and_then(|v| v.parse().ok())
+        })
+        .unwrap_or(0)
+}
+
+fn generate(set: &str, n: usize) -> Option<Vec<[f64; 2]>> {
+    let mut rng = Rng::new(0x5eed_0000 + n as u64);
+    let tau = std::f64::consts::TAU;
+    let mut points: Vec<[f64; 2]> = match set {
+        "uniform" => (0..n).map(|_| [rng.f64(), rng.f64()]).collect(),
+        "curve" => (0..n)
+            .map(|_| {
+                let t = rng.range(0.0, tau);
+                let r = 1.0 + 0.3 * (5.0 * t).cos();
+                [r * t.cos(), r * t.sin()]
+            })
+            .collect(),
+        "circle" => (0..n)
+            .map(|_| {
+                let t = rng.range(0.0, tau);
+                [t.cos(), t.sin()]
+            })
+            .collect(),
+        "grid" => {
+            let side = (n as f64).sqrt().ceil() as usize;
+            (0..n)
+                .map(|i| [(i % side) as f64, (i / side) as f64])
+                .collect()
+        }
+        "two-lines" => (0..n)
+            .map(|i| [(i / 2) as f64, (i % 2) as f64])
+            .collect(),
+        "crossing-lines" => (0..n)
+            .map(|i| {
+                let x = (i / 2) as f64 - (n / 4) as f64;
+                [x, if i % 2 == 0 { x } else { -x }]
+            })
+            .collect(),
+        "dup3" => {
+            let three = [[0.0, 0.0], [1.0, 0.0], [0.25, 0.75]];
+            (0..n).map(|i| three[i % 3]).collect()
+        }
+        "collinear" => {
+            let mut x = 0.0;
+            (0..n)
+                .map(|_| {
+                    x += 1.0 + (rng.below(16) as f64);
+                    [x, 3.0 * x + 1.0]
+                })
+                .collect()
+        }
+        _ => return None,
+    };
+    rng.shuffle(&mut points);
+    Some(points)
+}

@@ -16,13 +16,16 @@
 //! * `dup3`: `n` copies of three points;
 //! * `collinear`: `n` distinct points on the line `y = 3x + 1`, irregular spacing.
 //!
-//! Stages: a comma-separated subset of `points,triangulate,voronoi,reconstruct` (default: all).
-//! `points` alone only generates the input (the baseline for memory). Each run prints one line
+//! Stages: a comma-separated subset of `points,triangulate,voronoi,single,reconstruct`
+//! (default: all); `single` is the reconstruction without peeling (one water-flow pass),
+//! `reconstruct` the default one. `points` alone only generates the input (the baseline for
+//! memory). Each run prints one line
 //! per stage and a final line with the peak resident set size read from `/proc/self/status`
 //! (`VmHWM`, the same figure as `/usr/bin/time -v`'s "Maximum resident set size").
 
 use std::time::Instant;
 
+use wdm_crust::reconstruct::{reconstruct_with, Options};
 use wdm_crust::sample::Rng;
 
 fn main() {
@@ -31,12 +34,15 @@ fn main() {
         args.first(),
         args.get(1).and_then(|s| s.parse::<usize>().ok()),
     ) else {
-        eprintln!("usage: stress <uniform|curve|circle|grid|two-lines|crossing-lines|dup3|collinear> <n> [points,triangulate,voronoi,reconstruct]");
+        eprintln!("usage: stress <uniform|curve|circle|grid|two-lines|crossing-lines|dup3|collinear> <n> [points,triangulate,voronoi,single,reconstruct]");
         std::process::exit(2);
     };
-    let stages = args
+    let stages: Vec<&str> = args
         .get(2)
-        .map_or("points,triangulate,voronoi,reconstruct", String::as_str);
+        .map_or("points,triangulate,voronoi,single,reconstruct", String::as_str)
+        .split(',')
+        .collect();
+    let stage = |name: &str| stages.contains(&name);
     let start = Instant::now();
     let Some(points) = generate(set, n) else {
         eprintln!("unknown point set {set}");
@@ -47,7 +53,7 @@ fn main() {
         points.len(),
         start.elapsed().as_secs_f64()
     );
-    if stages.contains("triangulate") || stages.contains("voronoi") {
+    if stage("triangulate") || stage("voronoi") {
         let t = Instant::now();
         let tri = wdm_crust::triangulate(&points).expect("valid points");
         println!(
@@ -57,7 +63,7 @@ fn main() {
             tri.triangles().len(),
             tri.hull().len()
         );
-        if stages.contains("voronoi") {
+        if stage("voronoi") {
             let t = Instant::now();
             let vor = tri.voronoi();
             let merged = (0..vor.vertex_count() as u32)
@@ -71,11 +77,18 @@ fn main() {
             );
         }
     }
-    if stages.contains("reconstruct") {
+    for (name, peeling) in [("single", false), ("reconstruct", true)] {
+        if !stage(name) {
+            continue;
+        }
+        let options = Options {
+            peeling,
+            ..Options::default()
+        };
         let t = Instant::now();
-        let rec = wdm_crust::reconstruct(&points).expect("valid points");
+        let rec = reconstruct_with(&points, &options).expect("valid points");
         println!(
-            "reconstruct: {:.2}s, {} edges, {} curves, {} passes, {} untouched, {} medial-axis segments",
+            "{name}: {:.2}s, {} edges, {} curves, {} passes, {} untouched, {} medial-axis segments",
             t.elapsed().as_secs_f64(),
             rec.edges().len(),
             rec.curves().len(),

@@ -9,6 +9,7 @@
 use std::cmp::Ordering;
 use std::collections::{HashMap, HashSet};
 
+use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use wdm_crust::delaunay::NO_TWIN;
@@ -353,6 +354,123 @@ pub fn circumcenter_close(got: [f64; 2], rounded: [f64; 2]) -> bool {
     }
 }
 
+/// Points as integers: every coordinate is `X · 2^shift` with one common `shift`, so exact
+/// arithmetic needs no fractions (much faster than [`BigRational`], which normalizes by a gcd
+/// after every operation).
+pub struct IntPoints {
+    coords: Vec<[BigInt; 2]>,
+    shift: i32,
+}
+
+/// A homogeneous point `(x, y) / d · 2^shift` with `d > 0`.
+pub struct HPoint {
+    x: BigInt,
+    y: BigInt,
+    d: BigInt,
+}
+
+impl IntPoints {
+    /// All points (finite) on one power-of-two grid.
+    pub fn new(points: &[[f64; 2]]) -> IntPoints {
+        let decompose = |v: f64| -> (i64, i32) {
+            if v == 0.0 {
+                return (0, 0);
+            }
+            let bits = v.to_bits();
+            let exp = ((bits >> 52) & 0x7ff) as i32;
+            let frac = (bits & ((1 << 52) - 1)) as i64;
+            let (m, e) = if exp == 0 {
+                (frac, -1074)
+            } else {
+                (frac | (1 << 52), exp - 1075)
+            };
+            (if v < 0.0 { -m } else { m }, e)
+        };
+        let parts: Vec<[(i64, i32); 2]> = points
+            .iter()
+            .map(|p| [decompose(p[0]), decompose(p[1])])
+            .collect();
+        let shift = parts
+            .iter()
+            .flatten()
+            .filter(|(m, _)| *m != 0)
+            .map(|&(_, e)| e)
+            .min()
+            .unwrap_or(0);
+        let coords = parts
+            .iter()
+            .map(|p| p.map(|(m, e)| BigInt::from(m) << (e - shift) as usize))
+            .collect();
+        IntPoints { coords, shift }
+    }
+
+    fn p(&self, i: u32) -> &[BigInt; 2] {
+        &self.coords[i as usize]
+    }
+
+    /// The circumcenter of points `a, b, c`, `None` if collinear.
+    pub fn circumcenter(&self, [a, b, c]: [u32; 3]) -> Option<HPoint> {
+        let (p0, p1, p2) = (self.p(a), self.p(b), self.p(c));
+        let bx = &p1[0] - &p0[0];
+        let by = &p1[1] - &p0[1];
+        let cx = &p2[0] - &p0[0];
+        let cy = &p2[1] - &p0[1];
+        let mut d: BigInt = (&bx * &cy - &by * &cx) * 2;
+        if d.is_zero() {
+            return None;
+        }
+        let b2 = &bx * &bx + &by * &by;
+        let c2 = &cx * &cx + &cy * &cy;
+        let mut x = &p0[0] * &d + (&cy * &b2 - &by * &c2);
+        let mut y = &p0[1] * &d + (&bx * &c2 - &cx * &b2);
+        if d.is_negative() {
+            d = -d;
+            x = -x;
+            y = -y;
+        }
+        Some(HPoint { x, y, d })
+    }
+
+    /// The exact value of a homogeneous point.
+    pub fn rational(&self, h: &HPoint) -> RPoint {
+        let scale = |v: &BigInt| {
+            if self.shift >= 0 {
+                BigRational::new(v << self.shift as usize, h.d.clone())
+            } else {
+                BigRational::new(v.clone(), &h.d << (-self.shift) as usize)
+            }
+        };
+        [scale(&h.x), scale(&h.y)]
+    }
+
+    /// `|h − p|² · d²` (in grid units).
+    fn dist2(&self, h: &HPoint, p: u32) -> BigInt {
+        let q = self.p(p);
+        let dx = &h.x - &q[0] * &h.d;
+        let dy = &h.y - &q[1] * &h.d;
+        &dx * &dx + &dy * &dy
+    }
+
+    /// The sign of `dir × (p − h)`, `dir` given up to a positive factor.
+    fn side(&self, dir: &[BigInt; 2], h: &HPoint, p: u32) -> Sign {
+        let q = self.p(p);
+        let vx = &q[0] * &h.d - &h.x;
+        let vy = &q[1] * &h.d - &h.y;
+        let c = &dir[0] * &vy - &dir[1] * &vx;
+        if c.is_positive() {
+            Sign::Positive
+        } else if c.is_negative() {
+            Sign::Negative
+        } else {
+            Sign::Zero
+        }
+    }
+}
+
+fn same_hpoint(a: &HPoint, b: &HPoint) -> bool {
+    &a.x * &b.d == &b.x * &a.d && &a.y * &b.d == &b.y * &a.d
+}
+
 /// The Voronoi dual is consistent with its triangulation, both ways, exactly: every vertex is
 /// the common circumcenter of its merged face and equidistant from its sites; adjacent
 /// vertices have different circles; edges, rays and cells agree with each other and with the
@@ -379,21 +497,29 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
     ensure!(vor.collinear_bisectors().is_empty(), "bisectors on a 2D input");
 
     // Centres: the exact circumcenter of every triangle is the one of its vertex.
-    let centres: Vec<RPoint> = (0..vcount as u32)
-        .map(|v| from_exact(&vor.vertex_exact(v)))
-        .collect();
+    let ints = IntPoints::new(pts);
+    let mut centres: Vec<Option<HPoint>> = (0..vcount).map(|_| None).collect();
     let mut triangles_of = vec![0usize; vcount];
     for t in 0..tri.triangles().len() {
         let v = vor.vertex_of_triangle(t) as usize;
         ensure!(v < vcount, "triangle {t} has vertex {v} of {vcount}");
         triangles_of[v] += 1;
-        let c = ref_circumcenter(&tri.triangle_points(t))
+        let c = ints
+            .circumcenter(tri.triangles()[t])
             .ok_or_else(|| format!("triangle {t} is collinear"))?;
-        ensure!(
-            same_point(&c, &centres[v]),
-            "triangle {t}: circumcenter differs from vertex_exact({v})"
-        );
+        match &centres[v] {
+            Some(first) => ensure!(
+                same_hpoint(first, &c),
+                "triangle {t}: another circumcenter than the other triangles of vertex {v}"
+            ),
+            None => centres[v] = Some(c),
+        }
     }
+    let centres: Vec<HPoint> = centres
+        .into_iter()
+        .enumerate()
+        .map(|(v, c)| c.ok_or_else(|| format!("vertex {v} has no triangle")))
+        .collect::<Result<_, _>>()?;
 
     // Vertices: sites, positions, edges.
     let mut seen_halfedge = vec![false; halfedges.len()];
@@ -413,13 +539,10 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
             triangles_of[v as usize]
         );
         incidences += k;
-        let r2 = dist2(c, &rpoint(pts[sites[0] as usize]));
+        let r2 = ints.dist2(c, sites[0]);
         for (i, &s) in sites.iter().enumerate() {
             ensure!((s as usize) < n && first[s as usize] == s as usize, "vertex {v}: bad site {s}");
-            ensure!(
-                dist2(c, &rpoint(pts[s as usize])) == r2,
-                "vertex {v}: site {s} not on the circle"
-            );
+            ensure!(ints.dist2(c, s) == r2, "vertex {v}: site {s} not on the circle");
             let (a, b, d) = (
                 pts[s as usize],
                 pts[sites[(i + 1) % k] as usize],
@@ -430,18 +553,20 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
                 "vertex {v}: sites not strictly convex counterclockwise at {i}"
             );
         }
+        let exact = ints.rational(c);
+        ensure!(
+            same_point(&exact, &from_exact(&vor.vertex_exact(v))),
+            "vertex {v}: vertex_exact is not the circumcenter of its face"
+        );
         let pos = vor.vertex_position(v);
         let rounded = [
-            c[0].to_f64().unwrap_or(f64::NAN),
-            c[1].to_f64().unwrap_or(f64::NAN),
+            exact[0].to_f64().unwrap_or(f64::NAN),
+            exact[1].to_f64().unwrap_or(f64::NAN),
         ];
         ensure!(
             circumcenter_close(pos, rounded),
             "vertex {v}: position {pos:?} far from exact {rounded:?}"
         );
-        let own = ref_circumcenter(&vor.vertex_triangle(v))
-            .ok_or_else(|| format!("vertex {v}: vertex_triangle is collinear"))?;
-        ensure!(same_point(&own, c), "vertex {v}: vertex_triangle has another circle");
         let mut has_ray = false;
         for (i, edge) in vor.vertex_edges(v).enumerate() {
             let e = edge.halfedge as usize;
@@ -463,15 +588,18 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
             // The edge runs along the bisector of its sites, `sites[1]` on its left (the
             // opposite of what the `VoronoiEdge::sites` docs said when this was written).
             let direction = match edge.to {
-                EdgeEnd::Vertex(u) => sub(&centres[u as usize], c),
+                EdgeEnd::Vertex(u) => {
+                    let o = &centres[u as usize];
+                    [&o.x * &c.d - &c.x * &o.d, &o.y * &c.d - &c.y * &o.d]
+                }
                 EdgeEnd::Infinity => {
-                    let (a, b) = (rpoint(pts[s0 as usize]), rpoint(pts[s1 as usize]));
+                    let (a, b) = (ints.p(s0), ints.p(s1));
                     [&b[1] - &a[1], &a[0] - &b[0]]
                 }
             };
-            let side = |s: u32| sign(&cross(&direction, &sub(&rpoint(pts[s as usize]), c)));
             ensure!(
-                side(s1) == Sign::Positive && side(s0) == Sign::Negative,
+                ints.side(&direction, c, s1) == Sign::Positive
+                    && ints.side(&direction, c, s0) == Sign::Negative,
                 "edge {e} from {v}: sites {:?} not right and left of it",
                 edge.sites
             );
@@ -496,7 +624,7 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
                         "edge {e}: the reverse edge does not match"
                     );
                     ensure!(
-                        !same_point(c, &centres[u as usize]),
+                        !same_hpoint(c, &centres[u as usize]),
                         "adjacent vertices {v} and {u} share their circumcenter: not merged"
                     );
                     for s in [s0, s1] {

@@ -16,7 +16,7 @@
 
 use std::cmp::Ordering;
 
-use super::filter::{ccw, inside};
+use super::filter::StaticFilter;
 use super::mesh::{prev, Mesh, GHOST};
 use super::triangulation::{Triangulation, NO_TWIN};
 use super::zorder::{lexicographic, order, Grid};
@@ -60,9 +60,9 @@ pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
             } else {
                 mesh.ring_next(start.ghost)
             };
-            hull = mesh.hull_from(g).iter().map(|&v| ids[v as usize]).collect();
             drop(pts);
-            (triangles, halfedges) = mesh.into_result(&ids, NO_TWIN);
+            let done = mesh.finish(g, &ids, NO_TWIN);
+            (triangles, halfedges, hull) = (done.triangles, done.halfedges, done.hull);
         }
     } else {
         hull = std::mem::take(&mut ids);
@@ -249,10 +249,48 @@ impl DivideConquer<'_> {
 
     /// Merges the triangulations of `lo..mid` and `mid..hi`, separated by `cut`.
     fn merge(&mut self, left: Extremes, right: Extremes, cut: Cut, mid: usize) -> Extremes {
-        let (l_in, r_in) = match cut {
-            Cut::Vertical => (left.max_x, right.min_x),
-            Cut::Horizontal => (left.max_y, right.min_y),
+        let pick_min = |dc: &Self, c: Cut, x: Extreme, y: Extreme| {
+            if dc.less(c, y.v, x.v) {
+                y
+            } else {
+                x
+            }
         };
+        let pick_max = |dc: &Self, c: Cut, x: Extreme, y: Extreme| {
+            if dc.less(c, x.v, y.v) {
+                y
+            } else {
+                x
+            }
+        };
+        let (l_in, r_in, mut e) = match cut {
+            Cut::Vertical => (
+                left.max_x,
+                right.min_x,
+                Extremes {
+                    min_x: left.min_x,
+                    max_x: right.max_x,
+                    min_y: pick_min(self, Cut::Horizontal, left.min_y, right.min_y),
+                    max_y: pick_max(self, Cut::Horizontal, left.max_y, right.max_y),
+                },
+            ),
+            Cut::Horizontal => (
+                left.max_y,
+                right.min_y,
+                Extremes {
+                    min_x: pick_min(self, Cut::Vertical, left.min_x, right.min_x),
+                    max_x: pick_max(self, Cut::Vertical, left.max_x, right.max_x),
+                    min_y: left.min_y,
+                    max_y: right.max_y,
+                },
+            ),
+        };
+        // Every point of the merge lies in the bounding box of the extreme points.
+        let f = StaticFilter::for_box(
+            self.p(e.max_x.v)[0] - self.p(e.min_x.v)[0],
+            self.p(e.max_y.v)[1] - self.p(e.min_y.v)[1],
+        );
+
         // Hull walk to the lower common tangent (in the frame of the cut). `gl = [l, l_cw]` is
         // the ghost of the left hull edge into l, `gr = [r_ccw, r]` that of the right hull edge
         // out of r.
@@ -271,28 +309,30 @@ impl DivideConquer<'_> {
             let [l, l_cw, _] = self.mesh.tri[gl as usize];
             let [r_ccw, r, _] = self.mesh.tri[gr as usize];
             let (pl, pr) = (self.p(l), self.p(r));
-            if ccw(pl, self.p(l_cw), pr) {
+            if f.ccw(pl, self.p(l_cw), pr) {
                 gl = self.mesh.ring_prev(gl);
-            } else if ccw(pl, self.p(r_ccw), pr) {
+            } else if f.ccw(pl, self.p(r_ccw), pr) {
                 gr = self.mesh.ring_next(gr);
             } else {
                 break;
             }
         }
         let opened = 2 * mid as u32 - 2;
-        // Left ghost a = [lc, l] and right ghost b = [r, rc] bound the region still to fill.
+        // Left ghost a = [lc, l] and right ghost b = [r, rc] bound the region still to fill:
+        // lc and rc are the candidates, the first neighbours of l and r above the base l–r.
         let mut a = self.mesh.ring_next(gl);
         let mut b = self.mesh.ring_prev(gr);
         let mut base = self.mesh.open(opened, gl, gr);
         let mut l = self.mesh.tri[gl as usize][0];
         let mut r = self.mesh.tri[gr as usize][1];
         let (mut pl, mut pr) = (self.p(l), self.p(r));
+        let mut lc = self.mesh.tri[a as usize][0];
+        let mut rc = self.mesh.tri[b as usize][1];
+        let (mut plc, mut prc) = (self.p(lc), self.p(rc));
         loop {
-            // Left candidate: the edge l–lc, deleted (flipped into the ghost ring) while the
-            // next neighbour x of l lies inside the circle through l, r, lc.
-            let mut lc = self.mesh.tri[a as usize][0];
-            let mut plc = self.p(lc);
-            let mut l_valid = ccw(plc, pl, pr);
+            // The edge l–lc is deleted (flipped into the ghost ring) while the next neighbour
+            // x of l lies inside the circle through l, r, lc.
+            let mut l_valid = f.ccw(plc, pl, pr);
             if l_valid {
                 let mut flipped = false;
                 loop {
@@ -301,7 +341,7 @@ impl DivideConquer<'_> {
                         break;
                     }
                     let px = self.p(x);
-                    if !inside(pl, pr, plc, px) {
+                    if !f.inside(pl, pr, plc, px) {
                         break;
                     }
                     lc = self.mesh.flip_left(a);
@@ -309,12 +349,10 @@ impl DivideConquer<'_> {
                     flipped = true;
                 }
                 if flipped {
-                    l_valid = ccw(plc, pl, pr);
+                    l_valid = f.ccw(plc, pl, pr);
                 }
             }
-            let mut rc = self.mesh.tri[b as usize][1];
-            let mut prc = self.p(rc);
-            let mut r_valid = ccw(prc, pl, pr);
+            let mut r_valid = f.ccw(prc, pl, pr);
             if r_valid {
                 let mut flipped = false;
                 loop {
@@ -323,7 +361,7 @@ impl DivideConquer<'_> {
                         break;
                     }
                     let pz = self.p(z);
-                    if !inside(pl, pr, prc, pz) {
+                    if !f.inside(pl, pr, prc, pz) {
                         break;
                     }
                     rc = self.mesh.flip_right(b);
@@ -331,51 +369,27 @@ impl DivideConquer<'_> {
                     flipped = true;
                 }
                 if flipped {
-                    r_valid = ccw(prc, pl, pr);
+                    r_valid = f.ccw(prc, pl, pr);
                 }
             }
             if !l_valid && !r_valid {
                 break;
             }
-            if !l_valid || (r_valid && inside(plc, pl, pr, prc)) {
+            if !l_valid || (r_valid && f.inside(plc, pl, pr, prc)) {
                 (base, b) = self.mesh.take_right(b, base, l);
                 (r, pr) = (rc, prc);
+                rc = self.mesh.tri[b as usize][1];
+                prc = self.p(rc);
             } else {
                 (base, a) = self.mesh.take_left(a, base, r);
                 (l, pl) = (lc, plc);
+                lc = self.mesh.tri[a as usize][0];
+                plc = self.p(lc);
             }
         }
         let closed = opened + 1;
         self.mesh.close(closed, base, a, b);
 
-        let pick_min = |dc: &Self, c: Cut, x: Extreme, y: Extreme| {
-            if dc.less(c, y.v, x.v) {
-                y
-            } else {
-                x
-            }
-        };
-        let pick_max = |dc: &Self, c: Cut, x: Extreme, y: Extreme| {
-            if dc.less(c, x.v, y.v) {
-                y
-            } else {
-                x
-            }
-        };
-        let mut e = match cut {
-            Cut::Vertical => Extremes {
-                min_x: left.min_x,
-                max_x: right.max_x,
-                min_y: pick_min(self, Cut::Horizontal, left.min_y, right.min_y),
-                max_y: pick_max(self, Cut::Horizontal, left.max_y, right.max_y),
-            },
-            Cut::Horizontal => Extremes {
-                min_x: pick_min(self, Cut::Vertical, left.min_x, right.min_x),
-                max_x: pick_max(self, Cut::Vertical, left.max_x, right.max_x),
-                min_y: left.min_y,
-                max_y: right.max_y,
-            },
-        };
         // A ghost of an extreme point may have been turned into a triangle; the point is
         // then an end of a common tangent, whose new ghost touches it.
         for x in [&mut e.min_x, &mut e.max_x, &mut e.min_y, &mut e.max_y] {

@@ -25,7 +25,7 @@
 /// The vertex at infinity of the ghost triangles.
 pub const GHOST: u32 = u32::MAX;
 
-/// Twin of a half-edge of a ghost being rebuilt (never seen outside a merge).
+/// Argument of [`Mesh::ghost_ring`]: this ghost's hull edge is glued by the caller.
 const UNLINKED: u32 = u32::MAX;
 
 /// The next half-edge counterclockwise in the same triangle.
@@ -56,13 +56,13 @@ pub struct Mesh {
 }
 
 impl Mesh {
-    /// Room for the `2n − 2` triangles of `n ≥ 2` points. Zeroed memory is only touched when
-    /// a slot is written.
+    /// Room for the `2n − 2` triangles of `n ≥ 2` points. Every slot gets written by the
+    /// construction, so the zeroed (lazily mapped) memory is never read as such.
     pub fn for_points(n: usize) -> Mesh {
         let slots = 2 * n - 2;
         Mesh {
             tri: vec![[0; 3]; slots],
-            twin: vec![UNLINKED; 3 * slots],
+            twin: vec![0; 3 * slots],
         }
     }
 
@@ -168,6 +168,7 @@ impl Mesh {
     /// Deletes the edge between `l` and `c` on the left side of a merge by flipping it with
     /// the ghost `a = [c, l, GHOST]`: the real triangle `[l, c, x]` behind it and `a` become the
     /// ghosts `[x, l]` (still slot `a`) and `[c, x]`. Returns `x`.
+    #[inline]
     pub fn flip_left(&mut self, a: u32) -> u32 {
         let h = self.twin[(3 * a) as usize]; // l → c
         let (hn, hp) = (next(h), prev(h)); // c → x, x → l
@@ -189,6 +190,7 @@ impl Mesh {
     /// Mirror of [`Self::flip_left`] on the right side: the ghost `b = [r, c, GHOST]` and the
     /// real triangle `[c, r, z]` behind it become the ghosts `[r, z]` (still slot `b`) and
     /// `[z, c]`. Returns `z`.
+    #[inline]
     pub fn flip_right(&mut self, b: u32) -> u32 {
         let h = self.twin[(3 * b) as usize]; // c → r
         let (hn, hp) = (next(h), prev(h)); // r → z, z → c
@@ -227,55 +229,67 @@ impl Mesh {
         (3 * b + 1, next_ghost)
     }
 
-    /// The hull, counterclockwise from `start`, walking the ghost ring from the ghost `g` of
-    /// the hull edge out of `start` (`g = [·, start]`).
-    pub fn hull_from(&self, g: u32) -> Vec<u32> {
+    /// Finishes the triangulation: the hull counterclockwise from the ghost `g` of the hull
+    /// edge out of its first point (`g = [·, first]`), and the triangles and twins without the
+    /// ghosts ([`NO_TWIN`](super::NO_TWIN) on the hull), every vertex `v` renamed `names[v]`.
+    ///
+    /// The real triangles in the last slots move into the ghosts' slots below them, so only as
+    /// many triangles move as there are hull edges; then one pass renames the vertices.
+    pub fn finish(mut self, g: u32, names: &[u32], no_twin: u32) -> Finished {
         let mut hull = Vec::new();
+        let mut ghosts = Vec::new();
         let mut h = g;
         loop {
-            hull.push(self.tri[h as usize][1]);
+            hull.push(names[self.tri[h as usize][1] as usize]);
+            ghosts.push(h);
+            let hull_edge = self.twin[(3 * h) as usize];
+            self.twin[hull_edge as usize] = no_twin;
             h = self.ring_next(h);
             if h == g {
-                return hull;
+                break;
             }
         }
-    }
-
-    /// Drops the ghosts in place and renames every vertex `v` to `names[v]`: the triangles and
-    /// twins of the finished triangulation ([`NO_TWIN`](super::NO_TWIN) on the hull). One pass
-    /// marks the hull, one moves the real triangles down over the ghosts.
-    pub fn into_result(mut self, names: &[u32], no_twin: u32) -> (Vec<[u32; 3]>, Vec<u32>) {
-        for g in 0..self.tri.len() as u32 {
-            if self.is_ghost(g) {
-                let hull_edge = self.twin[(3 * g) as usize];
-                self.twin[hull_edge as usize] = no_twin;
+        let real = self.tri.len() - ghosts.len();
+        ghosts.sort_unstable();
+        let mut source = self.tri.len();
+        for &hole in ghosts.iter().take_while(|&&hole| (hole as usize) < real) {
+            // The next real triangle from the end (slots at or above `real` hold the rest of
+            // the ghosts, all of which sort after the holes).
+            source -= 1;
+            while self.is_ghost(source as u32) {
+                source -= 1;
             }
-        }
-        let mut w = 0usize;
-        for t in 0..self.tri.len() {
-            let [a, b, c] = self.tri[t];
-            if c == GHOST {
-                continue;
-            }
-            self.tri[w] = [names[a as usize], names[b as usize], names[c as usize]];
-            if w != t {
-                for k in 0..3 {
-                    let u = self.twin[3 * t + k];
-                    self.twin[3 * w + k] = u;
-                    // The neighbour, moved or not, is at `u`: a moved one fixed our entry.
-                    if u != no_twin {
-                        self.twin[u as usize] = (3 * w + k) as u32;
-                    }
+            let (s, t) = (source, hole as usize);
+            self.tri[t] = self.tri[s];
+            for k in 0..3 {
+                let u = self.twin[3 * s + k];
+                self.twin[3 * t + k] = u;
+                // A neighbour that moves later reads the entry fixed here.
+                if u != no_twin {
+                    self.twin[u as usize] = (3 * t + k) as u32;
                 }
             }
-            w += 1;
         }
-        self.tri.truncate(w);
+        self.tri.truncate(real);
+        self.twin.truncate(3 * real);
+        for t in &mut self.tri {
+            *t = t.map(|v| names[v as usize]);
+        }
         self.tri.shrink_to_fit();
-        self.twin.truncate(3 * w);
         self.twin.shrink_to_fit();
-        (self.tri, self.twin)
+        Finished {
+            triangles: self.tri,
+            halfedges: self.twin,
+            hull,
+        }
     }
+}
+
+/// The flat arrays of a finished triangulation.
+pub struct Finished {
+    pub triangles: Vec<[u32; 3]>,
+    pub halfedges: Vec<u32>,
+    pub hull: Vec<u32>,
 }
 
 #[cfg(test)]
@@ -291,23 +305,34 @@ mod tests {
         }
     }
 
+    /// The hull walk along the ghost ring from ghost `g`.
+    fn ring(m: &Mesh, g: u32) -> Vec<u32> {
+        let mut hull = vec![m.tri[g as usize][1]];
+        let mut h = m.ring_next(g);
+        while h != g {
+            hull.push(m.tri[h as usize][1]);
+            h = m.ring_next(h);
+        }
+        hull
+    }
+
     #[test]
     fn leaves_are_closed_rings() {
         let mut m = Mesh::for_points(2);
         m.pair(0, 5, 6);
         assert_glued(&m);
-        assert_eq!(m.hull_from(0), vec![5, 6]);
+        assert_eq!(ring(&m, 0), vec![5, 6]);
 
         let mut m = Mesh::for_points(3);
         m.triangle(0, 1, 2, 3);
         assert_glued(&m);
-        assert_eq!(m.hull_from(1), vec![1, 2, 3]);
+        assert_eq!(ring(&m, 1), vec![1, 2, 3]);
         assert_eq!(m.ring_prev(1), 3);
 
         let mut m = Mesh::for_points(3);
         m.chain3(0, 1, 2, 3);
         assert_glued(&m);
-        assert_eq!(m.hull_from(0), vec![1, 2, 3, 2]);
+        assert_eq!(ring(&m, 0), vec![1, 2, 3, 2]);
     }
 
     #[test]
@@ -320,7 +345,7 @@ mod tests {
         assert_glued(&m);
         // Edge 0–1 is gone: two ghosts [2, 0] and [1, 2] plus the old ones of 1→2, 2→0.
         assert_eq!(m.tri.iter().filter(|t| t[2] == GHOST).count(), 4);
-        assert_eq!(m.hull_from(1), vec![0, 2, 1, 2]);
+        assert_eq!(ring(&m, 1), vec![0, 2, 1, 2]);
     }
 
     #[test]
@@ -330,8 +355,9 @@ mod tests {
         m2.ghost_ring(0, &[0, 1, 2], &[9, 10, 11]);
         m2.tri[3] = [0, 1, 2];
         assert_glued(&m2);
-        let (tri, twin) = m2.into_result(&[7, 8, 9], u32::MAX);
-        assert_eq!(tri, vec![[7, 8, 9]]);
-        assert_eq!(twin, vec![u32::MAX; 3]);
+        let done = m2.finish(0, &[7, 8, 9], u32::MAX);
+        assert_eq!(done.triangles, vec![[7, 8, 9]]);
+        assert_eq!(done.halfedges, vec![u32::MAX; 3]);
+        assert_eq!(done.hull, vec![7, 8, 9]);
     }
 }

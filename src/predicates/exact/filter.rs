@@ -239,7 +239,9 @@ pub(super) const LEAF_MAX: f64 = 18446744073709551616.0;
 /// `2^48`: the leaf limit of the radius comparison.
 pub(super) const LEAF_MAX_RADIUS: f64 = 281474976710656.0;
 
-/// Leaf magnitudes outside `[2^-LEAF_MIN_EXP, 2^H]` make the caller rescale and retry.
+/// `(lo, hi)`: when the filter fails on points whose spread (largest coordinate difference
+/// from the first point) lies outside `[2^lo, 2^(hi − 1))`, the caller scales them by a
+/// power of two to a spread in `[1, 2)` and filters again.
 pub(super) const LEAF_RANGE: (i32, i32) = (-64, 64);
 /// The same for the radius comparison.
 pub(super) const LEAF_RANGE_RADIUS: (i32, i32) = (-48, 48);
@@ -437,4 +439,15 @@ pub(super) fn circumcenter(t: &[[f64; 2]; 3]) -> Option<[f64; 2]> {
         & (n >= NORM_MIN)
         & (b <= TAU * p);
     sure.then_some([ox, oy])
+}
+
+/// Whether the floating-point circumcenter `t0 + u/d` of `t` is over 128 times closer to the
+/// origin than to `t0`: the errors of `u/d` (a few ulps of it) then exceed 256 ulps of the
+/// result, and the running-error stage, which bounds them, has hardly any chance (a
+/// heuristic: skipping that stage is always safe).
+pub(super) fn circumcenter_cancels(t: &[[f64; 2]; 3]) -> bool {
+    let c = circ(&lift(t));
+    let (qx, qy) = (c.ux.v / c.d.v, c.uy.v / c.d.v);
+    let n = max((t[0][0] + qx).abs(), (t[0][1] + qy).abs());
+    max(qx.abs(), qy.abs()) > 128.0 * n
 }

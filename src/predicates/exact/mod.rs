@@ -523,16 +523,18 @@ fn circumcenter_slow(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> (Option<[f64; 2]>
             return (Some(o), Stage::Filter);
         }
     }
-    let ([sa, sb, sc], k) = normalize([a, b, c]);
-    let circ = circ(&lift_filter([sa, sb, sc]));
-    match circ.d.sign() {
-        Some(Sign::Zero) => return (None, Stage::Bounded),
-        Some(_) => {
-            if let Some(o) = fast_circumcenter(&circ, sa, k) {
-                return (Some(o), Stage::Bounded);
+    if !filter::circumcenter_cancels(&[a, b, c]) {
+        let ([sa, sb, sc], k) = normalize([a, b, c]);
+        let circ = circ(&lift_filter([sa, sb, sc]));
+        match circ.d.sign() {
+            Some(Sign::Zero) => return (None, Stage::Bounded),
+            Some(_) => {
+                if let Some(o) = fast_circumcenter(&circ, sa, k) {
+                    return (Some(o), Stage::Bounded);
+                }
             }
+            None => {}
         }
-        None => {}
     }
     (circumcenter_rounded(a, b, c), Stage::Exact)
 }

@@ -39,7 +39,10 @@ fn main() {
     };
     let stages: Vec<&str> = args
         .get(2)
-        .map_or("points,triangulate,voronoi,single,reconstruct", String::as_str)
+        .map_or(
+            "points,triangulate,voronoi,single,reconstruct",
+            String::as_str,
+        )
         .split(',')
         .collect();
     let stage = |name: &str| stages.contains(&name);
@@ -143,9 +146,7 @@ fn generate(set: &str, n: usize) -> Option<Vec<[f64; 2]>> {
                 .map(|i| [(i % side) as f64, (i / side) as f64])
                 .collect()
         }
-        "two-lines" => (0..n)
-            .map(|i| [(i / 2) as f64, (i % 2) as f64])
-            .collect(),
+        "two-lines" => (0..n).map(|i| [(i / 2) as f64, (i % 2) as f64]).collect(),
         "crossing-lines" => (0..n)
             .map(|i| {
                 let x = (i / 2) as f64 - (n / 4) as f64;

@@ -59,7 +59,11 @@ fuzz_target!(|input: &[u8]| {
         // A tiny buffer splits lines, `\r\n` pairs and UTF-8 sequences across reads.
         let reader = BufReader::with_capacity(usize::from(capacity % 8) + 1, data);
         let split = read_points(reader, format);
-        assert_eq!(summary(&whole), summary(&split), "format {format:?}: buffer size matters");
+        assert_eq!(
+            summary(&whole),
+            summary(&split),
+            "format {format:?}: buffer size matters"
+        );
         match &whole {
             Err(e) => {
                 let line = e.line.expect("reading a slice cannot fail without a line");
@@ -75,7 +79,10 @@ fuzz_target!(|input: &[u8]| {
                     expected_error(points)
                 );
                 assert!(points.len() <= lines, "more points than lines");
-                let text: String = points.iter().map(|p| format!("{} {}\n", p[0], p[1])).collect();
+                let text: String = points
+                    .iter()
+                    .map(|p| format!("{} {}\n", p[0], p[1]))
+                    .collect();
                 let again = read_points(text.as_bytes(), Some(InputFormat::Text));
                 assert_eq!(summary(&whole), summary(&again), "text round trip");
                 assert!(wdm_crust::triangulate(points).is_ok());

@@ -47,18 +47,17 @@ fuzz_target!(|input: Input| {
     let t = |i: [u16; 3]| [p(i[0]), p(i[1]), p(i[2])];
     for op in input.ops.iter().take(64) {
         let result = match *op {
-            Op::OrientIncircle([a, b, c, d]) => {
-                check_orient_incircle(p(a), p(b), p(c), p(d))
-                    .and(check_orient_incircle(p(b), p(c), p(a), p(d)))
-                    .and(check_orient_incircle(p(c), p(b), p(a), p(d)))
-            }
+            Op::OrientIncircle([a, b, c, d]) => check_orient_incircle(p(a), p(b), p(c), p(d))
+                .and(check_orient_incircle(p(b), p(c), p(a), p(d)))
+                .and(check_orient_incircle(p(c), p(b), p(a), p(d))),
             Op::OrientCircumcenter([a, b], tri) => check_orient2d_circumcenter(p(a), p(b), t(tri)),
             Op::Dot(q, s, o) => check_dot_sign(p(q), t(s), t(o)),
             Op::DotShared([q, a, b, c, d]) => {
                 check_dot_sign(p(q), [p(a), p(q), p(b)], [p(c), p(d), p(q)])
             }
-            Op::Radius(a, b) => check_compare_circumradius(t(a), t(b))
-                .and(check_compare_circumradius(t(b), t(a))),
+            Op::Radius(a, b) => {
+                check_compare_circumradius(t(a), t(b)).and(check_compare_circumradius(t(b), t(a)))
+            }
             Op::Hull {
                 tri,
                 keep_collinear,

@@ -37,7 +37,11 @@ fuzz_target!(|scene: Scene| {
     let (single, full) = match (single, full, expected_error(&points)) {
         (Err(a), Err(b), Some(x)) => {
             if !same_error(&a, &x) || !same_error(&b, &x) {
-                fail("reconstruct", &points, &format!("errors {a:?}, {b:?}, expected {x:?}"));
+                fail(
+                    "reconstruct",
+                    &points,
+                    &format!("errors {a:?}, {b:?}, expected {x:?}"),
+                );
             }
             return;
         }
@@ -45,7 +49,11 @@ fuzz_target!(|scene: Scene| {
         (a, b, x) => fail(
             "reconstruct",
             &points,
-            &format!("results {:?} / {:?}, expected error {x:?}", a.err(), b.err()),
+            &format!(
+                "results {:?} / {:?}, expected error {x:?}",
+                a.err(),
+                b.err()
+            ),
         ),
     };
     if let Err(e) = check_single_pass(&points, &single) {

@@ -27,7 +27,11 @@ fuzz_target!(|scene: Scene| {
         match wdm_crust::triangulate(&moved) {
             Ok(other) => {
                 if let Err(e) = check_same_triangulation(&tri, &other) {
-                    fail("triangulate scaled by 2^k", &points, &format!("k = {k}: {e}"));
+                    fail(
+                        "triangulate scaled by 2^k",
+                        &points,
+                        &format!("k = {k}: {e}"),
+                    );
                 }
             }
             Err(e) => fail("triangulate scaled", &points, &format!("k = {k}: {e}")),

@@ -94,7 +94,8 @@ pub fn orientation(s: Sign) -> Orientation {
 pub fn ref_incircle(a: &RPoint, b: &RPoint, c: &RPoint, d: &RPoint) -> Sign {
     let rows = [sub(a, d), sub(b, d), sub(c, d)];
     let lift = |r: &RPoint| dot(r, r);
-    let det = lift(&rows[0]) * cross(&rows[1], &rows[2]) - lift(&rows[1]) * cross(&rows[0], &rows[2])
+    let det = lift(&rows[0]) * cross(&rows[1], &rows[2])
+        - lift(&rows[1]) * cross(&rows[0], &rows[2])
         + lift(&rows[2]) * cross(&rows[0], &rows[1]);
     sign(&det)
 }
@@ -177,7 +178,11 @@ pub fn exact_hull(points: &[[f64; 2]], keep_collinear: bool) -> Option<Vec<[f64;
         let mut out: Vec<usize> = Vec::new();
         for i in order {
             while out.len() >= 2
-                && pops(ref_orient(&r[out[out.len() - 2]], &r[out[out.len() - 1]], &r[i]))
+                && pops(ref_orient(
+                    &r[out[out.len() - 2]],
+                    &r[out[out.len() - 1]],
+                    &r[i],
+                ))
             {
                 out.pop();
             }
@@ -315,7 +320,12 @@ pub fn check_triangulate(points: &[[f64; 2]], result: &Result<Triangulation, Err
 pub fn check_same_triangulation(a: &Triangulation, b: &Triangulation) -> Check {
     ensure!(a.triangles() == b.triangles(), "triangles differ");
     ensure!(a.halfedges() == b.halfedges(), "halfedges differ");
-    ensure!(a.hull() == b.hull(), "hulls differ: {:?} vs {:?}", a.hull(), b.hull());
+    ensure!(
+        a.hull() == b.hull(),
+        "hulls differ: {:?} vs {:?}",
+        a.hull(),
+        b.hull()
+    );
     ensure!(a.duplicates() == b.duplicates(), "duplicates differ");
     Ok(())
 }
@@ -494,7 +504,10 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
         ensure!(vor.collinear_bisectors() == expected, "collinear bisectors");
         return Ok(());
     }
-    ensure!(vor.collinear_bisectors().is_empty(), "bisectors on a 2D input");
+    ensure!(
+        vor.collinear_bisectors().is_empty(),
+        "bisectors on a 2D input"
+    );
 
     // Centres: the exact circumcenter of every triangle is the one of its vertex.
     let ints = IntPoints::new(pts);
@@ -532,7 +545,11 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
         let sites: Vec<u32> = vor.vertex_sites(v).collect();
         let k = sites.len();
         ensure!(k >= 3, "vertex {v} has {k} sites");
-        ensure!(vor.degree(v) == k, "vertex {v}: degree {} vs {k} sites", vor.degree(v));
+        ensure!(
+            vor.degree(v) == k,
+            "vertex {v}: degree {} vs {k} sites",
+            vor.degree(v)
+        );
         ensure!(
             triangles_of[v as usize] == k - 2,
             "vertex {v}: {} triangles for a {k}-gon",
@@ -541,8 +558,14 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
         incidences += k;
         let r2 = ints.dist2(c, sites[0]);
         for (i, &s) in sites.iter().enumerate() {
-            ensure!((s as usize) < n && first[s as usize] == s as usize, "vertex {v}: bad site {s}");
-            ensure!(ints.dist2(c, s) == r2, "vertex {v}: site {s} not on the circle");
+            ensure!(
+                (s as usize) < n && first[s as usize] == s as usize,
+                "vertex {v}: bad site {s}"
+            );
+            ensure!(
+                ints.dist2(c, s) == r2,
+                "vertex {v}: site {s} not on the circle"
+            );
             let (a, b, d) = (
                 pts[s as usize],
                 pts[sites[(i + 1) % k] as usize],
@@ -570,20 +593,31 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
         let mut has_ray = false;
         for (i, edge) in vor.vertex_edges(v).enumerate() {
             let e = edge.halfedge as usize;
-            ensure!(e < halfedges.len(), "vertex {v}: half-edge {e} out of range");
-            ensure!(!seen_halfedge[e], "half-edge {e} is the dual of two Voronoi edges");
+            ensure!(
+                e < halfedges.len(),
+                "vertex {v}: half-edge {e} out of range"
+            );
+            ensure!(
+                !seen_halfedge[e],
+                "half-edge {e} is the dual of two Voronoi edges"
+            );
             seen_halfedge[e] = true;
             ensure!(edge.from == v, "edge {e}: from {} at vertex {v}", edge.from);
-            ensure!(vor.vertex_of_halfedge(edge.halfedge) == v, "edge {e}: face is not {v}");
+            ensure!(
+                vor.vertex_of_halfedge(edge.halfedge) == v,
+                "edge {e}: face is not {v}"
+            );
             ensure!(
                 edge.sites == [sites[i], sites[(i + 1) % k]]
-                    && edge.sites
-                        == [tri.halfedge_origin(e), tri.halfedge_destination(e)],
+                    && edge.sites == [tri.halfedge_origin(e), tri.halfedge_destination(e)],
                 "edge {e}: sites {:?}",
                 edge.sites
             );
             ensure!(vor.has_dual(edge.halfedge), "edge {e}: has_dual false");
-            ensure!(vor.edge(edge.halfedge) == edge, "edge({e}) differs from vertex_edges");
+            ensure!(
+                vor.edge(edge.halfedge) == edge,
+                "edge({e}) differs from vertex_edges"
+            );
             let [s0, s1] = edge.sites;
             // The edge runs along the bisector of its sites, `sites[1]` on its left (the
             // opposite of what the `VoronoiEdge::sites` docs said when this was written).
@@ -605,7 +639,10 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
             );
             match edge.to {
                 EdgeEnd::Infinity => {
-                    ensure!(halfedges[e] == NO_TWIN, "edge {e}: ray but the half-edge has a twin");
+                    ensure!(
+                        halfedges[e] == NO_TWIN,
+                        "edge {e}: ray but the half-edge has a twin"
+                    );
                     has_ray = true;
                     ensure!(
                         ray_of_origin.insert(s0, v).is_none()
@@ -617,7 +654,10 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
                     let twin = halfedges[e];
                     ensure!(twin != NO_TWIN, "edge {e}: finite but on the hull");
                     ensure!((u as usize) < vcount && u != v, "edge {e}: to {u} from {v}");
-                    ensure!(vor.vertex_of_halfedge(twin) == u, "edge {e}: twin not in {u}");
+                    ensure!(
+                        vor.vertex_of_halfedge(twin) == u,
+                        "edge {e}: twin not in {u}"
+                    );
                     let back = vor.edge(twin);
                     ensure!(
                         back.from == u && back.to == EdgeEnd::Vertex(v) && back.sites == [s1, s0],
@@ -636,8 +676,8 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
         ensure!(vor.has_ray(v) == has_ray, "vertex {v}: has_ray");
     }
     for (e, &twin) in halfedges.iter().enumerate() {
-        let dual = twin == NO_TWIN
-            || vor.vertex_of_halfedge(e as u32) != vor.vertex_of_halfedge(twin);
+        let dual =
+            twin == NO_TWIN || vor.vertex_of_halfedge(e as u32) != vor.vertex_of_halfedge(twin);
         ensure!(vor.has_dual(e as u32) == dual, "has_dual({e})");
         ensure!(
             seen_halfedge[e] == dual,
@@ -660,7 +700,10 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
     let dual_interior = (0..halfedges.len())
         .filter(|&e| seen_halfedge[e] && halfedges[e] != NO_TWIN)
         .count();
-    ensure!(2 * finite == dual_interior, "finite_edges lists {finite} of {dual_interior}/2");
+    ensure!(
+        2 * finite == dual_interior,
+        "finite_edges lists {finite} of {dual_interior}/2"
+    );
     let mut rays = 0usize;
     for (e, v, dir) in vor.rays() {
         ensure!(halfedges[e as usize] == NO_TWIN, "ray {e} has a twin");
@@ -673,7 +716,11 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
         );
         rays += 1;
     }
-    ensure!(rays == tri.hull().len(), "{rays} rays for {} hull edges", tri.hull().len());
+    ensure!(
+        rays == tri.hull().len(),
+        "{rays} rays for {} hull edges",
+        tri.hull().len()
+    );
     let distinct = tri.distinct_point_count();
     ensure!(
         (vcount + 1) + distinct == (finite + rays) + 2,
@@ -700,7 +747,10 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
             continue;
         }
         let bounded = vor.is_cell_bounded(p);
-        ensure!(bounded == !on_hull[p as usize], "point {p}: is_cell_bounded {bounded}");
+        ensure!(
+            bounded == !on_hull[p as usize],
+            "point {p}: is_cell_bounded {bounded}"
+        );
         let mut sorted = cell.clone();
         sorted.sort_unstable();
         let mut expected = vertices_of_site[p as usize].clone();
@@ -728,7 +778,10 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
             );
         }
     }
-    ensure!(cell_incidences == incidences, "cells and vertex sites disagree");
+    ensure!(
+        cell_incidences == incidences,
+        "cells and vertex sites disagree"
+    );
     Ok(())
 }
 
@@ -797,7 +850,10 @@ pub fn check_curves(n: usize, edges: &[[u32; 2]], curves: &[Curve]) -> Check {
 /// Edges sorted, unique, `i < j`, between distinct (kept) points in range.
 fn check_edge_list(points: &[[f64; 2]], edges: &[[u32; 2]]) -> Check {
     let first = first_occurrence(points);
-    ensure!(edges.windows(2).all(|w| w[0] < w[1]), "edges not sorted and unique");
+    ensure!(
+        edges.windows(2).all(|w| w[0] < w[1]),
+        "edges not sorted and unique"
+    );
     for &[a, b] in edges {
         ensure!(a < b && (b as usize) < points.len(), "edge [{a}, {b}]");
         ensure!(
@@ -852,8 +908,14 @@ pub fn check_single_pass(points: &[[f64; 2]], rec: &Reconstruction) -> Check {
     if tri.is_degenerate() {
         let mut chain: Vec<[u32; 2]> = tri.hull().windows(2).map(|w| key(w[0], w[1])).collect();
         chain.sort_unstable();
-        ensure!(rec.edges() == chain, "collinear input: edges are not the chain");
-        ensure!(rec.medial_axis().edges.is_empty(), "collinear input: medial axis");
+        ensure!(
+            rec.edges() == chain,
+            "collinear input: edges are not the chain"
+        );
+        ensure!(
+            rec.medial_axis().edges.is_empty(),
+            "collinear input: medial axis"
+        );
         return Ok(());
     }
     let mut delaunay: HashSet<[u32; 2]> = HashSet::new();
@@ -861,7 +923,10 @@ pub fn check_single_pass(points: &[[f64; 2]], rec: &Reconstruction) -> Check {
         delaunay.insert(key(tri.halfedge_origin(e), tri.halfedge_destination(e)));
     }
     for &[a, b] in rec.edges() {
-        ensure!(delaunay.contains(&[a, b]), "edge [{a}, {b}] is not a Delaunay edge");
+        ensure!(
+            delaunay.contains(&[a, b]),
+            "edge [{a}, {b}] is not a Delaunay edge"
+        );
     }
     let mut crust: Vec<[u32; 2]> = Vec::new();
     let mut axis_positions: Vec<[u64; 4]> = Vec::new();
@@ -934,11 +999,17 @@ pub fn check_peeled(points: &[[f64; 2]], single: &Reconstruction, full: &Reconst
     check_edge_list(points, full.edges())?;
     check_curves(points.len(), full.edges(), full.curves())?;
     check_point_classes(full, points)?;
-    ensure!(single.labels() == full.labels(), "labels differ from the single pass");
+    ensure!(
+        single.labels() == full.labels(),
+        "labels differ from the single pass"
+    );
     let base: HashSet<[u32; 2]> = single.edges().iter().copied().collect();
     let untouched: HashSet<u32> = single.untouched_points().into_iter().collect();
     for e in single.edges() {
-        ensure!(full.edges().binary_search(e).is_ok(), "peeling lost edge {e:?}");
+        ensure!(
+            full.edges().binary_search(e).is_ok(),
+            "peeling lost edge {e:?}"
+        );
     }
     for e in full.edges().iter().filter(|e| !base.contains(*e)) {
         ensure!(
@@ -980,7 +1051,10 @@ pub fn axis_segments(rec: &Reconstruction) -> Vec<[u64; 4]> {
 }
 
 /// Every Voronoi vertex keyed by its sorted sites (mapped through `map`): label and position.
-fn vertices_by_sites(rec: &Reconstruction, map: impl Fn(u32) -> u32) -> HashMap<Vec<u32>, (Label, [f64; 2])> {
+fn vertices_by_sites(
+    rec: &Reconstruction,
+    map: impl Fn(u32) -> u32,
+) -> HashMap<Vec<u32>, (Label, [f64; 2])> {
     let vor = rec.triangulation().voronoi();
     (0..vor.vertex_count() as u32)
         .map(|v| {
@@ -1038,7 +1112,9 @@ pub fn check_permuted(
     );
     for (sites, &(label, pos)) in &mine {
         let Some(&(other_label, other_pos)) = theirs.get(sites) else {
-            return Err(format!("permuted input: no Voronoi vertex with sites {sites:?}"));
+            return Err(format!(
+                "permuted input: no Voronoi vertex with sites {sites:?}"
+            ));
         };
         ensure!(
             label == other_label,
@@ -1093,7 +1169,10 @@ pub fn check_orient_incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2])
     }
     let [ra, rb, rc, rd] = [rpoint(a), rpoint(b), rpoint(c), rpoint(d)];
     let want_o = orientation(ref_orient(&ra, &rb, &rc));
-    ensure!(got_o == want_o, "orient2d({a:?}, {b:?}, {c:?}) = {got_o:?}, exact {want_o:?}");
+    ensure!(
+        got_o == want_o,
+        "orient2d({a:?}, {b:?}, {c:?}) = {got_o:?}, exact {want_o:?}"
+    );
     let want_i = circle_position(ref_incircle(&ra, &rb, &rc, &rd));
     ensure!(
         got_i == want_i,
@@ -1122,7 +1201,9 @@ pub fn check_orient2d_circumcenter(a: [f64; 2], b: [f64; 2], tri: [[f64; 2]; 3])
 /// `dot_sign_circumcenters(p, source, other)` agrees with the reference.
 pub fn check_dot_sign(p: [f64; 2], source: [[f64; 2]; 3], other: [[f64; 2]; 3]) -> Check {
     let got = wdm_crust::predicates::exact::dot_sign_circumcenters(p, source, other);
-    let all = [p, source[0], source[1], source[2], other[0], other[1], other[2]];
+    let all = [
+        p, source[0], source[1], source[2], other[0], other[1], other[2],
+    ];
     if !in_envelope(&all) {
         return Ok(());
     }
@@ -1191,14 +1272,21 @@ pub fn check_circumcenter(tri: [[f64; 2]; 3]) -> Check {
     let want = ref_circumcenter(&tri);
     match (&exact, &want) {
         (None, None) => {
-            ensure!(fast.is_none(), "circumcenter of collinear {tri:?} is {fast:?}");
+            ensure!(
+                fast.is_none(),
+                "circumcenter of collinear {tri:?} is {fast:?}"
+            );
             return Ok(());
         }
         (Some(e), Some(w)) => ensure!(
             same_point(&from_exact(e), w),
             "circumcenter_exact({tri:?}) is not the circumcenter"
         ),
-        _ => return Err(format!("circumcenter_exact({tri:?}) = {exact:?}, exact {want:?}")),
+        _ => {
+            return Err(format!(
+                "circumcenter_exact({tri:?}) = {exact:?}, exact {want:?}"
+            ))
+        }
     }
     let (Some(e), Some(w)) = (exact, want) else {
         return Ok(());

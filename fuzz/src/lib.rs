@@ -6,5 +6,8 @@ pub mod scene;
 
 /// Panics with the points pasted as a Rust literal, ready for `tests/fuzz_regressions.rs`.
 pub fn fail(what: &str, points: &[[f64; 2]], message: &str) -> ! {
-    panic!("{what} failed: {message}\nreproducer points ({} of them):\n{points:?}", points.len());
+    panic!(
+        "{what} failed: {message}\nreproducer points ({} of them):\n{points:?}",
+        points.len()
+    );
 }

@@ -236,7 +236,10 @@ const TRIPLES: [(i64, i64); 5] = [(3, 4), (5, 12), (8, 15), (7, 24), (20, 21)];
 impl Placement {
     /// Rotation of an integer point, exact.
     fn rotate_int(&self, p: [i64; 2]) -> [i64; 2] {
-        let [x, y] = [p[0] + i64::from(self.offset[0]), p[1] + i64::from(self.offset[1])];
+        let [x, y] = [
+            p[0] + i64::from(self.offset[0]),
+            p[1] + i64::from(self.offset[1]),
+        ];
         match self.rotation {
             Rotation::Identity | Rotation::Float(_) => [x, y],
             Rotation::Quarter(k) => match k % 4 {
@@ -315,7 +318,10 @@ pub fn circle_lattice_points(r: i64) -> Vec<[i64; 2]> {
         }
     }
     pts.sort_by(|p, q| {
-        let (a, b) = ((p[1] as f64).atan2(p[0] as f64), (q[1] as f64).atan2(q[0] as f64));
+        let (a, b) = (
+            (p[1] as f64).atan2(p[0] as f64),
+            (q[1] as f64).atan2(q[0] as f64),
+        );
         a.total_cmp(&b)
     });
     pts
@@ -417,8 +423,8 @@ impl Scene {
                     let step = std::f64::consts::TAU / n as f64;
                     for i in 0..n {
                         // Deterministic jitter: a fraction of the step, varying with i.
-                        let wobble = f64::from(*jitter) / 600.0 * ((i * 7919 % 13) as f64 - 6.0)
-                            / 6.0;
+                        let wobble =
+                            f64::from(*jitter) / 600.0 * ((i * 7919 % 13) as f64 - 6.0) / 6.0;
                         let t = phase + step * (i as f64 + wobble);
                         let (s, c) = t.sin_cos();
                         let p = match shape % 4 {

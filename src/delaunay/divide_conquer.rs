@@ -14,9 +14,7 @@
 //! extreme points in both orders, `(x, y)` and `(y, −x)` (ties broken by coordinates, never by
 //! input position), with a ghost at each.
 
-use std::cmp::Ordering;
-
-use super::filter::StaticFilter;
+use super::filter::{ccw, inside, Lifted, StaticFilter};
 use super::mesh::{prev, Mesh, GHOST};
 use super::triangulation::{Triangulation, NO_TWIN};
 use super::zorder::{lexicographic, order, Grid};
@@ -35,7 +33,7 @@ pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
     }
     let grid = Grid::new(points);
     let ordered = order(points, &grid);
-    let (mut pts, mut ids) = (ordered.points, ordered.ids);
+    let (mut pts, mut items) = (ordered.points, ordered.items);
     let n = pts.len();
     let mut triangles = Vec::new();
     let mut halfedges = Vec::new();
@@ -43,7 +41,7 @@ pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
     if n >= 2 {
         let mut dc = DivideConquer {
             pts: &mut pts,
-            ids: &mut ids,
+            items: &mut items,
             grid,
             mesh: Mesh::for_points(n),
             scratch: Vec::new(),
@@ -53,7 +51,7 @@ pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
         let start = extremes.min_x;
         let collinear = (0..mesh.tri.len() as u32).all(|t| mesh.is_ghost(t));
         if collinear {
-            hull = collinear_chain(&pts, &ids);
+            hull = collinear_chain(&pts, |v| grid.index(items[v as usize]));
         } else {
             let g = if mesh.tri[start.ghost as usize][1] == start.v {
                 start.ghost
@@ -61,11 +59,11 @@ pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
                 mesh.ring_next(start.ghost)
             };
             drop(pts);
-            let done = mesh.finish(g, &ids, NO_TWIN);
+            let done = mesh.finish(g, |v| grid.index(items[v as usize]), NO_TWIN);
             (triangles, halfedges, hull) = (done.triangles, done.halfedges, done.hull);
         }
     } else {
-        hull = std::mem::take(&mut ids);
+        hull = items.iter().map(|&item| grid.index(item)).collect();
     }
     Triangulation {
         points: points.to_vec(),
@@ -77,16 +75,10 @@ pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
 }
 
 /// The input indices of collinear points in lexicographic order (their order along the line).
-fn collinear_chain(pts: &[[f64; 2]], ids: &[u32]) -> Vec<u32> {
+fn collinear_chain(pts: &[[f64; 2]], name: impl Fn(u32) -> u32) -> Vec<u32> {
     let mut order: Vec<u32> = (0..pts.len() as u32).collect();
     order.sort_unstable_by(|&a, &b| lexicographic(pts[a as usize], pts[b as usize]));
-    order.iter().map(|&v| ids[v as usize]).collect()
-}
-
-/// `(y, −x)` order: the lexicographic order of the frame turned a quarter clockwise.
-#[inline]
-fn turned(a: [f64; 2], b: [f64; 2]) -> Ordering {
-    lexicographic([a[1], b[0]], [b[1], a[0]])
+    order.iter().map(|&v| name(v)).collect()
 }
 
 /// Cut direction of a merge.
@@ -98,12 +90,15 @@ enum Cut {
     Horizontal,
 }
 
-/// A hull vertex and a ghost touching it.
+/// A hull vertex and a ghost touching it ([`NO_GHOST`] for a single point).
 #[derive(Debug, Clone, Copy)]
 struct Extreme {
     v: u32,
     ghost: u32,
 }
+
+/// The ghost of a subproblem that is a single point: there is none.
+const NO_GHOST: u32 = u32::MAX;
 
 /// Extreme points of a subproblem in `(x, y)` and in `(y, −x)` order.
 #[derive(Debug, Clone, Copy)]
@@ -114,14 +109,27 @@ struct Extremes {
     max_y: Extreme,
 }
 
+impl Extremes {
+    /// A single point, merged into its sibling without a triangulation of its own.
+    fn point(v: u32) -> Extremes {
+        let e = Extreme { v, ghost: NO_GHOST };
+        Extremes {
+            min_x: e,
+            max_x: e,
+            min_y: e,
+            max_y: e,
+        }
+    }
+}
+
 struct DivideConquer<'a> {
     /// Distinct points; a subproblem may reorder its own range before recursing.
     pts: &'a mut [[f64; 2]],
-    /// Input index of every point, reordered with it.
-    ids: &'a mut [u32],
+    /// Z-order item (key and input index) of every point, reordered with it.
+    items: &'a mut [u64],
     grid: Grid,
     mesh: Mesh,
-    scratch: Vec<([f64; 2], u32)>,
+    scratch: Vec<([f64; 2], u64)>,
 }
 
 impl DivideConquer<'_> {
@@ -134,8 +142,10 @@ impl DivideConquer<'_> {
     fn less(&self, cut: Cut, a: u32, b: u32) -> bool {
         let (pa, pb) = (self.p(a), self.p(b));
         match cut {
-            Cut::Vertical => lexicographic(pa, pb).is_lt(),
-            Cut::Horizontal => turned(pa, pb).is_lt(),
+            // (x, y) order.
+            Cut::Vertical => pa[0] < pb[0] || (pa[0] == pb[0] && pa[1] < pb[1]),
+            // (y, −x) order: the (x, y) order of the frame turned a quarter clockwise.
+            Cut::Horizontal => pa[1] < pb[1] || (pa[1] == pb[1] && pa[0] > pb[0]),
         }
     }
 
@@ -148,9 +158,21 @@ impl DivideConquer<'_> {
         }
         if zorder {
             if let Some((mid, cut)) = self.z_split(lo, hi) {
-                let left = self.triangulate(lo, mid, true);
-                let right = self.triangulate(mid, hi, true);
+                // A side may be a single point (never both: n ≥ 4).
+                let left = match mid - lo {
+                    1 => Extremes::point(lo as u32),
+                    _ => self.triangulate(lo, mid, true),
+                };
+                let right = match hi - mid {
+                    1 => Extremes::point(mid as u32),
+                    _ => self.triangulate(mid, hi, true),
+                };
                 return self.merge(left, right, cut, mid);
+            }
+            // All keys equal: a cluster finer than the grid. Quantize it on its own box and
+            // go on in Z order, unless it is small.
+            if n > 16 && self.rekey(lo, hi) {
+                return self.triangulate(lo, hi, true);
             }
             self.sort_lexicographically(lo, hi);
         }
@@ -160,19 +182,16 @@ impl DivideConquer<'_> {
         self.merge(left, right, Cut::Vertical, mid)
     }
 
-    /// Splits a Z-ordered range at the first key bit its points do not share, unless a side
-    /// would keep fewer than two points.
+    /// Splits a Z-ordered range at the first key bit its points do not share, if any.
     fn z_split(&self, lo: usize, hi: usize) -> Option<(usize, Cut)> {
-        let diff = self.grid.key(self.pts[lo]) ^ self.grid.key(self.pts[hi - 1]);
+        let low = self.grid.index_bits();
+        let diff = (self.items[lo] ^ self.items[hi - 1]) >> low;
         if diff == 0 {
             return None;
         }
-        let bit = 63 - diff.leading_zeros();
-        let grid = self.grid;
-        let mid = lo + self.pts[lo..hi].partition_point(|&p| !grid.key_bit(p, bit));
-        if mid - lo < 2 || hi - mid < 2 {
-            return None;
-        }
+        let bit = 63 - diff.leading_zeros() + low;
+        let mid = lo + self.items[lo..hi].partition_point(|&item| (item >> bit) & 1 == 0);
+        // Odd key bits come from x cells, even ones from y cells.
         let cut = if bit % 2 == 1 {
             Cut::Vertical
         } else {
@@ -181,15 +200,46 @@ impl DivideConquer<'_> {
         Some((mid, cut))
     }
 
+    /// Re-sorts a range (not yet triangulated) of equal keys along the Z curve of its own
+    /// bounding box; the items get the new keys. True when the range now splits, which the
+    /// distinct points guarantee (extremes in cells 0 and 2^32 − 1 on an axis with extent).
+    fn rekey(&mut self, lo: usize, hi: usize) -> bool {
+        let bits = self.grid.index_bits();
+        let local = Grid::of_box(self.pts[lo..hi].iter().copied(), bits);
+        let index_mask = (1u64 << bits) - 1;
+        self.scratch.clear();
+        self.scratch.extend(
+            (lo..hi).map(|v| (self.pts[v], local.key(self.pts[v]) | (self.items[v] & index_mask))),
+        );
+        self.scratch.sort_unstable_by_key(|&(_, item)| item);
+        for (k, &(p, item)) in self.scratch.iter().enumerate() {
+            self.pts[lo + k] = p;
+            self.items[lo + k] = item;
+        }
+        (self.items[lo] ^ self.items[hi - 1]) >> bits != 0
+    }
+
     /// Sorts a range (not yet triangulated) lexicographically, input indices along.
     fn sort_lexicographically(&mut self, lo: usize, hi: usize) {
+        if hi - lo <= 16 {
+            // Small ranges (most fallbacks: a split would leave a single point) in place.
+            for k in lo + 1..hi {
+                let mut j = k;
+                while j > lo && lexicographic(self.pts[j], self.pts[j - 1]).is_lt() {
+                    self.pts.swap(j, j - 1);
+                    self.items.swap(j, j - 1);
+                    j -= 1;
+                }
+            }
+            return;
+        }
         self.scratch.clear();
         self.scratch
-            .extend((lo..hi).map(|v| (self.pts[v], self.ids[v])));
+            .extend((lo..hi).map(|v| (self.pts[v], self.items[v])));
         self.scratch.sort_unstable_by(|a, b| lexicographic(a.0, b.0));
-        for (k, &(p, id)) in self.scratch.iter().enumerate() {
+        for (k, &(p, item)) in self.scratch.iter().enumerate() {
             self.pts[lo + k] = p;
-            self.ids[lo + k] = id;
+            self.items[lo + k] = item;
         }
     }
 
@@ -293,107 +343,151 @@ impl DivideConquer<'_> {
 
         // Hull walk to the lower common tangent (in the frame of the cut). `gl = [l, l_cw]` is
         // the ghost of the left hull edge into l, `gr = [r_ccw, r]` that of the right hull edge
-        // out of r.
+        // out of r; `None` for a side that is a single point.
         let mesh = &self.mesh;
-        let mut gl = if mesh.tri[l_in.ghost as usize][0] == l_in.v {
-            l_in.ghost
-        } else {
-            mesh.ring_prev(l_in.ghost)
-        };
-        let mut gr = if mesh.tri[r_in.ghost as usize][1] == r_in.v {
-            r_in.ghost
-        } else {
-            mesh.ring_next(r_in.ghost)
-        };
-        loop {
-            let [l, l_cw, _] = self.mesh.tri[gl as usize];
-            let [r_ccw, r, _] = self.mesh.tri[gr as usize];
-            let (pl, pr) = (self.p(l), self.p(r));
-            if f.ccw(pl, self.p(l_cw), pr) {
-                gl = self.mesh.ring_prev(gl);
-            } else if f.ccw(pl, self.p(r_ccw), pr) {
-                gr = self.mesh.ring_next(gr);
+        let mut gl = (l_in.ghost != NO_GHOST).then(|| {
+            if mesh.tri[l_in.ghost as usize][0] == l_in.v {
+                l_in.ghost
             } else {
-                break;
+                mesh.ring_prev(l_in.ghost)
             }
+        });
+        let mut gr = (r_in.ghost != NO_GHOST).then(|| {
+            if mesh.tri[r_in.ghost as usize][1] == r_in.v {
+                r_in.ghost
+            } else {
+                mesh.ring_next(r_in.ghost)
+            }
+        });
+        let (mut l, mut r) = (l_in.v, r_in.v);
+        loop {
+            let (pl, pr) = (self.p(l), self.p(r));
+            if let Some(g) = gl {
+                if f.ccw(pl, self.p(self.mesh.tri[g as usize][1]), pr) {
+                    let g = self.mesh.ring_prev(g);
+                    (gl, l) = (Some(g), self.mesh.tri[g as usize][0]);
+                    continue;
+                }
+            }
+            if let Some(g) = gr {
+                if f.ccw(pl, self.p(self.mesh.tri[g as usize][0]), pr) {
+                    let g = self.mesh.ring_next(g);
+                    (gr, r) = (Some(g), self.mesh.tri[g as usize][1]);
+                    continue;
+                }
+            }
+            break;
         }
         let opened = 2 * mid as u32 - 2;
         // Left ghost a = [lc, l] and right ghost b = [r, rc] bound the region still to fill:
         // lc and rc are the candidates, the first neighbours of l and r above the base l–r.
-        let mut a = self.mesh.ring_next(gl);
-        let mut b = self.mesh.ring_prev(gr);
-        let mut base = self.mesh.open(opened, gl, gr);
-        let mut l = self.mesh.tri[gl as usize][0];
-        let mut r = self.mesh.tri[gr as usize][1];
+        // A side that is a single point has no candidates.
+        let mut a = gl.map(|g| self.mesh.ring_next(g));
+        let mut b = gr.map(|g| self.mesh.ring_prev(g));
+        let mut base = self.mesh.open(opened, l, r, gl, gr);
         let (mut pl, mut pr) = (self.p(l), self.p(r));
-        let mut lc = self.mesh.tri[a as usize][0];
-        let mut rc = self.mesh.tri[b as usize][1];
-        let (mut plc, mut prc) = (self.p(lc), self.p(rc));
+        let mut lc = a.map_or(GHOST, |a| self.mesh.tri[a as usize][0]);
+        let mut rc = b.map_or(GHOST, |b| self.mesh.tri[b as usize][1]);
+        let mut plc = a.map_or(pl, |_| self.p(lc));
+        let mut prc = b.map_or(pr, |_| self.p(rc));
+        // Every test of a step is evaluated relative to l: r, lc, rc and the next neighbours
+        // as lifted differences, the validity orientations r × lc, r × rc reused as minors.
         loop {
+            let rel_r = Lifted::new(pr, pl);
             // The edge l–lc is deleted (flipped into the ghost ring) while the next neighbour
             // x of l lies inside the circle through l, r, lc.
-            let mut l_valid = f.ccw(plc, pl, pr);
-            if l_valid {
-                let mut flipped = false;
-                loop {
-                    let x = self.mesh.org(prev(self.mesh.twin[3 * a as usize]));
-                    if x == GHOST {
-                        break;
+            let mut rel_lc = Lifted::new(plc, pl);
+            let mut cross_l = rel_r.cross(&rel_lc);
+            let mut l_valid = false;
+            if let Some(a) = a {
+                l_valid = f.orientation(cross_l).unwrap_or_else(|| ccw(plc, pl, pr));
+                if l_valid {
+                    let mut flipped = false;
+                    loop {
+                        let x = self.mesh.org(prev(self.mesh.twin[3 * a as usize]));
+                        if x == GHOST {
+                            break;
+                        }
+                        let px = self.p(x);
+                        let rel_x = Lifted::new(px, pl);
+                        let delete = f
+                            .in_circle(&rel_r, &rel_lc, &rel_x, cross_l)
+                            .unwrap_or_else(|| inside(pl, pr, plc, px));
+                        if !delete {
+                            break;
+                        }
+                        lc = self.mesh.flip_left(a);
+                        (plc, rel_lc) = (px, rel_x);
+                        cross_l = rel_r.cross(&rel_lc);
+                        flipped = true;
                     }
-                    let px = self.p(x);
-                    if !f.inside(pl, pr, plc, px) {
-                        break;
+                    if flipped {
+                        l_valid = f.orientation(cross_l).unwrap_or_else(|| ccw(plc, pl, pr));
                     }
-                    lc = self.mesh.flip_left(a);
-                    plc = px;
-                    flipped = true;
-                }
-                if flipped {
-                    l_valid = f.ccw(plc, pl, pr);
                 }
             }
-            let mut r_valid = f.ccw(prc, pl, pr);
-            if r_valid {
-                let mut flipped = false;
-                loop {
-                    let z = self.mesh.org(prev(self.mesh.twin[3 * b as usize]));
-                    if z == GHOST {
-                        break;
+            let mut rel_rc = Lifted::new(prc, pl);
+            let mut cross_r = rel_r.cross(&rel_rc);
+            let mut r_valid = false;
+            if let Some(b) = b {
+                r_valid = f.orientation(cross_r).unwrap_or_else(|| ccw(prc, pl, pr));
+                if r_valid {
+                    let mut flipped = false;
+                    loop {
+                        let z = self.mesh.org(prev(self.mesh.twin[3 * b as usize]));
+                        if z == GHOST {
+                            break;
+                        }
+                        let pz = self.p(z);
+                        let rel_z = Lifted::new(pz, pl);
+                        let delete = f
+                            .in_circle(&rel_r, &rel_rc, &rel_z, cross_r)
+                            .unwrap_or_else(|| inside(pl, pr, prc, pz));
+                        if !delete {
+                            break;
+                        }
+                        rc = self.mesh.flip_right(b);
+                        (prc, rel_rc) = (pz, rel_z);
+                        cross_r = rel_r.cross(&rel_rc);
+                        flipped = true;
                     }
-                    let pz = self.p(z);
-                    if !f.inside(pl, pr, prc, pz) {
-                        break;
+                    if flipped {
+                        r_valid = f.orientation(cross_r).unwrap_or_else(|| ccw(prc, pl, pr));
                     }
-                    rc = self.mesh.flip_right(b);
-                    prc = pz;
-                    flipped = true;
-                }
-                if flipped {
-                    r_valid = f.ccw(prc, pl, pr);
                 }
             }
             if !l_valid && !r_valid {
                 break;
             }
-            if !l_valid || (r_valid && f.inside(plc, pl, pr, prc)) {
-                (base, b) = self.mesh.take_right(b, base, l);
+            // Both valid: the right candidate wins if it lies inside the circle through l, r
+            // and the left one.
+            let take_right = !l_valid
+                || (r_valid
+                    && f.in_circle(&rel_r, &rel_lc, &rel_rc, cross_l)
+                        .unwrap_or_else(|| inside(pl, pr, plc, prc)));
+            if let (true, Some(b_ghost)) = (take_right, b) {
+                let next;
+                (base, next) = self.mesh.take_right(b_ghost, base, l);
+                b = Some(next);
                 (r, pr) = (rc, prc);
-                rc = self.mesh.tri[b as usize][1];
+                rc = self.mesh.tri[next as usize][1];
                 prc = self.p(rc);
-            } else {
-                (base, a) = self.mesh.take_left(a, base, r);
+            } else if let Some(a_ghost) = a {
+                let next;
+                (base, next) = self.mesh.take_left(a_ghost, base, r);
+                a = Some(next);
                 (l, pl) = (lc, plc);
-                lc = self.mesh.tri[a as usize][0];
+                lc = self.mesh.tri[next as usize][0];
                 plc = self.p(lc);
             }
         }
         let closed = opened + 1;
-        self.mesh.close(closed, base, a, b);
+        self.mesh.close(closed, (l, r), base, (a, b), opened);
 
         // A ghost of an extreme point may have been turned into a triangle; the point is
         // then an end of a common tangent, whose new ghost touches it.
         for x in [&mut e.min_x, &mut e.max_x, &mut e.min_y, &mut e.max_y] {
-            if !self.mesh.ghost_touches(x.ghost, x.v) {
+            if x.ghost == NO_GHOST || !self.mesh.ghost_touches(x.ghost, x.v) {
                 x.ghost = if self.mesh.ghost_touches(opened, x.v) {
                     opened
                 } else {
@@ -402,5 +496,115 @@ impl DivideConquer<'_> {
             }
         }
         e
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// SplitMix64 in [0, 1).
+    fn rng(seed: u64) -> impl FnMut() -> f64 {
+        let mut s = seed;
+        move || {
+            s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = s;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    /// Triangles by coordinates, each rotated to start at its smallest corner, sorted.
+    fn by_coordinates(tri: &Triangulation) -> Vec<[[u64; 2]; 3]> {
+        let key = |v: u32| tri.points[v as usize].map(f64::to_bits);
+        let mut all: Vec<[[u64; 2]; 3]> = tri
+            .triangles
+            .iter()
+            .map(|t| {
+                let k = t.map(key);
+                let m = (0..3).min_by_key(|&i| k[i]).unwrap_or(0);
+                [k[m], k[(m + 1) % 3], k[(m + 2) % 3]]
+            })
+            .collect();
+        all.sort_unstable();
+        all
+    }
+
+    /// Valid, and the same triangles (up to relabelling) for a reversed and a shuffled input.
+    fn check(points: &[[f64; 2]]) -> Triangulation {
+        let tri = build(points);
+        if let Err(e) = tri.validate() {
+            panic!("{e}");
+        }
+        let mut next = rng(points.len() as u64);
+        let mut shuffled = points.to_vec();
+        for i in (1..shuffled.len()).rev() {
+            shuffled.swap(i, (next() * (i + 1) as f64) as usize);
+        }
+        let reversed: Vec<[f64; 2]> = points.iter().rev().copied().collect();
+        for other in [shuffled, reversed] {
+            let t = build(&other);
+            assert_eq!(by_coordinates(&t), by_coordinates(&tri));
+            let hull = |t: &Triangulation| -> Vec<[f64; 2]> {
+                t.hull.iter().map(|&v| t.points[v as usize]).collect()
+            };
+            assert_eq!(hull(&t), hull(&tri), "same hull from the same first point");
+        }
+        tri
+    }
+
+    #[test]
+    fn outliers_merge_as_single_points() {
+        let mut next = rng(1);
+        for outliers in [1, 2, 3, 7] {
+            let mut pts: Vec<[f64; 2]> = (0..500).map(|_| [next() * 1e-3, next() * 1e-3]).collect();
+            for k in 0..outliers {
+                let angle = k as f64 * 2.1;
+                pts.push([1e3 * angle.cos(), 1e3 * angle.sin()]);
+            }
+            let tri = check(&pts);
+            assert_eq!(tri.distinct_point_count(), pts.len());
+        }
+    }
+
+    #[test]
+    fn a_cluster_finer_than_the_grid_is_requantized() {
+        // 2000 points in a box of 2^-30 next to 1 at distance 1: every cluster point has the
+        // same key on the global grid.
+        let mut next = rng(2);
+        let mut pts: Vec<[f64; 2]> = (0..2000)
+            .map(|_| [0.5 + next() * 2f64.powi(-30), 0.25 + next() * 2f64.powi(-30)])
+            .collect();
+        pts.push([1.5, -0.75]);
+        pts.push([-3.0, 2.0]);
+        check(&pts);
+    }
+
+    #[test]
+    fn long_runs_of_duplicates_map_to_the_first_occurrence() {
+        let mut next = rng(3);
+        let distinct: Vec<[f64; 2]> = (0..10).map(|_| [next(), next()]).collect();
+        let pts: Vec<[f64; 2]> = (0..1000).map(|i| distinct[(i * 7) % 10]).collect();
+        let tri = check(&pts);
+        assert_eq!(tri.duplicates.len(), 990);
+        for &[dup, kept] in &tri.duplicates {
+            assert_eq!(pts[dup as usize], pts[kept as usize]);
+            assert!(kept < 10, "the first occurrence is kept");
+        }
+    }
+
+    #[test]
+    fn alternating_cuts_on_curves_and_lattices() {
+        let mut next = rng(4);
+        let circle: Vec<[f64; 2]> = (0..3000)
+            .map(|_| {
+                let t = next() * std::f64::consts::TAU;
+                [t.cos(), t.sin()]
+            })
+            .collect();
+        check(&circle);
+        let lattice: Vec<[f64; 2]> = (0..2500).map(|i| [(i % 50) as f64, (i / 50) as f64]).collect();
+        check(&lattice);
     }
 }

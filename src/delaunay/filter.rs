@@ -181,28 +181,64 @@ impl StaticFilter {
         }
     }
 
-    /// [`inside`] for points in the box.
+    /// The sign of an orientation determinant `r × a` of [`Lifted`] differences (Shewchuk's
+    /// evaluation of `orient2d(r, a, origin)`), if the bound decides it: `Some(true)` for
+    /// counterclockwise `origin, r, a`.
     #[inline(always)]
-    pub fn inside(&self, a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
-        let adx = a[0] - d[0];
-        let bdx = b[0] - d[0];
-        let cdx = c[0] - d[0];
-        let ady = a[1] - d[1];
-        let bdy = b[1] - d[1];
-        let cdy = c[1] - d[1];
-        let alift = adx * adx + ady * ady;
-        let blift = bdx * bdx + bdy * bdy;
-        let clift = cdx * cdx + cdy * cdy;
-        let det = alift * (bdx * cdy - cdx * bdy)
-            + blift * (cdx * ady - adx * cdy)
-            + clift * (adx * bdy - bdx * ady);
-        if det > self.incircle {
-            true
-        } else if -det > self.incircle {
-            false
+    pub fn orientation(&self, cross: f64) -> Option<bool> {
+        if cross > self.ccw {
+            Some(true)
+        } else if -cross > self.ccw {
+            Some(false)
         } else {
-            inside(a, b, c, d)
+            None
         }
+    }
+
+    /// Is `b` inside the circle through the counterclockwise `origin, r, a`, if the bound
+    /// decides it? All three are [`Lifted`] differences to the origin and `cross_ra = r × a`.
+    ///
+    /// This is Shewchuk's evaluation of the in-circle determinant with the origin as the
+    /// fourth point: `incircle(origin, r, a, b) = −det[r; a; b]`, the rows lifted (a cyclic
+    /// shift of the four rows flips the sign), evaluated in his order, so his bound holds.
+    #[inline(always)]
+    pub fn in_circle(&self, r: &Lifted, a: &Lifted, b: &Lifted, cross_ra: f64) -> Option<bool> {
+        let det = r.lift * (a.x * b.y - b.x * a.y)
+            + a.lift * (b.x * r.y - r.x * b.y)
+            + b.lift * cross_ra;
+        if det > self.incircle {
+            Some(false)
+        } else if -det > self.incircle {
+            Some(true)
+        } else {
+            None
+        }
+    }
+}
+
+/// A point as a difference to an origin, with its lifting `x² + y²`.
+#[derive(Debug, Clone, Copy)]
+pub struct Lifted {
+    pub x: f64,
+    pub y: f64,
+    pub lift: f64,
+}
+
+impl Lifted {
+    #[inline(always)]
+    pub fn new(p: [f64; 2], origin: [f64; 2]) -> Lifted {
+        let (x, y) = (p[0] - origin[0], p[1] - origin[1]);
+        Lifted {
+            x,
+            y,
+            lift: x * x + y * y,
+        }
+    }
+
+    /// `self × a`, evaluated as Shewchuk's `orient2d(self, a, origin)`.
+    #[inline(always)]
+    pub fn cross(&self, a: &Lifted) -> f64 {
+        self.x * a.y - self.y * a.x
     }
 }
 
@@ -241,12 +277,22 @@ mod tests {
             let [a, b, c, d] = pts;
             let exact = orient2d(a, b, c);
             assert_eq!(f.ccw(a, b, c), exact == Orientation::CounterClockwise);
+            // The same tests relative to a: orient(a, b, c) is b' × c'.
+            let (rb, rc, rd) = (Lifted::new(b, a), Lifted::new(c, a), Lifted::new(d, a));
+            if let Some(ccw) = f.orientation(rb.cross(&rc)) {
+                assert_eq!(ccw, exact == Orientation::CounterClockwise);
+            }
             let (a, b) = if exact == Orientation::Clockwise { (b, a) } else { (a, b) };
+            let (rb, rc, rd) = if exact == Orientation::Clockwise {
+                (Lifted::new(b, a), Lifted::new(c, a), Lifted::new(d, a))
+            } else {
+                (rb, rc, rd)
+            };
             if exact != Orientation::Collinear {
-                assert_eq!(
-                    f.inside(a, b, c, d),
-                    incircle(a, b, c, d) == CirclePosition::Inside
-                );
+                let inside_exact = incircle(a, b, c, d) == CirclePosition::Inside;
+                if let Some(inside) = f.in_circle(&rb, &rc, &rd, rb.cross(&rc)) {
+                    assert_eq!(inside, inside_exact, "{a:?} {b:?} {c:?} {d:?}");
+                }
             }
         }
     }

@@ -25,9 +25,6 @@
 /// The vertex at infinity of the ghost triangles.
 pub const GHOST: u32 = u32::MAX;
 
-/// Argument of [`Mesh::ghost_ring`]: this ghost's hull edge is glued by the caller.
-const UNLINKED: u32 = u32::MAX;
-
 /// The next half-edge counterclockwise in the same triangle.
 #[inline]
 pub fn next(e: u32) -> u32 {
@@ -102,28 +99,17 @@ impl Mesh {
         t[2] == GHOST && (t[0] == v || t[1] == v)
     }
 
-    /// Writes ghosts for the closed hull walk `hull` (each consecutive pair, wrapping, is a
-    /// counterclockwise hull edge) into slots `first..`, linked into a ring. `outer[i]` is the
-    /// half-edge `hull[i] → hull[i + 1]` on the inner side, or [`UNLINKED`] when that side is
-    /// itself one of these ghosts (then it is linked to the reverse ghost here).
-    fn ghost_ring(&mut self, first: u32, hull: &[u32], outer: &[u32]) {
-        let h = hull.len() as u32;
-        for i in 0..h {
-            let g = first + i;
-            let a = hull[i as usize];
-            let b = hull[((i + 1) % h) as usize];
-            self.tri[g as usize] = [b, a, GHOST];
-            if outer[i as usize] != UNLINKED {
-                self.link(3 * g, outer[i as usize]);
-            }
-            let g_next = first + (i + 1) % h;
-            self.link(3 * g + 2, 3 * g_next + 1);
-        }
+    /// Ghost `g = [b, a, GHOST]` of the hull edge `a → b`, glued to the next ghost `g_next`.
+    #[inline]
+    fn ghost(&mut self, g: u32, a: u32, b: u32, g_next: u32) {
+        self.tri[g as usize] = [b, a, GHOST];
+        self.link(3 * g + 2, 3 * g_next + 1);
     }
 
     /// Two points: two ghosts back to back in slot `s` (`[b, a]`) and `s + 1` (`[a, b]`).
     pub fn pair(&mut self, s: u32, a: u32, b: u32) {
-        self.ghost_ring(s, &[a, b], &[UNLINKED, UNLINKED]);
+        self.ghost(s, a, b, s + 1);
+        self.ghost(s + 1, b, a, s);
         self.link(3 * s, 3 * (s + 1));
     }
 
@@ -131,38 +117,55 @@ impl Mesh {
     /// (`[b, a]`, `[c, b]`, `[a, c]`).
     pub fn triangle(&mut self, s: u32, a: u32, b: u32, c: u32) {
         self.tri[s as usize] = [a, b, c];
-        self.ghost_ring(s + 1, &[a, b, c], &[3 * s, 3 * s + 1, 3 * s + 2]);
+        self.ghost(s + 1, a, b, s + 2);
+        self.ghost(s + 2, b, c, s + 3);
+        self.ghost(s + 3, c, a, s + 1);
+        for k in 0..3 {
+            self.link(3 * s + k, 3 * (s + 1 + k));
+        }
     }
 
     /// Three collinear points with `b` between `a` and `c`: four ghosts in `s..s + 4`
     /// (`[b, a]`, `[c, b]`, `[b, c]`, `[a, b]`).
     pub fn chain3(&mut self, s: u32, a: u32, b: u32, c: u32) {
-        self.ghost_ring(s, &[a, b, c, b], &[UNLINKED; 4]);
+        self.ghost(s, a, b, s + 1);
+        self.ghost(s + 1, b, c, s + 2);
+        self.ghost(s + 2, c, b, s + 3);
+        self.ghost(s + 3, b, a, s);
         self.link(3 * s, 3 * (s + 3));
         self.link(3 * (s + 1), 3 * (s + 2));
     }
 
     /// Starts a merge: the ghost of the new hull edge `l → r` goes to slot `s`, between the
-    /// ghost `gl = [l, ·]` (edge into `l`) and `gr = [·, r]` (edge out of `r`). Returns the
+    /// ghost `gl = [l, ·]` (edge into `l`) and `gr = [·, r]` (edge out of `r`); `None` for a
+    /// side that is a single point (then [`Self::close`] glues that side). Returns the
     /// half-edge `r → l` that the first new triangle will be glued to.
-    pub fn open(&mut self, s: u32, gl: u32, gr: u32) -> u32 {
-        let l = self.tri[gl as usize][0];
-        let r = self.tri[gr as usize][1];
+    pub fn open(&mut self, s: u32, l: u32, r: u32, gl: Option<u32>, gr: Option<u32>) -> u32 {
         self.tri[s as usize] = [r, l, GHOST];
-        self.link(3 * s + 1, 3 * gl + 2);
-        self.link(3 * s + 2, 3 * gr + 1);
+        if let Some(gl) = gl {
+            self.link(3 * s + 1, 3 * gl + 2);
+        }
+        if let Some(gr) = gr {
+            self.link(3 * s + 2, 3 * gr + 1);
+        }
         3 * s
     }
 
     /// Ends a merge: the ghost of the new hull edge `r → l` goes to slot `s`, glued to `base`
-    /// (`r → l`) and to the ring ghosts `a = [·, l]` and `b = [r, ·]`.
-    pub fn close(&mut self, s: u32, base: u32, a: u32, b: u32) {
-        let l = self.tri[a as usize][1];
-        let r = self.tri[b as usize][0];
+    /// (`r → l`) and to the ring ghosts `a = [·, l]` and `b = [r, ·]`, or, for a side that is
+    /// a single point, to the ghost `opened` of [`Self::open`].
+    pub fn close(
+        &mut self,
+        s: u32,
+        (l, r): (u32, u32),
+        base: u32,
+        (a, b): (Option<u32>, Option<u32>),
+        opened: u32,
+    ) {
         self.tri[s as usize] = [l, r, GHOST];
         self.link(3 * s, base);
-        self.link(3 * s + 1, 3 * b + 2);
-        self.link(3 * s + 2, 3 * a + 1);
+        self.link(3 * s + 1, b.map_or(3 * opened + 2, |b| 3 * b + 2));
+        self.link(3 * s + 2, a.map_or(3 * opened + 1, |a| 3 * a + 1));
     }
 
     /// Deletes the edge between `l` and `c` on the left side of a merge by flipping it with
@@ -231,16 +234,16 @@ impl Mesh {
 
     /// Finishes the triangulation: the hull counterclockwise from the ghost `g` of the hull
     /// edge out of its first point (`g = [·, first]`), and the triangles and twins without the
-    /// ghosts ([`NO_TWIN`](super::NO_TWIN) on the hull), every vertex `v` renamed `names[v]`.
+    /// ghosts ([`NO_TWIN`](super::NO_TWIN) on the hull), every vertex `v` renamed `name(v)`.
     ///
     /// The real triangles in the last slots move into the ghosts' slots below them, so only as
     /// many triangles move as there are hull edges; then one pass renames the vertices.
-    pub fn finish(mut self, g: u32, names: &[u32], no_twin: u32) -> Finished {
+    pub fn finish(mut self, g: u32, name: impl Fn(u32) -> u32, no_twin: u32) -> Finished {
         let mut hull = Vec::new();
         let mut ghosts = Vec::new();
         let mut h = g;
         loop {
-            hull.push(names[self.tri[h as usize][1] as usize]);
+            hull.push(name(self.tri[h as usize][1]));
             ghosts.push(h);
             let hull_edge = self.twin[(3 * h) as usize];
             self.twin[hull_edge as usize] = no_twin;
@@ -273,7 +276,7 @@ impl Mesh {
         self.tri.truncate(real);
         self.twin.truncate(3 * real);
         for t in &mut self.tri {
-            *t = t.map(|v| names[v as usize]);
+            *t = t.map(&name);
         }
         self.tri.shrink_to_fit();
         self.twin.shrink_to_fit();
@@ -352,10 +355,15 @@ mod tests {
     fn compaction_moves_triangles_over_ghosts() {
         // A real triangle in the last slot, behind its three ghosts: it has to move.
         let mut m2 = Mesh::for_points(3);
-        m2.ghost_ring(0, &[0, 1, 2], &[9, 10, 11]);
+        m2.ghost(0, 0, 1, 1);
+        m2.ghost(1, 1, 2, 2);
+        m2.ghost(2, 2, 0, 0);
         m2.tri[3] = [0, 1, 2];
+        for k in 0..3 {
+            m2.link(3 * k, 9 + k);
+        }
         assert_glued(&m2);
-        let done = m2.finish(0, &[7, 8, 9], u32::MAX);
+        let done = m2.finish(0, |v| v + 7, u32::MAX);
         assert_eq!(done.triangles, vec![[7, 8, 9]]);
         assert_eq!(done.halfedges, vec![u32::MAX; 3]);
         assert_eq!(done.hull, vec![7, 8, 9]);

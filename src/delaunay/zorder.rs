@@ -10,25 +10,34 @@
 
 use std::cmp::Ordering;
 
-/// Key bits the radix sort orders by (the top ones, 22 per axis); lower bits only refine
-/// cells of 2^-22 of the bounding box, where the recursion switches to lexicographic order.
-const SORTED_KEY_BITS: u32 = 44;
-const KEY_MASK: u64 = !0 << (64 - SORTED_KEY_BITS);
 /// Radix digit: 2^11 counters stay in the L1/L2 caches while scattering.
 const DIGIT_BITS: u32 = 11;
 
 /// Monotone quantization of the bounding box.
+///
+/// Only the top bits of the key are sorted: the low `index_bits` carry the input index while
+/// sorting, so an item is one `u64` (44 key bits for 10^6 points, 32 for 2^32). Points that
+/// share a key anyway (a dense cluster far from outliers) are re-quantized on their own
+/// bounding box.
 #[derive(Debug, Clone, Copy)]
 pub struct Grid {
     min: [f64; 2],
     scale: [f64; 2],
+    index_bits: u32,
 }
 
 impl Grid {
     /// The grid of the bounding box of `points` (finite, not empty).
     pub fn new(points: &[[f64; 2]]) -> Grid {
-        let mut lo = points[0];
-        let mut hi = points[0];
+        let index_bits = u64::BITS - (points.len() as u64 - 1).leading_zeros();
+        Grid::of_box(points.iter().copied(), index_bits)
+    }
+
+    /// The grid of the bounding box of `points` (finite, not empty), for items whose low
+    /// `index_bits` hold an index.
+    pub fn of_box(points: impl Iterator<Item = [f64; 2]>, index_bits: u32) -> Grid {
+        let mut lo = [f64::INFINITY; 2];
+        let mut hi = [f64::NEG_INFINITY; 2];
         for p in points {
             for k in 0..2 {
                 lo[k] = lo[k].min(p[k]);
@@ -48,6 +57,7 @@ impl Grid {
         Grid {
             min: lo,
             scale: [scale(0), scale(1)],
+            index_bits,
         }
     }
 
@@ -58,17 +68,24 @@ impl Grid {
         ((p[k] - self.min[k]) * self.scale[k]) as u32
     }
 
-    /// The sorted part of the Morton key (lower bits zero).
+    /// The sorted part of the Morton key (the low `index_bits` zero).
     #[inline]
     pub fn key(&self, p: [f64; 2]) -> u64 {
-        ((spread(self.cell(p, 0)) << 1) | spread(self.cell(p, 1))) & KEY_MASK
+        let key = (spread(self.cell(p, 0)) << 1) | spread(self.cell(p, 1));
+        key >> self.index_bits << self.index_bits
     }
 
-    /// Is bit `b` of the key of `p` set?
+    /// Input index of a sorted item.
     #[inline]
-    pub fn key_bit(&self, p: [f64; 2], b: u32) -> bool {
-        let axis = if b % 2 == 1 { 0 } else { 1 };
-        (self.cell(p, axis) >> (b / 2)) & 1 == 1
+    pub fn index(&self, item: u64) -> u32 {
+        (item & ((1 << self.index_bits) - 1)) as u32
+    }
+
+    /// Position of key bit `b` (`b ≥ index_bits`) in an item: items are keys with the low
+    /// bits replaced by the index.
+    #[inline]
+    pub fn index_bits(&self) -> u32 {
+        self.index_bits
     }
 }
 
@@ -91,93 +108,154 @@ pub fn lexicographic(a: [f64; 2], b: [f64; 2]) -> Ordering {
         .then(a[1].partial_cmp(&b[1]).unwrap_or(Ordering::Equal))
 }
 
-/// The distinct points in key order (points with equal keys lexicographically), their input
-/// indices, and the `[duplicate, kept]` pairs sorted by duplicate.
+/// The distinct points in key order (points with equal keys lexicographically), their
+/// items (key in the high bits, input index in the low [`Grid::index_bits`]), and the
+/// `[duplicate, kept]` pairs sorted by duplicate.
 pub struct Ordered {
     pub points: Vec<[f64; 2]>,
-    pub ids: Vec<u32>,
+    pub items: Vec<u64>,
     pub duplicates: Vec<[u32; 2]>,
 }
 
 /// Orders `points` (finite, not empty) along the Z curve of `grid` and merges exact
 /// duplicates into their first occurrence.
 pub fn order(points: &[[f64; 2]], grid: &Grid) -> Ordered {
-    let mut items: Vec<(u64, u32)> = points
+    let key_mask = !0u64 << grid.index_bits;
+    let mut items: Vec<u64> = points
         .iter()
         .enumerate()
-        .map(|(i, &p)| (grid.key(p), i as u32))
+        .map(|(i, &p)| grid.key(p) | i as u64)
         .collect();
-    radix_sort(&mut items);
-    // Equal keys: order by coordinates, then index, so duplicates are adjacent and the first
-    // occurrence leads. Rare (cells are 2^-24 of the box), so a comparison sort is fine.
+    radix_sort(&mut items, grid.index_bits);
+    settle_runs(&mut items, points, grid.index_bits);
+    let point = |item: u64| points[grid.index(item) as usize];
+    // Drop the duplicates in place (only equal keys need coordinates).
+    let mut duplicates = Vec::new();
+    let mut w = 0;
+    for k in 0..items.len() {
+        let item = items[k];
+        if w > 0
+            && (items[w - 1] ^ item) & key_mask == 0
+            && lexicographic(point(items[w - 1]), point(item)).is_eq()
+        {
+            duplicates.push([grid.index(item), grid.index(items[w - 1])]);
+            continue;
+        }
+        items[w] = item;
+        w += 1;
+    }
+    items.truncate(w);
+    duplicates.sort_unstable();
+    // Copy the kept points into key order: scatter the ranks, then read the input in order
+    // and write each point to its rank. Scattered writes do not stall the way scattered reads
+    // (a gather) do.
+    const DROPPED: u32 = u32::MAX;
+    let mut rank = vec![DROPPED; points.len()];
+    for (k, &item) in items.iter().enumerate() {
+        rank[grid.index(item) as usize] = k as u32;
+    }
+    let mut kept = vec![[0.0; 2]; items.len()];
+    for (&p, &r) in points.iter().zip(&rank) {
+        if r != DROPPED {
+            kept[r as usize] = p;
+        }
+    }
+    Ordered {
+        points: kept,
+        items,
+        duplicates,
+    }
+}
+
+/// Orders every run of items with equal keys so that exact duplicates are adjacent, the first
+/// occurrence first: short runs lexicographically (then by index); long runs, which only a
+/// wide spread of scales produces (a dense cluster and far outliers), along the Z curve of
+/// their own bounding box first, recursively, so that no long run is comparison-sorted. The
+/// keys of a run stay equal, so the recursion re-keys it the same way when it gets there.
+fn settle_runs(items: &mut [u64], points: &[[f64; 2]], index_bits: u32) {
+    const SHORT: usize = 64;
+    let key_mask = !0u64 << index_bits;
+    let index = |item: u64| (item & !key_mask) as usize;
     let mut start = 0;
     while start < items.len() {
-        let key = items[start].0;
+        let key = items[start] & key_mask;
         let mut end = start + 1;
-        while end < items.len() && items[end].0 == key {
+        while end < items.len() && items[end] & key_mask == key {
             end += 1;
         }
-        if end - start > 1 {
-            items[start..end].sort_unstable_by(|a, b| {
-                lexicographic(points[a.1 as usize], points[b.1 as usize]).then(a.1.cmp(&b.1))
+        let run = &mut items[start..end];
+        let mut sorted = false;
+        if run.len() > SHORT {
+            let local = Grid::of_box(run.iter().map(|&item| points[index(item)]), index_bits);
+            for item in run.iter_mut() {
+                *item = local.key(points[index(*item)]) | (*item & !key_mask);
+            }
+            radix_sort(run, index_bits);
+            // Distinct points in the run split it; copies of one point do not.
+            if (run[0] ^ run[run.len() - 1]) & key_mask != 0 {
+                settle_runs(run, points, index_bits);
+                sorted = true;
+            }
+            for item in run.iter_mut() {
+                *item = key | (*item & !key_mask);
+            }
+        }
+        if !sorted && run.len() > 1 {
+            run.sort_unstable_by(|&a, &b| {
+                lexicographic(points[index(a)], points[index(b)]).then(index(a).cmp(&index(b)))
             });
         }
         start = end;
     }
-    let mut ordered = Ordered {
-        points: Vec::with_capacity(items.len()),
-        ids: Vec::with_capacity(items.len()),
-        duplicates: Vec::new(),
-    };
-    for (k, &(key, i)) in items.iter().enumerate() {
-        let p = points[i as usize];
-        if k > 0 && items[k - 1].0 == key {
-            let kept = *ordered.ids.last().expect("a point precedes");
-            if lexicographic(points[kept as usize], p).is_eq() {
-                ordered.duplicates.push([i, kept]);
-                continue;
-            }
-        }
-        ordered.points.push(p);
-        ordered.ids.push(i);
-    }
-    ordered.duplicates.sort_unstable();
-    ordered
 }
 
-/// Stable least-significant-digit radix sort by the sorted key bits, [`DIGIT_BITS`] per
+/// Stable least-significant-digit radix sort by the bits above `low`, [`DIGIT_BITS`] per
 /// pass; passes whose digit is the same for every item are skipped.
-fn radix_sort(items: &mut Vec<(u64, u32)>) {
-    const PASSES: usize = (SORTED_KEY_BITS / DIGIT_BITS) as usize;
-    const LOW: u32 = 64 - SORTED_KEY_BITS;
+fn radix_sort(items: &mut [u64], low: u32) {
     const MASK: u64 = (1 << DIGIT_BITS) - 1;
+    let passes = (u64::BITS - low).div_ceil(DIGIT_BITS) as usize;
     let n = items.len();
-    let mut counts = vec![[0usize; 1 << DIGIT_BITS]; PASSES];
-    for &(key, _) in items.iter() {
+    let mut counts = vec![[0usize; 1 << DIGIT_BITS]; passes];
+    for &key in items.iter() {
         for (d, count) in counts.iter_mut().enumerate() {
-            count[((key >> (LOW + DIGIT_BITS * d as u32)) & MASK) as usize] += 1;
+            count[((key >> (low + DIGIT_BITS * d as u32)) & MASK) as usize] += 1;
         }
     }
-    let mut buffer: Vec<(u64, u32)> = Vec::new();
+    let mut buffer: Vec<u64> = Vec::new();
+    // Passes alternate between `items` and `buffer`; true when the latest order is in `buffer`.
+    let mut in_buffer = false;
     for (d, count) in counts.iter_mut().enumerate() {
         if count.contains(&n) {
             continue;
         }
         if buffer.is_empty() {
-            buffer = vec![(0, 0); n];
+            buffer = vec![0; n];
         }
         // Counts become start offsets.
         let mut sum = 0;
         for c in count.iter_mut() {
             (*c, sum) = (sum, sum + *c);
         }
-        let shift = LOW + DIGIT_BITS * d as u32;
-        for &item in items.iter() {
-            let digit = ((item.0 >> shift) & MASK) as usize;
-            buffer[count[digit]] = item;
-            count[digit] += 1;
+        let shift = low + DIGIT_BITS * d as u32;
+        if in_buffer {
+            scatter(&buffer, items, count, shift);
+        } else {
+            scatter(items, &mut buffer, count, shift);
         }
-        std::mem::swap(items, &mut buffer);
+        in_buffer = !in_buffer;
+    }
+    if in_buffer {
+        items.copy_from_slice(&buffer);
+    }
+}
+
+/// One radix pass: `src` into `dst` by the digit at `shift`, `offset` the start of each digit.
+#[inline]
+fn scatter(src: &[u64], dst: &mut [u64], offset: &mut [usize], shift: u32) {
+    for &item in src {
+        let digit = ((item >> shift) & ((1 << DIGIT_BITS) - 1)) as usize;
+        dst[offset[digit]] = item;
+        offset[digit] += 1;
     }
 }
 
@@ -216,12 +294,13 @@ mod tests {
         let o = order(&pts, &g);
         assert!(o.points.windows(2).all(|w| g.key(w[0]) <= g.key(w[1])));
         assert_eq!(o.points.len() + o.duplicates.len(), pts.len());
+        let ids: Vec<u32> = o.items.iter().map(|&item| g.index(item)).collect();
         for &[dup, kept] in &o.duplicates {
             assert!(kept < dup);
             assert_eq!(pts[dup as usize], pts[kept as usize]);
-            assert!(o.ids.contains(&kept));
+            assert!(ids.contains(&kept));
         }
-        for (k, &i) in o.ids.iter().enumerate() {
+        for (k, &i) in ids.iter().enumerate() {
             assert_eq!(o.points[k], pts[i as usize]);
             assert!(pts[..i as usize].iter().all(|&p| p != pts[i as usize]), "first kept");
         }

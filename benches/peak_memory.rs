@@ -31,7 +31,11 @@ fn main() {
         }
         "reconstruct" => {
             let rec = wdm_crust::reconstruct(&points).expect("valid points");
-            println!("{} crust edges, {} curves", rec.edges().len(), rec.curves().len());
+            println!(
+                "{} crust edges, {} curves",
+                rec.edges().len(),
+                rec.curves().len()
+            );
         }
         other => eprintln!("unknown operation {other}"),
     }

@@ -44,10 +44,17 @@ fn bench_predicates(c: &mut Criterion) {
     let nudge = |x: f64, k: i64| f64::from_bits((x.to_bits() as i64 + k) as u64);
     let near_line: Vec<[[f64; 2]; 3]> = (0..BATCH)
         .map(|_| {
-            let (a, b) = ([rng.uniform(), rng.uniform()], [rng.uniform(), rng.uniform()]);
+            let (a, b) = (
+                [rng.uniform(), rng.uniform()],
+                [rng.uniform(), rng.uniform()],
+            );
             let t = rng.uniform();
             let k = (rng.next_u64() % 5) as i64 - 2;
-            [a, b, [a[0] + t * (b[0] - a[0]), nudge(a[1] + t * (b[1] - a[1]), k)]]
+            [
+                a,
+                b,
+                [a[0] + t * (b[0] - a[0]), nudge(a[1] + t * (b[1] - a[1]), k)],
+            ]
         })
         .collect();
     let near_circle: Vec<[[f64; 2]; 4]> = (0..BATCH)
@@ -69,10 +76,20 @@ fn bench_predicates(c: &mut Criterion) {
     let mut group = c.benchmark_group("predicates");
     group.throughput(Throughput::Elements(BATCH as u64));
     group.bench_function("orient2d/random", |b| {
-        b.iter(|| random.iter().filter(|p| orient2d(p[0], p[1], p[2]) as u8 == 0).count())
+        b.iter(|| {
+            random
+                .iter()
+                .filter(|p| orient2d(p[0], p[1], p[2]) as u8 == 0)
+                .count()
+        })
     });
     group.bench_function("orient2d/near_collinear", |b| {
-        b.iter(|| near_line.iter().filter(|p| orient2d(p[0], p[1], p[2]) as u8 == 0).count())
+        b.iter(|| {
+            near_line
+                .iter()
+                .filter(|p| orient2d(p[0], p[1], p[2]) as u8 == 0)
+                .count()
+        })
     });
     group.bench_function("incircle/random", |b| {
         b.iter(|| {

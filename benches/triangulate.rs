@@ -20,8 +20,10 @@ fn bench_point_sets(c: &mut Criterion) {
             group.bench_with_input(BenchmarkId::new("wdm_crust", n), &points, |b, p| {
                 b.iter(|| wdm_crust::triangulate(p).expect("valid points"))
             });
-            let spade_points: Vec<spade::Point2<f64>> =
-                points.iter().map(|p| spade::Point2::new(p[0], p[1])).collect();
+            let spade_points: Vec<spade::Point2<f64>> = points
+                .iter()
+                .map(|p| spade::Point2::new(p[0], p[1]))
+                .collect();
             group.bench_with_input(BenchmarkId::new("spade_bulk", n), &spade_points, |b, p| {
                 use spade::Triangulation as _;
                 // bulk_load takes its input by value: the copy is made outside the timing.

@@ -78,7 +78,13 @@ proptest! {
 #[test]
 fn exact_polygon_rate_by_epsilon() {
     let mut rng = Rng::new(2024);
-    for (eps, min_rate) in [(0.2, 0.95), (0.39, 0.95), (0.5, 0.0), (0.8, 0.0), (1.2, 0.0)] {
+    for (eps, min_rate) in [
+        (0.2, 0.95),
+        (0.39, 0.95),
+        (0.5, 0.0),
+        (0.8, 0.0),
+        (1.2, 0.0),
+    ] {
         let trials = 24;
         let (mut all_adjacent, mut exact) = (0, 0);
         for t in 0..trials {
@@ -93,7 +99,9 @@ fn exact_polygon_rate_by_epsilon() {
             exact += usize::from(missing == 0 && extra == 0);
         }
         let rate = exact as f64 / trials as f64;
-        eprintln!("eps {eps}: all adjacent pairs {all_adjacent}/{trials}, exact polygon {exact}/{trials}");
+        eprintln!(
+            "eps {eps}: all adjacent pairs {all_adjacent}/{trials}, exact polygon {exact}/{trials}"
+        );
         assert!(rate >= min_rate, "eps {eps}: exact-polygon rate {rate}");
     }
 }

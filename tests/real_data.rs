@@ -21,7 +21,9 @@ fn read(dir: &std::path::Path, file: &str) -> Vec<[f64; 2]> {
 /// Recall and precision of the reconstruction against the closed polygon in file order.
 fn recall_precision(points: &[[f64; 2]]) -> (f64, f64) {
     let n = points.len() as u32;
-    let truth: BTreeSet<[u32; 2]> = (0..n).map(|i| [i.min((i + 1) % n), i.max((i + 1) % n)]).collect();
+    let truth: BTreeSet<[u32; 2]> = (0..n)
+        .map(|i| [i.min((i + 1) % n), i.max((i + 1) % n)])
+        .collect();
     let rec = wdm_crust::reconstruct(points).unwrap();
     let ours: BTreeSet<[u32; 2]> = rec.edges().iter().copied().collect();
     let hits = truth.intersection(&ours).count() as f64;
@@ -48,7 +50,10 @@ fn ordered_sets_reach_their_recall_and_precision() {
         let (recall, precision) = recall_precision(&read(&dir, file));
         eprintln!("{file}: recall {recall:.3}, precision {precision:.3}");
         assert!(recall >= min_recall, "{file}: recall {recall:.3}");
-        assert!(precision >= min_precision, "{file}: precision {precision:.3}");
+        assert!(
+            precision >= min_precision,
+            "{file}: precision {precision:.3}"
+        );
     }
 }
 
@@ -56,7 +61,10 @@ fn ordered_sets_reach_their_recall_and_precision() {
 /// gap to the next point exceeds three times the median gap (the files have no break marker).
 fn component_edges(points: &[[f64; 2]]) -> BTreeSet<[u32; 2]> {
     let n = points.len();
-    let gap = |i: usize| ((points[i + 1][0] - points[i][0]).powi(2) + (points[i + 1][1] - points[i][1]).powi(2)).sqrt();
+    let gap = |i: usize| {
+        ((points[i + 1][0] - points[i][0]).powi(2) + (points[i + 1][1] - points[i][1]).powi(2))
+            .sqrt()
+    };
     let mut gaps: Vec<f64> = (0..n - 1).map(gap).collect();
     gaps.sort_by(f64::total_cmp);
     let median = gaps[gaps.len() / 2];
@@ -90,8 +98,14 @@ fn multi_curve_sets_keep_their_recall() {
         let ours: BTreeSet<[u32; 2]> = rec.edges().iter().copied().collect();
         let hits = truth.intersection(&ours).count() as f64;
         let (recall, precision) = (hits / truth.len() as f64, hits / ours.len() as f64);
-        eprintln!("{file}: recall {recall:.3}, precision {precision:.3}, {} curves", rec.curves().len());
-        assert!(recall >= min_recall && precision >= min_precision, "{file}: {recall:.3} / {precision:.3}");
+        eprintln!(
+            "{file}: recall {recall:.3}, precision {precision:.3}, {} curves",
+            rec.curves().len()
+        );
+        assert!(
+            recall >= min_recall && precision >= min_precision,
+            "{file}: {recall:.3} / {precision:.3}"
+        );
     }
 }
 
@@ -102,7 +116,10 @@ fn every_data_file_triangulates_and_reconstructs() {
     for sub in ["hnn-crust-sgp16", "fitconnect/data", "stretchdenoise/data"] {
         for entry in std::fs::read_dir(dir.join(sub)).unwrap() {
             let path = entry.unwrap().path();
-            if matches!(path.extension().and_then(|e| e.to_str()), Some("p2d" | "txt" | "xy" | "xym" | "gtn")) {
+            if matches!(
+                path.extension().and_then(|e| e.to_str()),
+                Some("p2d" | "txt" | "xy" | "xym" | "gtn")
+            ) {
                 files.push(path);
             }
         }
@@ -111,7 +128,8 @@ fn every_data_file_triangulates_and_reconstructs() {
     for path in files {
         let points = wdm_crust::io::read_points_from_path(&path).unwrap();
         let tri = wdm_crust::triangulate(&points).unwrap();
-        tri.validate().unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        tri.validate()
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let rec = wdm_crust::reconstruct(&points).unwrap();
         assert!(!rec.edges().is_empty(), "{}", path.display());
     }

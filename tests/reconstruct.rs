@@ -3,19 +3,27 @@
 
 use std::collections::BTreeSet;
 use wdm_crust::reconstruct::{Label, LabelRule, Options};
-use wdm_crust::sample::{ClosedCurve, CurveSet, Ellipse, Peanut, Rng, Sample, SampleConfig, Similarity, Star};
+use wdm_crust::sample::{
+    ClosedCurve, CurveSet, Ellipse, Peanut, Rng, Sample, SampleConfig, Similarity, Star,
+};
 use wdm_crust::{reconstruct, reconstruct_with};
 
 type EdgeSet = BTreeSet<(usize, usize)>;
 
 fn edge_set(edges: &[[u32; 2]]) -> EdgeSet {
-    edges.iter().map(|&[a, b]| (a as usize, b as usize)).collect()
+    edges
+        .iter()
+        .map(|&[a, b]| (a as usize, b as usize))
+        .collect()
 }
 
 /// (ground-truth edges missing, reconstructed edges not in the ground truth).
 fn score(truth: &EdgeSet, edges: &[[u32; 2]]) -> (usize, usize) {
     let ours = edge_set(edges);
-    (truth.difference(&ours).count(), ours.difference(truth).count())
+    (
+        truth.difference(&ours).count(),
+        ours.difference(truth).count(),
+    )
 }
 
 /// Points along the edges of a polygon, `per_edge` per edge, corners included.
@@ -33,7 +41,9 @@ fn polygon_samples(corners: &[[f64; 2]], per_edge: usize) -> Vec<[f64; 2]> {
 }
 
 fn cycle_edges(n: usize) -> EdgeSet {
-    (0..n).map(|i| (i.min((i + 1) % n), i.max((i + 1) % n))).collect()
+    (0..n)
+        .map(|i| (i.min((i + 1) % n), i.max((i + 1) % n)))
+        .collect()
 }
 
 #[test]
@@ -41,10 +51,26 @@ fn sharp_cornered_polygons_are_reconstructed_exactly() {
     let polygons: [&[[f64; 2]]; 5] = [
         &[[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]],
         &[[0.0, 0.0], [5.0, 0.0], [2.0, 4.0]],
-        &[[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [1.0, 1.0], [1.0, 4.0], [0.0, 4.0]],
+        &[
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 4.0],
+            [0.0, 4.0],
+        ],
         &[[0.0, 0.0], [2.0, 3.0], [4.0, 0.0], [4.0, 5.0], [0.0, 5.0]],
         // A notch whose walls converge inwards: a BNC concavity.
-        &[[0.0, 0.0], [6.0, 0.0], [6.0, 4.0], [4.5, 4.0], [3.5, 1.5], [2.5, 1.5], [1.5, 4.0], [0.0, 4.0]],
+        &[
+            [0.0, 0.0],
+            [6.0, 0.0],
+            [6.0, 4.0],
+            [4.5, 4.0],
+            [3.5, 1.5],
+            [2.5, 1.5],
+            [1.5, 4.0],
+            [0.0, 4.0],
+        ],
     ];
     for corners in polygons {
         for per_edge in [4, 8, 16, 32] {
@@ -68,14 +94,27 @@ fn sharp_cornered_polygons_are_reconstructed_exactly() {
 /// this known limitation is noticed.
 #[test]
 fn a_parallel_slot_is_closed_at_its_mouth() {
-    let corners = [[0.0, 0.0], [6.0, 0.0], [6.0, 4.0], [4.0, 4.0], [4.0, 1.0], [2.0, 1.0], [2.0, 4.0], [0.0, 4.0]];
+    let corners = [
+        [0.0, 0.0],
+        [6.0, 0.0],
+        [6.0, 4.0],
+        [4.0, 4.0],
+        [4.0, 1.0],
+        [2.0, 1.0],
+        [2.0, 4.0],
+        [0.0, 4.0],
+    ];
     for per_edge in [4, 8, 16] {
         let pts = polygon_samples(&corners, per_edge);
         let rec = reconstruct(&pts).unwrap();
         let ours = edge_set(rec.edges());
         let mouth = (3 * per_edge, 6 * per_edge);
         assert!(ours.contains(&mouth), "{per_edge}: the mouth is closed");
-        assert_eq!(score(&cycle_edges(pts.len()), rec.edges()), (2, 2), "{per_edge}");
+        assert_eq!(
+            score(&cycle_edges(pts.len()), rec.edges()),
+            (2, 2),
+            "{per_edge}"
+        );
     }
 }
 
@@ -92,7 +131,11 @@ fn sparse_non_uniform_samples_keep_every_adjacent_pair() {
     {
         let set = CurveSet::new(vec![curve]);
         // Steps drawn from [0.1, 1] of the largest admissible one: very non-uniform.
-        let config = SampleConfig { eps: 0.39, min_step_fraction: 0.1, lfs_floor: 0.0 };
+        let config = SampleConfig {
+            eps: 0.39,
+            min_step_fraction: 0.1,
+            lfs_floor: 0.0,
+        };
         let sample = set.eps_sample_with(&config, &mut rng).randomized(&mut rng);
         let rec = reconstruct(&sample.points).unwrap();
         assert_eq!(score(&sample.edge_set(), rec.edges()), (0, 0), "curve {i}");
@@ -102,8 +145,12 @@ fn sparse_non_uniform_samples_keep_every_adjacent_pair() {
 fn three_disjoint_curves() -> CurveSet {
     CurveSet::new(vec![
         Ellipse { a: 2.0, b: 1.0 }.dense(20_000),
-        Star { a: 0.2, k: 5 }.dense(20_000).transformed(&Similarity::translation([5.0, 0.0])),
-        Peanut { a: 0.3, b: 0.1 }.dense(20_000).transformed(&Similarity::translation([0.0, 4.0])),
+        Star { a: 0.2, k: 5 }
+            .dense(20_000)
+            .transformed(&Similarity::translation([5.0, 0.0])),
+        Peanut { a: 0.3, b: 0.1 }
+            .dense(20_000)
+            .transformed(&Similarity::translation([0.0, 4.0])),
     ])
 }
 
@@ -130,23 +177,45 @@ fn a_shape_with_a_hole_needs_peeling() {
     for eps in [0.2, 0.39] {
         let sample = set.eps_sample(eps, &mut rng).randomized(&mut rng);
         let peeled = reconstruct(&sample.points).unwrap();
-        assert_eq!(score(&sample.edge_set(), peeled.edges()), (0, 0), "eps {eps}");
+        assert_eq!(
+            score(&sample.edge_set(), peeled.edges()),
+            (0, 0),
+            "eps {eps}"
+        );
         assert_eq!(peeled.passes(), 2);
         assert_eq!(peeled.curves().len(), 2);
         // The paper's single pass never reaches the hole: its curve is lost entirely.
-        let single = reconstruct_with(&sample.points, &Options { peeling: false, ..Default::default() }).unwrap();
-        let inner: EdgeSet = Sample { curves: vec![sample.curves[1].clone()], ..sample.clone() }.edge_set();
+        let single = reconstruct_with(
+            &sample.points,
+            &Options {
+                peeling: false,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let inner: EdgeSet = Sample {
+            curves: vec![sample.curves[1].clone()],
+            ..sample.clone()
+        }
+        .edge_set();
         let (missing, extra) = score(&sample.edge_set(), single.edges());
         assert_eq!((missing, extra), (inner.len(), 0), "eps {eps}");
         assert!(edge_set(single.edges()).is_disjoint(&inner));
         // The medial axis lies in the region between the two curves.
         let ring = |c: usize| -> Vec<[f64; 2]> {
-            sample.curves[c].indices.iter().map(|&i| sample.points[i]).collect()
+            sample.curves[c]
+                .indices
+                .iter()
+                .map(|&i| sample.points[i])
+                .collect()
         };
         let (outer, hole) = (ring(0), ring(1));
         assert!(peeled.medial_axis().edges.len() > 20);
         for &v in &peeled.medial_axis().vertices {
-            assert!(inside(&outer, v) && !inside(&hole, v), "medial-axis vertex {v:?}");
+            assert!(
+                inside(&outer, v) && !inside(&hole, v),
+                "medial-axis vertex {v:?}"
+            );
         }
     }
 }
@@ -156,7 +225,9 @@ fn inside(poly: &[[f64; 2]], p: [f64; 2]) -> bool {
     let mut c = false;
     for i in 0..poly.len() {
         let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
-        if (a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) {
+        if (a[1] > p[1]) != (b[1] > p[1])
+            && p[0] < a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0])
+        {
             c = !c;
         }
     }
@@ -166,20 +237,34 @@ fn inside(poly: &[[f64; 2]], p: [f64; 2]) -> bool {
 #[test]
 fn the_medial_axis_lies_inside_the_shape() {
     let mut rng = Rng::new(3);
-    for curve in [Star { a: 0.25, k: 5 }.dense(20_000), Peanut { a: 0.3, b: 0.12 }.dense(20_000)] {
+    for curve in [
+        Star { a: 0.25, k: 5 }.dense(20_000),
+        Peanut { a: 0.3, b: 0.12 }.dense(20_000),
+    ] {
         let set = CurveSet::new(vec![curve]);
         let sample = set.eps_sample(0.3, &mut rng);
         let rec = reconstruct(&sample.points).unwrap();
-        let polygon: Vec<[f64; 2]> = sample.curves[0].indices.iter().map(|&i| sample.points[i]).collect();
+        let polygon: Vec<[f64; 2]> = sample.curves[0]
+            .indices
+            .iter()
+            .map(|&i| sample.points[i])
+            .collect();
         let axis = rec.medial_axis();
         assert!(axis.edges.len() > 10);
         for &v in &axis.vertices {
-            assert!(inside(&polygon, v), "medial-axis vertex {v:?} outside the polygon");
+            assert!(
+                inside(&polygon, v),
+                "medial-axis vertex {v:?} outside the polygon"
+            );
         }
         // Every Voronoi vertex inside the sample polygon is inner, every one outside outer.
         let vor = rec.triangulation().voronoi();
         for v in 0..vor.vertex_count() as u32 {
-            let expected = if inside(&polygon, vor.vertex_position(v)) { Label::Inner } else { Label::Outer };
+            let expected = if inside(&polygon, vor.vertex_position(v)) {
+                Label::Inner
+            } else {
+                Label::Outer
+            };
             assert_eq!(rec.labels()[v as usize], expected, "vertex {v}");
         }
     }
@@ -190,7 +275,11 @@ fn outliers_keep_most_of_the_curve() {
     // A ~50-point closed curve (the paper uses a 54-point dove) with 10, 20, 40 % outliers.
     let mut rng = Rng::new(21);
     let set = CurveSet::new(vec![Star { a: 0.25, k: 5 }.dense(20_000)]);
-    let config = SampleConfig { eps: 0.5, min_step_fraction: 0.8, lfs_floor: 0.0 };
+    let config = SampleConfig {
+        eps: 0.5,
+        min_step_fraction: 0.8,
+        lfs_floor: 0.0,
+    };
     let base = set.eps_sample_with(&config, &mut rng);
     assert!((40..70).contains(&base.len()), "{} points", base.len());
     for (percent, at_least) in [(10.0, 0.8), (20.0, 0.75), (40.0, 0.6)] {
@@ -204,7 +293,10 @@ fn outliers_keep_most_of_the_curve() {
             kept += noisy.edge_set().len() - missing;
         }
         let share = kept as f64 / total as f64;
-        eprintln!("outliers {percent}%: {:.1}% of curve edges kept", 100.0 * share);
+        eprintln!(
+            "outliers {percent}%: {:.1}% of curve edges kept",
+            100.0 * share
+        );
         assert!(share >= at_least, "{percent}%: only {share:.2} kept");
     }
 }
@@ -224,15 +316,24 @@ fn the_same_points_in_any_order_give_the_same_edges() {
         let order = rng.permutation(sample.len());
         let pts: Vec<[f64; 2]> = order.iter().map(|&i| sample.points[i]).collect();
         let rec = reconstruct(&pts).unwrap();
-        let edges: BTreeSet<([u64; 2], [u64; 2])> =
-            rec.edges().iter().map(|&[a, b]| key(pts[a as usize], pts[b as usize])).collect();
+        let edges: BTreeSet<([u64; 2], [u64; 2])> = rec
+            .edges()
+            .iter()
+            .map(|&[a, b]| key(pts[a as usize], pts[b as usize]))
+            .collect();
         assert_eq!(edges, base_edges);
-        assert_eq!(rec.medial_axis().edges.len(), base.medial_axis().edges.len());
+        assert_eq!(
+            rec.medial_axis().edges.len(),
+            base.medial_axis().edges.len()
+        );
     }
 }
 
 fn key(a: [f64; 2], b: [f64; 2]) -> ([u64; 2], [u64; 2]) {
-    let (ka, kb) = ([a[0].to_bits(), a[1].to_bits()], [b[0].to_bits(), b[1].to_bits()]);
+    let (ka, kb) = (
+        [a[0].to_bits(), a[1].to_bits()],
+        [b[0].to_bits(), b[1].to_bits()],
+    );
     (ka.min(kb), ka.max(kb))
 }
 
@@ -252,7 +353,16 @@ fn rounded_triangle(n: usize) -> Vec<[f64; 2]> {
 fn label_readings_differ_on_a_convex_shape_with_a_junction() {
     for n in [12, 24, 36] {
         let pts = rounded_triangle(n);
-        let with = |rule| reconstruct_with(&pts, &Options { label_rule: rule, ..Default::default() }).unwrap();
+        let with = |rule| {
+            reconstruct_with(
+                &pts,
+                &Options {
+                    label_rule: rule,
+                    ..Default::default()
+                },
+            )
+            .unwrap()
+        };
         let truth = cycle_edges(n);
         // DESIGN.md's reading: outer = reached by the water and still activated.
         let reached = with(LabelRule::WaterReached);
@@ -262,7 +372,9 @@ fn label_readings_differ_on_a_convex_shape_with_a_junction() {
         let literal = with(LabelRule::Literal);
         assert_eq!(score(&truth, literal.edges()), (0, 3));
         let vor = literal.triangulation().voronoi();
-        let junction = (0..vor.vertex_count() as u32).find(|&v| !vor.has_ray(v)).unwrap();
+        let junction = (0..vor.vertex_count() as u32)
+            .find(|&v| !vor.has_ray(v))
+            .unwrap();
         assert_eq!(literal.labels()[junction as usize], Label::Outer);
         assert_eq!(reached.labels()[junction as usize], Label::Inner);
         // The authors' complement convention gets this one right.

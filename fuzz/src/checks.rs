@@ -748,7 +748,7 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
         }
         let bounded = vor.is_cell_bounded(p);
         ensure!(
-            bounded == !on_hull[p as usize],
+            bounded != on_hull[p as usize],
             "point {p}: is_cell_bounded {bounded}"
         );
         let mut sorted = cell.clone();

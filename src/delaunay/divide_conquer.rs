@@ -65,6 +65,7 @@ pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
     } else {
         hull = items.iter().map(|&item| grid.index(item)).collect();
     }
+    drop(items); // before the copy of the points: the peak is the construction's
     Triangulation {
         points: points.to_vec(),
         triangles,
@@ -208,9 +209,12 @@ impl DivideConquer<'_> {
         let local = Grid::of_box(self.pts[lo..hi].iter().copied(), bits);
         let index_mask = (1u64 << bits) - 1;
         self.scratch.clear();
-        self.scratch.extend(
-            (lo..hi).map(|v| (self.pts[v], local.key(self.pts[v]) | (self.items[v] & index_mask))),
-        );
+        self.scratch.extend((lo..hi).map(|v| {
+            (
+                self.pts[v],
+                local.key(self.pts[v]) | (self.items[v] & index_mask),
+            )
+        }));
         self.scratch.sort_unstable_by_key(|&(_, item)| item);
         for (k, &(p, item)) in self.scratch.iter().enumerate() {
             self.pts[lo + k] = p;
@@ -236,7 +240,8 @@ impl DivideConquer<'_> {
         self.scratch.clear();
         self.scratch
             .extend((lo..hi).map(|v| (self.pts[v], self.items[v])));
-        self.scratch.sort_unstable_by(|a, b| lexicographic(a.0, b.0));
+        self.scratch
+            .sort_unstable_by(|a, b| lexicographic(a.0, b.0));
         for (k, &(p, item)) in self.scratch.iter().enumerate() {
             self.pts[lo + k] = p;
             self.items[lo + k] = item;
@@ -574,7 +579,12 @@ mod tests {
         // same key on the global grid.
         let mut next = rng(2);
         let mut pts: Vec<[f64; 2]> = (0..2000)
-            .map(|_| [0.5 + next() * 2f64.powi(-30), 0.25 + next() * 2f64.powi(-30)])
+            .map(|_| {
+                [
+                    0.5 + next() * 2f64.powi(-30),
+                    0.25 + next() * 2f64.powi(-30),
+                ]
+            })
             .collect();
         pts.push([1.5, -0.75]);
         pts.push([-3.0, 2.0]);
@@ -604,7 +614,9 @@ mod tests {
             })
             .collect();
         check(&circle);
-        let lattice: Vec<[f64; 2]> = (0..2500).map(|i| [(i % 50) as f64, (i / 50) as f64]).collect();
+        let lattice: Vec<[f64; 2]> = (0..2500)
+            .map(|i| [(i % 50) as f64, (i / 50) as f64])
+            .collect();
         check(&lattice);
     }
 }

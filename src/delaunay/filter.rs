@@ -203,9 +203,8 @@ impl StaticFilter {
     /// shift of the four rows flips the sign), evaluated in his order, so his bound holds.
     #[inline(always)]
     pub fn in_circle(&self, r: &Lifted, a: &Lifted, b: &Lifted, cross_ra: f64) -> Option<bool> {
-        let det = r.lift * (a.x * b.y - b.x * a.y)
-            + a.lift * (b.x * r.y - r.x * b.y)
-            + b.lift * cross_ra;
+        let det =
+            r.lift * (a.x * b.y - b.x * a.y) + a.lift * (b.x * r.y - r.x * b.y) + b.lift * cross_ra;
         if det > self.incircle {
             Some(false)
         } else if -det > self.incircle {
@@ -254,7 +253,9 @@ mod tests {
     fn the_static_filter_agrees_with_the_exact_predicates() {
         let mut s = 5u64;
         let mut next = || {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             (s >> 11) as f64 / (1u64 << 53) as f64
         };
         for round in 0..20_000 {
@@ -265,7 +266,10 @@ mod tests {
             let mut pick = || {
                 let (u, v) = (next(), next());
                 if round % 2 == 0 {
-                    [x0 + (u * 4.0).floor() * scale / 4.0, y0 + (v * 4.0).floor() * scale / 4.0]
+                    [
+                        x0 + (u * 4.0).floor() * scale / 4.0,
+                        y0 + (v * 4.0).floor() * scale / 4.0,
+                    ]
                 } else {
                     [x0 + u * scale, y0 + v * scale]
                 }
@@ -282,7 +286,11 @@ mod tests {
             if let Some(ccw) = f.orientation(rb.cross(&rc)) {
                 assert_eq!(ccw, exact == Orientation::CounterClockwise);
             }
-            let (a, b) = if exact == Orientation::Clockwise { (b, a) } else { (a, b) };
+            let (a, b) = if exact == Orientation::Clockwise {
+                (b, a)
+            } else {
+                (a, b)
+            };
             let (rb, rc, rd) = if exact == Orientation::Clockwise {
                 (Lifted::new(b, a), Lifted::new(c, a), Lifted::new(d, a))
             } else {
@@ -301,7 +309,9 @@ mod tests {
     fn the_lattice_path_is_exact_or_declines() {
         let mut s = 9u64;
         let mut next = || {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             s >> 11
         };
         let mut decided = 0;
@@ -333,7 +343,9 @@ mod tests {
     fn agrees_with_the_exact_predicates_near_degeneracy() {
         let mut s = 3u64;
         let mut next = || {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             (s >> 11) as f64 / (1u64 << 53) as f64
         };
         for _ in 0..20_000 {
@@ -345,7 +357,10 @@ mod tests {
                 ulp_step(a[0] + t * (b[0] - a[0]), (next() * 9.0) as i64 - 4),
                 ulp_step(a[1] + t * (b[1] - a[1]), (next() * 9.0) as i64 - 4),
             ];
-            assert_eq!(ccw(a, b, c), orient2d(a, b, c) == Orientation::CounterClockwise);
+            assert_eq!(
+                ccw(a, b, c),
+                orient2d(a, b, c) == Orientation::CounterClockwise
+            );
             // Nearly cocircular: four points on the unit circle, nudged.
             let ang = |u: f64| [u.cos(), u.sin()];
             let (u, v, w) = (next(), next() + 2.0, next() + 4.0);
@@ -363,7 +378,10 @@ mod tests {
                 [grid(next()), grid(next())],
                 [grid(next()), grid(next())],
             );
-            assert_eq!(ccw(pa, pb, pc), orient2d(pa, pb, pc) == Orientation::CounterClockwise);
+            assert_eq!(
+                ccw(pa, pb, pc),
+                orient2d(pa, pb, pc) == Orientation::CounterClockwise
+            );
             if ccw(pa, pb, pc) {
                 assert_eq!(
                     inside(pa, pb, pc, d),

@@ -1,7 +1,7 @@
 //! Delaunay triangulation: Guibas–Stolfi divide and conquer with Dwyer's alternating cuts.
 //!
 //! The pipeline is `validate → Z-order and merge duplicates → divide and conquer → compact`.
-//! The construction store ([`mesh`]: triangles plus ghost triangles on the hull) exists only
+//! The construction store (`mesh`: triangles plus ghost triangles on the hull) exists only
 //! while the triangulation is built and turns into the compact, flat [`Triangulation`] in
 //! place; that is all later stages see.
 

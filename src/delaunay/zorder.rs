@@ -284,7 +284,9 @@ mod tests {
         let mut s = 7u64;
         let mut pts: Vec<[f64; 2]> = (0..500)
             .map(|_| {
-                s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                s = s
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
                 [((s >> 40) % 16) as f64, ((s >> 20) % 16) as f64]
             })
             .collect();
@@ -302,7 +304,10 @@ mod tests {
         }
         for (k, &i) in ids.iter().enumerate() {
             assert_eq!(o.points[k], pts[i as usize]);
-            assert!(pts[..i as usize].iter().all(|&p| p != pts[i as usize]), "first kept");
+            assert!(
+                pts[..i as usize].iter().all(|&p| p != pts[i as usize]),
+                "first kept"
+            );
         }
     }
 }

@@ -139,3 +139,16 @@ fn peeled_medial_axis_depends_on_input_order() {
     assert_eq!(a.medial_axis().edges.len(), b.medial_axis().edges.len());
     assert_eq!(checks::axis_segments(&a), checks::axis_segments(&b));
 }
+
+/// Found by `parse` (CI smoke run): a UTF-8 byte-order mark before a header-like first line.
+/// The reader skipped the mark and took `JX` for a CSV header, while `detect_format` saw the
+/// mark as part of the line and said plain text.
+#[test]
+fn byte_order_mark_before_a_header() {
+    use wdm_crust::io::{detect_format, read_points, InputFormat};
+    let data: &[u8] = &[0xEF, 0xBB, 0xBF, b'J', b'X'];
+    assert_eq!(detect_format(data), InputFormat::Csv);
+    let on_the_fly = read_points(data, None).map_err(|e| e.to_string());
+    let detected = read_points(data, Some(detect_format(data))).map_err(|e| e.to_string());
+    assert_eq!(on_the_fly, detected);
+}

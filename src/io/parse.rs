@@ -306,6 +306,8 @@ pub fn format_from_path(path: &Path) -> Option<InputFormat> {
 /// assert_eq!(detect_format(b"# points\n1.5 2\n"), InputFormat::Text);
 /// ```
 pub fn detect_format(head: &[u8]) -> InputFormat {
+    // The reader skips a UTF-8 byte-order mark; detection must see the same first line.
+    let head = head.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(head);
     let mut significant = head
         .split(|&b| b == b'\n' || b == b'\r')
         .filter_map(|line| std::str::from_utf8(line).ok())

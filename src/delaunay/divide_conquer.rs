@@ -5,14 +5,20 @@
 //! contiguous array, so a subproblem is a contiguous range of points and owns a contiguous
 //! range of triangle slots. A range splits at the first key bit its points do not share: by a
 //! vertical or a horizontal line, alternately on uniform input (Dwyer's cuts keep the halves
-//! roughly square, so a merge deletes few edges). Where a split would leave a single point, the
-//! range is sorted lexicographically and split at the middle (vertical cuts only).
+//! roughly square, so a merge deletes few edges: on 10^6 uniform points one edge per point,
+//! against eight with vertical cuts only). A side of a split may be a single point; it is
+//! merged without a triangulation of its own. A range whose points all share one key (a
+//! cluster finer than the grid) is re-keyed on its own bounding box; below 17 points it is
+//! sorted lexicographically instead and split at the middle, by vertical cuts.
 //!
 //! A merge along a horizontal cut is the textbook merge along a vertical cut seen in a frame
 //! turned a quarter clockwise, `(x, y) ↦ (y, −x)`: orientation and in-circle tests do not
 //! change under a rotation, so only the extreme points differ. Each subproblem reports its
-//! extreme points in both orders, `(x, y)` and `(y, −x)` (ties broken by coordinates, never by
-//! input position), with a ghost at each.
+//! extreme points in both orders, `(x, y)` and `(y, −x)`, with a ghost at each.
+//!
+//! Every decision is an exact predicate (filtered, [`filter`](super::filter)), and every tie
+//! is broken by coordinates, never by input position: a permutation of the input gives the
+//! same triangles. The hull starts at the lexicographically smallest point.
 
 use super::filter::{ccw, inside, Lifted, StaticFilter};
 use super::mesh::{prev, Mesh, GHOST};
@@ -226,7 +232,7 @@ impl DivideConquer<'_> {
     /// Sorts a range (not yet triangulated) lexicographically, input indices along.
     fn sort_lexicographically(&mut self, lo: usize, hi: usize) {
         if hi - lo <= 16 {
-            // Small ranges (most fallbacks: a split would leave a single point) in place.
+            // Small ranges (every fallback of Z order is one) in place.
             for k in lo + 1..hi {
                 let mut j = k;
                 while j > lo && lexicographic(self.pts[j], self.pts[j - 1]).is_lt() {

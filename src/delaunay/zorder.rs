@@ -126,7 +126,7 @@ pub fn order(points: &[[f64; 2]], grid: &Grid) -> Ordered {
         .enumerate()
         .map(|(i, &p)| grid.key(p) | i as u64)
         .collect();
-    radix_sort(&mut items, grid.index_bits);
+    sort_items(&mut items, grid.index_bits);
     settle_runs(&mut items, points, grid.index_bits);
     let point = |item: u64| points[grid.index(item) as usize];
     // Drop the duplicates in place (only equal keys need coordinates).
@@ -190,7 +190,7 @@ fn settle_runs(items: &mut [u64], points: &[[f64; 2]], index_bits: u32) {
             for item in run.iter_mut() {
                 *item = local.key(points[index(*item)]) | (*item & !key_mask);
             }
-            radix_sort(run, index_bits);
+            sort_items(run, index_bits);
             // Distinct points in the run split it; copies of one point do not.
             if (run[0] ^ run[run.len() - 1]) & key_mask != 0 {
                 settle_runs(run, points, index_bits);
@@ -206,6 +206,16 @@ fn settle_runs(items: &mut [u64], points: &[[f64; 2]], index_bits: u32) {
             });
         }
         start = end;
+    }
+}
+
+/// Sorts items by key, then index (as a stable sort by key would): a radix sort, or for few
+/// items, where its fixed cost (2^11 counters per pass) dominates, a comparison sort.
+fn sort_items(items: &mut [u64], low: u32) {
+    if items.len() <= 1 << 12 {
+        items.sort_unstable();
+    } else {
+        radix_sort(items, low);
     }
 }
 
@@ -267,6 +277,26 @@ mod tests {
     fn spread_interleaves() {
         assert_eq!(spread(0b1011), 0b100_0101);
         assert_eq!(spread(u32::MAX), 0x5555_5555_5555_5555);
+    }
+
+    #[test]
+    fn radix_sort_equals_a_comparison_sort() {
+        let mut s = 11u64;
+        for (n, low) in [(1, 0), (5000, 13), (20_000, 15), (3000, 32)] {
+            let mut items: Vec<u64> = (0..n)
+                .map(|i| {
+                    s = s
+                        .wrapping_mul(6364136223846793005)
+                        .wrapping_add(1442695040888963407);
+                    // Few distinct keys in the high bits (equal keys keep the index order).
+                    ((s >> 60) << 60) | ((s >> 20) & 0xFFFF) << low | i as u64
+                })
+                .collect();
+            let mut expected = items.clone();
+            expected.sort_unstable();
+            radix_sort(&mut items, low);
+            assert_eq!(items, expected);
+        }
     }
 
     #[test]

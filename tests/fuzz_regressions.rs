@@ -73,6 +73,23 @@ fn equilateral_triangle_around_the_origin() {
     ]);
 }
 
+/// Found by `reconstruct` on a working-tree state of src/delaunay/zorder.rs (12:28, between
+/// commits; never committed): a stack overflow (unbounded recursion `settle_runs` →
+/// `radix_sort`) on 158 copies of one point, a run of more than 64 equal Z-order keys.
+#[test]
+fn many_copies_of_one_point() {
+    let p = [-9.404430815623905e17, -9.40970847143723e17];
+    check_everything(&[p; 158]);
+    // The same run next to other points, and 10^4 copies each of three points.
+    let mut points = vec![p; 158];
+    points.extend([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
+    check_everything(&points);
+    let three = [[0.0, 0.0], [1.0, 0.0], [0.25, 0.75]];
+    let copies: Vec<[f64; 2]> = (0..30_000).map(|i| three[i % 3]).collect();
+    let tri = wdm_crust::triangulate(&copies);
+    checks::check_triangulate(&copies, &tri).unwrap();
+}
+
 /// Fixed issue, found by `reconstruct` (medial axis compared bitwise under permutation).
 ///
 /// src/voronoi.rs, `order_face_cycle`: the boundary cycle of a merged (cocircular) face starts

@@ -69,12 +69,12 @@ fn main() {
         if stage("voronoi") {
             let t = Instant::now();
             let vor = tri.voronoi();
+            let built = t.elapsed().as_secs_f64();
             let merged = (0..vor.vertex_count() as u32)
                 .filter(|&v| vor.degree(v) > 3)
                 .count();
             println!(
-                "voronoi: {:.2}s, {} vertices ({merged} merged), {} finite edges",
-                t.elapsed().as_secs_f64(),
+                "voronoi: {built:.2}s, {} vertices ({merged} merged), {} finite edges",
                 vor.vertex_count(),
                 vor.finite_edges().count()
             );

@@ -15,9 +15,10 @@
 //! [`Triangulation::hull`], which this vertex/edge/ray model does not represent; every cell
 //! iterator is empty and [`Voronoi::collinear_bisectors`] lists the bisected pairs.
 
-use crate::delaunay::{Triangulation, NO_TWIN};
-use crate::predicates::exact::{circumcenter, circumcenter_exact, ExactPoint};
-use crate::predicates::{incircle, CirclePosition};
+use crate::delaunay::{cocircular, next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
+use crate::predicates::exact::{
+    circumcenter_exact, circumcenter_uncounted, count_circumcenter_calls, ExactPoint,
+};
 use num_rational::BigRational;
 
 /// The far end of a Voronoi edge.
@@ -44,19 +45,66 @@ pub struct VoronoiEdge {
 }
 
 /// The Voronoi diagram of the distinct points of a triangulation.
+///
+/// Memory: 4 bytes per point, plus, only when some neighbouring triangles are cocircular,
+/// the merged faces (about 24 bytes per triangle), plus, once
+/// [`vertex_positions`](Voronoi::vertex_positions) is first called, 16 bytes per vertex.
+/// The labeler decides everything on the exact circumcenters of triangles and never needs
+/// the rounded positions of all vertices.
 #[derive(Debug, Clone)]
 pub struct Voronoi<'a> {
     tri: &'a Triangulation,
-    vertex_of_triangle: Vec<u32>,
-    /// `boundary[boundary_start[v]..boundary_start[v + 1]]`: the half-edges around the merged
-    /// face of vertex `v`, counterclockwise.
-    boundary_start: Vec<u32>,
-    boundary: Vec<u32>,
-    circumcenters: Vec<[f64; 2]>,
+    vertex_count: usize,
+    /// The f64 circumcenters of all vertices, computed on first use.
+    positions: std::sync::OnceLock<Vec<[f64; 2]>>,
     /// One half-edge out of every distinct point (the outgoing hull edge for hull points);
     /// `NO_TWIN` for duplicates and in degenerate input.
     out_halfedge: Vec<u32>,
+    /// `None` when no two neighbouring triangles share their circumcircle (the common case
+    /// for real-valued input): then vertex `v` is triangle `v` and its face is that triangle.
+    merged: Option<MergedFaces>,
 }
+
+/// The faces of the diagram when some of them merge several triangles.
+#[derive(Debug, Clone)]
+struct MergedFaces {
+    vertex_of_triangle: Vec<u32>,
+    /// The smallest triangle of every vertex's face: the one its position is computed from.
+    first_triangle: Vec<u32>,
+    /// `boundary[boundary_start[v]..boundary_start[v + 1]]`: the half-edges around the face
+    /// of `v`, counterclockwise from the smallest. Empty for a single-triangle face, whose
+    /// boundary is its three half-edges.
+    boundary_start: Vec<u32>,
+    boundary: Vec<u32>,
+}
+
+/// The boundary half-edges of one face, counterclockwise.
+#[derive(Debug, Clone)]
+enum FaceBoundary<'v> {
+    Triangle(std::ops::Range<u32>),
+    Merged(std::slice::Iter<'v, u32>),
+}
+
+impl Iterator for FaceBoundary<'_> {
+    type Item = u32;
+
+    #[inline]
+    fn next(&mut self) -> Option<u32> {
+        match self {
+            FaceBoundary::Triangle(range) => range.next(),
+            FaceBoundary::Merged(iter) => iter.next().copied(),
+        }
+    }
+
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        match self {
+            FaceBoundary::Triangle(range) => range.size_hint(),
+            FaceBoundary::Merged(iter) => iter.size_hint(),
+        }
+    }
+}
+
+impl ExactSizeIterator for FaceBoundary<'_> {}
 
 impl Triangulation {
     /// The Voronoi dual of this triangulation, with cocircular faces merged.
@@ -83,31 +131,43 @@ impl Triangulation {
 }
 
 impl<'a> Voronoi<'a> {
+    /// One pass over the triangles finds the outgoing half-edge of every point and the
+    /// cocircular neighbours; the faces are merged only if there are any.
     fn new(tri: &'a Triangulation) -> Self {
-        let vertex_of_triangle = merge_cocircular_triangles(tri);
-        let vertex_count = vertex_of_triangle.iter().map(|&v| v + 1).max().unwrap_or(0) as usize;
-        let (boundary_start, boundary) = face_boundaries(tri, &vertex_of_triangle, vertex_count);
-        let mut circumcenters = vec![[0.0; 2]; vertex_count];
-        for (v, c) in circumcenters.iter_mut().enumerate() {
-            let e = boundary[boundary_start[v] as usize] as usize;
-            let [a, b, c3] = tri.triangle_points(e / 3);
-            // Delaunay triangles are never collinear; the fallback is unreachable.
-            *c = circumcenter(a, b, c3).unwrap_or(a);
-        }
-        let mut out_halfedge = vec![NO_TWIN; tri.points().len()];
-        for (e, &twin) in tri.halfedges().iter().enumerate() {
-            let p = tri.halfedge_origin(e) as usize;
-            if twin == NO_TWIN || out_halfedge[p] == NO_TWIN {
-                out_halfedge[p] = e as u32;
+        let triangles = tri.triangles();
+        let halfedges = tri.halfedges();
+        let points = tri.points();
+        let mut out_halfedge = vec![NO_TWIN; points.len()];
+        let mut cocircular_pairs: Vec<[u32; 2]> = Vec::new();
+        for (t, corners) in triangles.iter().enumerate() {
+            let [a, b, c] = corners.map(|p| points[p as usize]);
+            for (i, &origin) in corners.iter().enumerate() {
+                let e = 3 * t + i;
+                let twin = halfedges[e];
+                let out = &mut out_halfedge[origin as usize];
+                if twin == NO_TWIN || *out == NO_TWIN {
+                    *out = e as u32;
+                }
+                if twin != NO_TWIN && twin as usize > e {
+                    let opposite =
+                        points[tri.halfedge_origin(prev_in_triangle(twin as usize)) as usize];
+                    if cocircular(a, b, c, opposite) {
+                        cocircular_pairs.push([t as u32, twin / 3]);
+                    }
+                }
             }
         }
+        let merged =
+            (!cocircular_pairs.is_empty()).then(|| MergedFaces::new(tri, &cocircular_pairs));
+        let vertex_count = merged
+            .as_ref()
+            .map_or(triangles.len(), |m| m.first_triangle.len());
         Voronoi {
             tri,
-            vertex_of_triangle,
-            boundary_start,
-            boundary,
-            circumcenters,
+            vertex_count,
+            positions: std::sync::OnceLock::new(),
             out_halfedge,
+            merged,
         }
     }
 
@@ -118,17 +178,39 @@ impl<'a> Voronoi<'a> {
 
     /// Number of finite Voronoi vertices (merged Delaunay faces).
     pub fn vertex_count(&self) -> usize {
-        self.circumcenters.len()
+        self.vertex_count
     }
 
-    /// Circumcenters of all vertices, rounded to f64.
+    /// Circumcenters of all vertices, rounded to f64 as [`vertex_position`] rounds them.
+    /// Computed on the first call (about 60 ns per vertex) and kept.
+    ///
+    /// [`vertex_position`]: Voronoi::vertex_position
     pub fn vertex_positions(&self) -> &[[f64; 2]] {
-        &self.circumcenters
+        self.positions.get_or_init(|| {
+            let positions = (0..self.vertex_count as u32)
+                .map(|v| self.compute_position(v))
+                .collect();
+            count_circumcenter_calls(self.vertex_count as u64);
+            positions
+        })
     }
 
-    /// Circumcenter of vertex `v`, rounded to f64.
+    /// Circumcenter of vertex `v`, rounded to f64: within 256 ulps of the exact one, see
+    /// [`circumcenter`](crate::predicates::exact::circumcenter).
     pub fn vertex_position(&self, v: u32) -> [f64; 2] {
-        self.circumcenters[v as usize]
+        match self.positions.get() {
+            Some(positions) => positions[v as usize],
+            None => {
+                count_circumcenter_calls(1);
+                self.compute_position(v)
+            }
+        }
+    }
+
+    fn compute_position(&self, v: u32) -> [f64; 2] {
+        let [a, b, c] = self.vertex_triangle(v);
+        // Delaunay triangles are never collinear; the fallback is unreachable.
+        circumcenter_uncounted(a, b, c).unwrap_or(a)
     }
 
     /// Circumcenter of vertex `v` as an exact rational point.
@@ -144,23 +226,45 @@ impl<'a> Voronoi<'a> {
     /// Three points of the face of `v` (a Delaunay triangle of it): the input the exact
     /// circumcenter predicates take.
     pub fn vertex_triangle(&self, v: u32) -> [[f64; 2]; 3] {
-        let e = self.boundary[self.boundary_start[v as usize] as usize] as usize;
-        self.tri.triangle_points(e / 3)
+        let t = match &self.merged {
+            None => v,
+            Some(m) => m.first_triangle[v as usize],
+        };
+        self.tri.triangle_points(t as usize)
     }
 
     /// The Voronoi vertex of Delaunay triangle `t`.
+    #[inline]
     pub fn vertex_of_triangle(&self, t: usize) -> u32 {
-        self.vertex_of_triangle[t]
+        match &self.merged {
+            None => t as u32,
+            Some(m) => m.vertex_of_triangle[t],
+        }
     }
 
     /// The Voronoi vertex on the left of Delaunay half-edge `e` (the face containing it).
+    #[inline]
     pub fn vertex_of_halfedge(&self, e: u32) -> u32 {
-        self.vertex_of_triangle[e as usize / 3]
+        self.vertex_of_triangle(e as usize / 3)
     }
 
-    fn boundary_of(&self, v: u32) -> &[u32] {
-        let v = v as usize;
-        &self.boundary[self.boundary_start[v] as usize..self.boundary_start[v + 1] as usize]
+    /// Whether any two neighbouring Delaunay triangles share their circumcircle (then some
+    /// vertex has degree above 3 and some Delaunay edges have no dual).
+    pub fn has_merged_faces(&self) -> bool {
+        self.merged.is_some()
+    }
+
+    fn boundary_of(&self, v: u32) -> FaceBoundary<'_> {
+        if let Some(m) = &self.merged {
+            let row = &m.boundary
+                [m.boundary_start[v as usize] as usize..m.boundary_start[v as usize + 1] as usize];
+            if !row.is_empty() {
+                return FaceBoundary::Merged(row.iter());
+            }
+            let e = 3 * m.first_triangle[v as usize];
+            return FaceBoundary::Triangle(e..e + 3);
+        }
+        FaceBoundary::Triangle(3 * v..3 * v + 3)
     }
 
     /// Number of Voronoi edges (finite and rays) at `v`: the corners of its merged face.
@@ -171,13 +275,12 @@ impl<'a> Voronoi<'a> {
     /// The points whose cells meet at `v` (the corners of its Delaunay face), counterclockwise.
     pub fn vertex_sites(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
         self.boundary_of(v)
-            .iter()
-            .map(|&e| self.tri.halfedge_origin(e as usize))
+            .map(|e| self.tri.halfedge_origin(e as usize))
     }
 
     /// The Voronoi edges at `v`, counterclockwise around its face.
     pub fn vertex_edges(&self, v: u32) -> impl Iterator<Item = VoronoiEdge> + '_ {
-        self.boundary_of(v).iter().map(|&e| self.edge(e))
+        self.boundary_of(v).map(|e| self.edge(e))
     }
 
     /// The Voronoi edge dual to the boundary half-edge `e`, seen from the face of `e`.
@@ -202,32 +305,36 @@ impl<'a> Voronoi<'a> {
     /// different merged faces, or it is on the hull).
     pub fn has_dual(&self, e: u32) -> bool {
         let twin = self.tri.halfedges()[e as usize];
-        twin == NO_TWIN || self.vertex_of_halfedge(e) != self.vertex_of_halfedge(twin)
+        twin == NO_TWIN
+            || self.merged.is_none()
+            || self.vertex_of_halfedge(e) != self.vertex_of_halfedge(twin)
     }
 
     /// Does `v` carry at least one ray (is its face on the convex hull)?
     pub fn has_ray(&self, v: u32) -> bool {
         self.boundary_of(v)
-            .iter()
-            .any(|&e| self.tri.halfedges()[e as usize] == NO_TWIN)
+            .any(|e| self.tri.halfedges()[e as usize] == NO_TWIN)
     }
 
-    /// Finite Voronoi edges, each once: `(dual half-edge, vertex, vertex)`.
+    /// Finite Voronoi edges, each once, by increasing dual half-edge:
+    /// `(dual half-edge, vertex, vertex)`.
     pub fn finite_edges(&self) -> impl Iterator<Item = (u32, u32, u32)> + '_ {
-        self.boundary.iter().filter_map(move |&e| {
-            let twin = self.tri.halfedges()[e as usize];
-            (twin != NO_TWIN && e < twin)
+        let halfedges = self.tri.halfedges();
+        (0..halfedges.len() as u32).filter_map(move |e| {
+            let twin = halfedges[e as usize];
+            (twin != NO_TWIN && e < twin && self.has_dual(e))
                 .then(|| (e, self.vertex_of_halfedge(e), self.vertex_of_halfedge(twin)))
         })
     }
 
-    /// Rays: `(dual hull half-edge, vertex, outward direction)`. The direction is the
-    /// outward normal of the hull edge, `(b − a)` turned clockwise, rounded to f64.
+    /// Rays, by increasing dual half-edge: `(dual hull half-edge, vertex, outward direction)`.
+    /// The direction is the outward normal of the hull edge, `(b − a)` turned clockwise,
+    /// rounded to f64.
     pub fn rays(&self) -> impl Iterator<Item = (u32, u32, [f64; 2])> + '_ {
-        self.boundary
-            .iter()
-            .filter(move |&&e| self.tri.halfedges()[e as usize] == NO_TWIN)
-            .map(move |&e| (e, self.vertex_of_halfedge(e), self.ray_direction(e)))
+        let halfedges = self.tri.halfedges();
+        (0..halfedges.len() as u32)
+            .filter(move |&e| halfedges[e as usize] == NO_TWIN)
+            .map(move |e| (e, self.vertex_of_halfedge(e), self.ray_direction(e)))
     }
 
     /// Outward normal of the hull half-edge `e` (interior on its left).
@@ -272,7 +379,7 @@ impl<'a> Voronoi<'a> {
 
     /// The half-edge out of the same point, one triangle counterclockwise; `None` past the hull.
     fn rotate_counterclockwise(&self, e: u32) -> Option<u32> {
-        let incoming = crate::delaunay::prev_in_triangle(e as usize);
+        let incoming = prev_in_triangle(e as usize);
         let twin = self.tri.halfedges()[incoming];
         (twin != NO_TWIN).then_some(twin)
     }
@@ -280,7 +387,7 @@ impl<'a> Voronoi<'a> {
     /// The half-edge out of the same point, one triangle clockwise; `None` past the hull.
     fn rotate_clockwise(&self, e: u32) -> Option<u32> {
         let twin = self.tri.halfedges()[e as usize];
-        (twin != NO_TWIN).then(|| crate::delaunay::next_in_triangle(twin as usize) as u32)
+        (twin != NO_TWIN).then(|| next_in_triangle(twin as usize) as u32)
     }
 
     /// Pairs of consecutive points along the line when the input is collinear: the diagram is
@@ -322,11 +429,31 @@ impl Iterator for CellVertices<'_, '_> {
     }
 }
 
-/// Union–find over triangles: neighbours that share their circumcircle exactly end up in one
-/// set. Returns the vertex id of every triangle, numbered by first appearance.
-fn merge_cocircular_triangles(tri: &Triangulation) -> Vec<u32> {
-    let t = tri.triangles().len();
-    let mut parent: Vec<u32> = (0..t as u32).collect();
+impl MergedFaces {
+    /// Merges the faces joined by `cocircular_pairs` of triangles.
+    fn new(tri: &Triangulation, cocircular_pairs: &[[u32; 2]]) -> MergedFaces {
+        let vertex_of_triangle = union_cocircular(tri.triangles().len(), cocircular_pairs);
+        let vertex_count = vertex_of_triangle.iter().map(|&v| v + 1).max().unwrap_or(0) as usize;
+        let mut first_triangle = vec![u32::MAX; vertex_count];
+        for (t, &v) in vertex_of_triangle.iter().enumerate() {
+            if first_triangle[v as usize] == u32::MAX {
+                first_triangle[v as usize] = t as u32;
+            }
+        }
+        let (boundary_start, boundary) = merged_boundaries(tri, &vertex_of_triangle, vertex_count);
+        MergedFaces {
+            vertex_of_triangle,
+            first_triangle,
+            boundary_start,
+            boundary,
+        }
+    }
+}
+
+/// Union–find over `triangle_count` triangles joined by `pairs`. Returns the vertex id of
+/// every triangle, numbered by first appearance.
+fn union_cocircular(triangle_count: usize, pairs: &[[u32; 2]]) -> Vec<u32> {
+    let mut parent: Vec<u32> = (0..triangle_count as u32).collect();
     fn find(parent: &mut [u32], mut x: u32) -> u32 {
         while parent[x as usize] != x {
             let up = parent[parent[x as usize] as usize];
@@ -335,50 +462,49 @@ fn merge_cocircular_triangles(tri: &Triangulation) -> Vec<u32> {
         }
         x
     }
-    for (e, &twin) in tri.halfedges().iter().enumerate() {
-        if twin == NO_TWIN || (twin as usize) < e {
-            continue;
-        }
-        let [a, b, c] = tri.triangle_points(e / 3);
-        let opposite = tri.points()
-            [tri.halfedge_origin(crate::delaunay::prev_in_triangle(twin as usize)) as usize];
-        if incircle(a, b, c, opposite) == CirclePosition::On {
-            let (ra, rb) = (
-                find(&mut parent, (e / 3) as u32),
-                find(&mut parent, twin / 3),
-            );
-            if ra != rb {
-                parent[ra.max(rb) as usize] = ra.min(rb);
-            }
+    for &[s, t] in pairs {
+        let (rs, rt) = (find(&mut parent, s), find(&mut parent, t));
+        if rs != rt {
+            parent[rs.max(rt) as usize] = rs.min(rt);
         }
     }
-    let mut vertex = vec![u32::MAX; t];
+    // Roots are linked under the smaller root and path halving only shortens chains, so
+    // every parent is smaller than its child and a root is its set's smallest member. In
+    // increasing order, the parent of a non-root is therefore already relabelled, with its
+    // set's label; relabelling in place is safe.
+    let mut vertex = parent;
     let mut count = 0u32;
-    for i in 0..t {
-        let root = find(&mut parent, i as u32) as usize;
-        if vertex[root] == u32::MAX {
-            vertex[root] = count;
+    for i in 0..triangle_count {
+        let up = vertex[i] as usize;
+        vertex[i] = if up == i {
             count += 1;
-        }
-        vertex[i] = vertex[root];
+            count - 1
+        } else {
+            vertex[up]
+        };
     }
     vertex
 }
 
-/// For every vertex, the half-edges on the boundary of its merged face, counterclockwise,
-/// in compressed rows.
-fn face_boundaries(
+/// For every merged vertex, the half-edges on the boundary of its face, counterclockwise,
+/// in compressed rows; single-triangle vertices get an empty row.
+fn merged_boundaries(
     tri: &Triangulation,
     vertex_of_triangle: &[u32],
     vertex_count: usize,
 ) -> (Vec<u32>, Vec<u32>) {
     let halfedges = tri.halfedges();
+    let mut triangles_of = vec![0u32; vertex_count];
+    for &v in vertex_of_triangle {
+        triangles_of[v as usize] += 1;
+    }
+    let merged = |e: usize| triangles_of[vertex_of_triangle[e / 3] as usize] > 1;
     let on_boundary = |e: usize| {
         let twin = halfedges[e];
         twin == NO_TWIN || vertex_of_triangle[twin as usize / 3] != vertex_of_triangle[e / 3]
     };
     let mut start = vec![0u32; vertex_count + 1];
-    for e in (0..halfedges.len()).filter(|&e| on_boundary(e)) {
+    for e in (0..halfedges.len()).filter(|&e| merged(e) && on_boundary(e)) {
         start[vertex_of_triangle[e / 3] as usize + 1] += 1;
     }
     for v in 0..vertex_count {
@@ -386,16 +512,15 @@ fn face_boundaries(
     }
     let mut fill = start.clone();
     let mut boundary = vec![0u32; start[vertex_count] as usize];
-    for e in (0..halfedges.len()).filter(|&e| on_boundary(e)) {
+    for e in (0..halfedges.len()).filter(|&e| merged(e) && on_boundary(e)) {
         let v = vertex_of_triangle[e / 3] as usize;
         boundary[fill[v] as usize] = e as u32;
         fill[v] += 1;
     }
-    // Single triangles are already in order (3t, 3t+1, 3t+2); merged faces are chained by
-    // matching each half-edge's destination with the next one's origin.
+    // Rows are chained by matching each half-edge's destination with the next one's origin.
     for v in 0..vertex_count {
         let row = &mut boundary[start[v] as usize..start[v + 1] as usize];
-        if row.len() > 3 {
+        if !row.is_empty() {
             order_face_cycle(tri, row);
         }
     }

@@ -84,6 +84,30 @@ fn check_dual(vor: &Voronoi<'_>) {
     let finite = vor.finite_edges().count();
     let rays = vor.rays().count();
     assert_eq!(2 * finite + rays, degree_sum);
+    // Merged faces exist exactly when some vertex has degree above 3, and a Delaunay edge
+    // lacks a dual exactly when both its sides are in one face.
+    let merged = (0..vor.vertex_count() as u32).any(|v| vor.degree(v) > 3);
+    assert_eq!(vor.has_merged_faces(), merged);
+    for e in 0..tri.halfedges().len() as u32 {
+        let twin = tri.halfedges()[e as usize];
+        let same_face = twin != wdm_crust::delaunay::NO_TWIN
+            && vor.vertex_of_halfedge(e) == vor.vertex_of_halfedge(twin);
+        assert_eq!(vor.has_dual(e), !same_face);
+    }
+    // Positions computed one by one (before the cache exists) equal the cached ones, and
+    // round the exact circumcenter.
+    let one_by_one: Vec<[f64; 2]> = (0..vor.vertex_count() as u32)
+        .map(|v| vor.vertex_position(v))
+        .collect();
+    assert_eq!(one_by_one, vor.vertex_positions());
+    for (v, position) in one_by_one.iter().enumerate() {
+        let exact = vor.vertex_exact(v as u32);
+        for (k, x) in [&exact.x, &exact.y].into_iter().enumerate() {
+            let error = num_traits::Signed::abs(&(rational(position[k]) - x));
+            let scale = rational(position[0].abs().max(position[1].abs()).max(1e-300));
+            assert!(error <= scale / BigRational::from_integer(BigInt::from(1u64 << 40)));
+        }
+    }
     if !tri.is_degenerate() {
         assert_eq!(rays, tri.hull().len());
     }

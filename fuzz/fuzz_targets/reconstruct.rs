@@ -16,15 +16,13 @@ use wdm_crust_fuzz::scene::{permutation, Scene};
 
 const MAX_POINTS: usize = 600;
 
-/// Known issue, open: the boundary cycle of a merged (cocircular) Voronoi face starts at its
-/// smallest point index (`order_face_cycle` in src/voronoi.rs), so permuting the input
-/// rotates it. Then the vertex position is computed from another triangle (ulps apart), and
-/// the peeled medial axis, decided by a breadth-first parity walk in that order, can differ
-/// (tests `merged_face_position_depends_on_input_order` and
-/// `peeled_medial_axis_depends_on_input_order` in tests/fuzz_regressions.rs). While it is
-/// open, positions are compared within the accuracy of `circumcenter` and the peeled medial
-/// axis is not compared; set to `false` once fixed.
-const KNOWN_MERGED_FACE_ORDER_ISSUE: bool = true;
+/// Relaxes the order-independence check for the issue fixed in `order_face_cycle`
+/// (src/voronoi.rs; tests `merged_face_position_depends_on_input_order` and
+/// `peeled_medial_axis_depends_on_input_order` in tests/fuzz_regressions.rs): when `true`,
+/// Voronoi vertex positions are compared within the accuracy of `circumcenter` instead of
+/// bitwise, and the peeled medial axis is not compared. Kept as a switch in case another
+/// index-dependent choice turns up.
+const KNOWN_MERGED_FACE_ORDER_ISSUE: bool = false;
 
 fuzz_target!(|scene: Scene| {
     let points = scene.points(MAX_POINTS);

@@ -40,9 +40,10 @@ fn exact_ccw(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> bool {
     orient2d(a, b, c) == Orientation::CounterClockwise
 }
 
-/// Is `d` strictly inside the circle through the counterclockwise `a, b, c`?
+/// Shewchuk's floating-point in-circle determinant and its error bound: when `|det|`
+/// exceeds the bound, its sign is the exact one.
 #[inline(always)]
-pub fn inside(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
+fn incircle_with_bound(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> (f64, f64) {
     let adx = a[0] - d[0];
     let bdx = b[0] - d[0];
     let cdx = c[0] - d[0];
@@ -64,13 +65,40 @@ pub fn inside(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
     let permanent = (bdxcdy.abs() + cdxbdy.abs()) * alift
         + (cdxady.abs() + adxcdy.abs()) * blift
         + (adxbdy.abs() + bdxady.abs()) * clift;
-    let bound = INCIRCLE_BOUND * permanent;
+    (det, INCIRCLE_BOUND * permanent)
+}
+
+/// Is `d` strictly inside the circle through the counterclockwise `a, b, c`?
+#[inline(always)]
+pub fn inside(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
+    let (det, bound) = incircle_with_bound(a, b, c, d);
     if det > bound {
         true
     } else if -det > bound {
         false
     } else {
         exact_inside(a, b, c, d)
+    }
+}
+
+/// Are `a, b, c, d` exactly cocircular (`a, b, c` counterclockwise)? The same filter as
+/// [`inside`]; nearly every call is decided by it, since exact cocircularity is rare outside
+/// lattices, where [`lattice_incircle`] decides it cheaply.
+#[inline(always)]
+pub fn cocircular(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
+    let (det, bound) = incircle_with_bound(a, b, c, d);
+    if det.abs() > bound {
+        false
+    } else {
+        exact_cocircular(a, b, c, d)
+    }
+}
+
+#[inline(never)]
+fn exact_cocircular(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
+    match lattice_incircle(a, b, c, d) {
+        Some(det) => det == 0,
+        None => incircle(a, b, c, d) == CirclePosition::On,
     }
 }
 
@@ -371,6 +399,10 @@ mod tests {
                 inside(pa, pb, pc, d),
                 incircle(pa, pb, pc, d) == CirclePosition::Inside
             );
+            assert_eq!(
+                cocircular(pa, pb, pc, d),
+                incircle(pa, pb, pc, d) == CirclePosition::On
+            );
             let grid = |x: f64| (x * 4.0).floor();
             let (pa, pb, pc, d) = (
                 [grid(next()), grid(next())],
@@ -386,6 +418,10 @@ mod tests {
                 assert_eq!(
                     inside(pa, pb, pc, d),
                     incircle(pa, pb, pc, d) == CirclePosition::Inside
+                );
+                assert_eq!(
+                    cocircular(pa, pb, pc, d),
+                    incircle(pa, pb, pc, d) == CirclePosition::On
                 );
             }
         }

@@ -12,6 +12,7 @@ mod triangulation;
 mod validate;
 mod zorder;
 
+pub(crate) use filter::cocircular;
 pub use triangulation::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
 pub use validate::ValidationError;
 

@@ -144,15 +144,16 @@ pub fn write_reconstruction_svg<W: Write>(
     if let (true, Some(vor)) = (options.voronoi, &vor) {
         w.open_stroke_group("voronoi", VORONOI, 0.8 * unit)?;
         let rect = frame.clip;
+        let positions = vor.vertex_positions();
         for (_, a, b) in vor.finite_edges() {
-            let (pa, pb) = (vor.vertex_position(a), vor.vertex_position(b));
+            let (pa, pb) = (positions[a as usize], positions[b as usize]);
             let d = [pb[0] - pa[0], pb[1] - pa[1]];
             if let Some((p, q)) = clip(pa, d, 0.0, 1.0, &rect) {
                 w.segment(p, q)?;
             }
         }
         for (_, v, d) in vor.rays() {
-            if let Some((p, q)) = clip(vor.vertex_position(v), d, 0.0, f64::INFINITY, &rect) {
+            if let Some((p, q)) = clip(positions[v as usize], d, 0.0, f64::INFINITY, &rect) {
                 w.segment(p, q)?;
             }
         }
@@ -172,8 +173,7 @@ pub fn write_reconstruction_svg<W: Write>(
             (Label::Inner, INNER, "inner-vertices"),
         ] {
             w.open_fill_group(id, colour)?;
-            for (v, &l) in rec.labels().iter().enumerate() {
-                let p = vor.vertex_position(v as u32);
+            for (&l, &p) in rec.labels().iter().zip(vor.vertex_positions()) {
                 if l == label && frame.clip.contains(p) {
                     w.dot(p, style.label_radius * unit)?;
                 }

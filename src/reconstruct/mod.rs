@@ -387,7 +387,8 @@ fn peel(
     edges: &mut Vec<[u32; 2]>,
     options: &Options,
 ) -> usize {
-    let delaunay_edges = delaunay_edges(tri);
+    // Built on first need: a clean sample leaves no point untouched and never needs it.
+    let mut delaunay_edges: Option<Vec<[u32; 2]>> = None;
     let mut extra = 0;
     loop {
         let rest = untouched(tri, edges);
@@ -404,13 +405,14 @@ fn peel(
         }
         let vor = sub.voronoi();
         let flow = wdm::label_vertices(&vor, options.label_rule);
+        let full = delaunay_edges.get_or_insert_with(|| self::delaunay_edges(tri));
         let found: Vec<[u32; 2]> = crust_edges(&vor, &flow.labels)
             .iter()
             .map(|&[a, b]| {
                 let (a, b) = (rest[a as usize], rest[b as usize]);
                 [a.min(b), a.max(b)]
             })
-            .filter(|e| delaunay_edges.binary_search(e).is_ok())
+            .filter(|e| full.binary_search(e).is_ok())
             .collect();
         if found.is_empty() {
             return extra;

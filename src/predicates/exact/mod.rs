@@ -595,12 +595,25 @@ pub fn circumcenter_exact(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Exact
 #[inline]
 pub fn circumcenter(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<[f64; 2]> {
     CIRCUMCENTER.call();
+    circumcenter_uncounted(a, b, c)
+}
+
+/// [`circumcenter`] without counting the call, for loops that count once at the end
+/// ([`count_circumcenter_calls`]): the shared atomic counter is a measurable share of the
+/// cost of a cheap call. Fallbacks are still counted.
+#[inline]
+pub(crate) fn circumcenter_uncounted(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<[f64; 2]> {
     if let Some(o) = filter::circumcenter(&[a, b, c]) {
         return Some(o);
     }
     let (o, stage) = circumcenter_slow(a, b, c);
     CIRCUMCENTER.slow(stage);
     o
+}
+
+/// Adds `calls` calls of [`circumcenter_uncounted`] to the counters of [`fallback_counts`].
+pub(crate) fn count_circumcenter_calls(calls: u64) {
+    CIRCUMCENTER.calls.fetch_add(calls, AtomicOrdering::Relaxed);
 }
 
 /// Exact orientation of `(a, b, O)` where `O` is the circumcenter of `tri`: on which side of

@@ -53,6 +53,48 @@ pub fn assemble(point_count: usize, edges: &[[u32; 2]], points: &[[f64; 2]]) -> 
     curves
 }
 
+/// The curves of [`assemble`] on renamed points, renamed back by `name` (new → old index):
+/// the same list, curve for curve and point for point, that [`assemble`] gives on the old
+/// indices, with the same order of curves.
+///
+/// That order, which `assemble` produces by scanning start points upwards, is: open chains
+/// first, sorted by their first two points, each starting at its smaller end (a chain from a
+/// junction back to itself runs towards its smaller neighbour first); then closed loops by
+/// their smallest point, each starting there, counterclockwise.
+pub fn rename(curves: Vec<Curve>, name: &[u32], points: &[[f64; 2]]) -> Vec<Curve> {
+    let mut curves: Vec<Curve> = curves
+        .into_iter()
+        .map(|mut curve| {
+            for p in &mut curve.points {
+                *p = name[*p as usize];
+            }
+            let c = &mut curve.points;
+            if curve.closed {
+                // Redo what `assemble` does from its walk, in the same order of summation:
+                // start at the smallest point, towards its smaller neighbour, then orient.
+                if let Some(min_at) = (0..c.len()).min_by_key(|&i| c[i]) {
+                    c.rotate_left(min_at);
+                }
+                if c.len() > 2 && c[1] > c[c.len() - 1] {
+                    c[1..].reverse();
+                }
+                orient_counterclockwise(c, points);
+            } else if let (Some(&first), Some(&last)) = (c.first(), c.last()) {
+                if last < first || (last == first && c.len() > 2 && c[1] > c[c.len() - 2]) {
+                    c.reverse();
+                }
+            }
+            curve
+        })
+        .collect();
+    curves.sort_by(|a, b| {
+        a.closed
+            .cmp(&b.closed)
+            .then_with(|| a.points.iter().take(2).cmp(b.points.iter().take(2)))
+    });
+    curves
+}
+
 /// Points with at least one edge and a degree other than 2: curve ends and junctions.
 /// (Points without any edge are not listed: the caller decides what those mean.)
 pub fn irregular_points(point_count: usize, edges: &[[u32; 2]]) -> Vec<u32> {
@@ -213,6 +255,60 @@ mod tests {
                 points: vec![0, 2, 3, 1]
             }]
         );
+    }
+
+    #[test]
+    fn renaming_back_gives_the_curves_of_the_old_names() {
+        use crate::sample::Rng;
+        let mut rng = Rng::new(17);
+        for round in 0..300 {
+            // A random graph of small degree on up to 40 points: loops, chains, junctions,
+            // loops through junctions, isolated points.
+            let n = 3 + rng.below(38);
+            let points: Vec<[f64; 2]> = (0..n).map(|_| [rng.f64(), rng.f64()]).collect();
+            let mut edges: Vec<[u32; 2]> = Vec::new();
+            for _ in 0..rng.below(2 * n) {
+                let (a, b) = (rng.below(n) as u32, rng.below(n) as u32);
+                if a != b {
+                    edges.push([a.min(b), a.max(b)]);
+                }
+            }
+            if round % 3 == 0 {
+                // Add a long cycle so that closed loops are common.
+                for i in 0..n as u32 / 2 {
+                    let j = (i + 1) % (n as u32 / 2);
+                    edges.push([i.min(j), i.max(j)]);
+                }
+            }
+            edges.sort_unstable();
+            edges.dedup();
+            let expected = assemble(n, &edges, &points);
+
+            let order = rng.permutation(n); // new index of old point i
+            let new_of_old: Vec<u32> = order.iter().map(|&k| k as u32).collect();
+            let mut old_of_new = vec![0u32; n];
+            for (old, &new) in new_of_old.iter().enumerate() {
+                old_of_new[new as usize] = old as u32;
+            }
+            let mut renamed_points = vec![[0.0; 2]; n];
+            for (old, &new) in new_of_old.iter().enumerate() {
+                renamed_points[new as usize] = points[old];
+            }
+            let mut renamed_edges: Vec<[u32; 2]> = edges
+                .iter()
+                .map(|&[a, b]| {
+                    let (a, b) = (new_of_old[a as usize], new_of_old[b as usize]);
+                    [a.min(b), a.max(b)]
+                })
+                .collect();
+            renamed_edges.sort_unstable();
+            let local = assemble(n, &renamed_edges, &renamed_points);
+            assert_eq!(
+                rename(local, &old_of_new, &points),
+                expected,
+                "round {round}"
+            );
+        }
     }
 
     #[test]

@@ -5,8 +5,9 @@
 //! cargo bench --bench peak_memory --no-run   # prints the binary path
 //! /usr/bin/time -v target/release/deps/peak_memory-<hash> triangulate curve 1000000
 //! ```
-//! Operations: `points` (only generate the input, the baseline), `triangulate`,
-//! `reconstruct`. Point sets: `uniform`, `clusters`, `grid`, `curve`.
+//! Operations: `points` (only generate the input, the baseline), `triangulate`, `voronoi`
+//! (triangulate, then the dual with all vertex positions), `reconstruct`. Point sets:
+//! `uniform`, `clusters`, `grid`, `curve`.
 
 mod common;
 
@@ -19,7 +20,7 @@ fn main() {
         args.get(1).and_then(|s| PointSet::parse(s)),
         args.get(2).and_then(|s| s.parse::<usize>().ok()),
     ) else {
-        eprintln!("usage: peak_memory <points|triangulate|reconstruct> <point set> <n>");
+        eprintln!("usage: peak_memory <points|triangulate|voronoi|reconstruct> <point set> <n>");
         return;
     };
     let points = set.points(n, 42);
@@ -28,6 +29,15 @@ fn main() {
         "triangulate" => {
             let tri = wdm_crust::triangulate(&points).expect("valid points");
             println!("{} triangles", tri.triangles().len());
+        }
+        "voronoi" => {
+            let tri = wdm_crust::triangulate(&points).expect("valid points");
+            let vor = tri.voronoi();
+            println!(
+                "{} vertices, {} positions",
+                vor.vertex_count(),
+                vor.vertex_positions().len()
+            );
         }
         "reconstruct" => {
             let rec = wdm_crust::reconstruct(&points).expect("valid points");

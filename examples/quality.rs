@@ -56,6 +56,7 @@ fn wdm_variants() -> Vec<Method> {
         algorithm: Algorithm::Wdm,
         peeling,
         label_rule,
+        ..Options::default()
     };
     vec![
         Method {

@@ -91,11 +91,16 @@ fn main() {
         let t = Instant::now();
         let rec = reconstruct_with(&points, &options).expect("valid points");
         println!(
-            "{name}: {:.2}s, {} edges, {} curves, {} passes, {} untouched, {} medial-axis segments",
+            "{name}: {:.2}s, {} edges, {} curves, {} passes{}, {} untouched, {} medial-axis segments",
             t.elapsed().as_secs_f64(),
             rec.edges().len(),
             rec.curves().len(),
             rec.passes(),
+            if rec.peeling_budget_exhausted() {
+                " (budget reached)"
+            } else {
+                ""
+            },
             rec.untouched_points().len(),
             rec.medial_axis().edges.len()
         );

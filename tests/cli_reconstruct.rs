@@ -618,3 +618,42 @@ fn bundled_examples_round_trip() {
         assert!(data.join(file).is_file(), "examples/data/{file} missing");
     }
 }
+
+// ----- the peeling budget -----
+
+#[test]
+fn a_grid_stops_peeling_at_the_budget_with_a_note() {
+    let dir = tempfile::tempdir().unwrap();
+    let grid: Vec<[f64; 2]> = (0..900)
+        .map(|i| [(i % 30) as f64, (i / 30) as f64])
+        .collect();
+    write(dir.path(), "grid.txt", points_text(&grid).as_bytes());
+    let run = run_in(
+        dir.path(),
+        &["reconstruct", "grid.txt", "--format", "text"],
+        b"",
+    );
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let lines: Vec<&str> = run.stderr.lines().collect();
+    assert_eq!(lines.len(), 1, "{}", run.stderr);
+    assert!(
+        lines[0].starts_with("wdm-crust: note: grid.txt: peeling stopped after ")
+            && lines[0].contains("(--peeling-budget 4)"),
+        "{}",
+        lines[0]
+    );
+    // A larger budget peels the grid to its centre, silently.
+    let run = run_in(
+        dir.path(),
+        &[
+            "reconstruct",
+            "grid.txt",
+            "--format",
+            "text",
+            "--peeling-budget",
+            "1000",
+        ],
+        b"",
+    );
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+}

@@ -184,6 +184,7 @@ fn a_shape_with_a_hole_needs_peeling() {
         );
         assert_eq!(peeled.passes(), 2);
         assert_eq!(peeled.curves().len(), 2);
+        assert!(!peeled.peeling_budget_exhausted());
         // The paper's single pass never reaches the hole: its curve is lost entirely.
         let single = reconstruct_with(
             &sample.points,
@@ -218,6 +219,46 @@ fn a_shape_with_a_hole_needs_peeling() {
             );
         }
     }
+}
+
+/// A grid is no curve sample: peeling takes off one square ring per pass. The budget stops
+/// it after a bounded amount of work, says so, and leaves the inner points untouched.
+#[test]
+fn peeling_a_grid_stops_at_the_budget() {
+    let side = 40;
+    let grid: Vec<[f64; 2]> = (0..side * side)
+        .map(|i| [(i % side) as f64, (i / side) as f64])
+        .collect();
+    let unbounded = reconstruct_with(
+        &grid,
+        &Options {
+            peeling_budget: usize::MAX,
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    assert!(!unbounded.peeling_budget_exhausted());
+    assert!(unbounded.passes() >= 10, "{} passes", unbounded.passes());
+    let bounded = reconstruct(&grid).unwrap();
+    assert!(bounded.peeling_budget_exhausted());
+    assert!(bounded.passes() < unbounded.passes());
+    // The extra passes ran on at most 4n points: each on all points not yet on a curve.
+    let n = grid.len();
+    assert!((bounded.passes() - 1) * bounded.untouched_points().len() <= 4 * n);
+    assert!(!bounded.untouched_points().is_empty());
+    // The passes that did run found the same edges as without the bound.
+    let all: EdgeSet = edge_set(unbounded.edges());
+    assert!(edge_set(bounded.edges()).is_subset(&all));
+    let zero = reconstruct_with(
+        &grid,
+        &Options {
+            peeling_budget: 0,
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(zero.passes(), 1);
+    assert!(zero.peeling_budget_exhausted());
 }
 
 /// Even–odd point-in-polygon (test geometry only).

@@ -109,6 +109,12 @@ pub struct ReconstructArgs {
     #[arg(long)]
     no_peeling: bool,
 
+    /// Peeling stops before the extra passes together would run on more than N times the
+    /// input's points (a note on standard error says so). Curve samples with holes never
+    /// reach it; noise and grids would otherwise peel for hundreds of passes.
+    #[arg(long, value_name = "N", default_value_t = Options::default().peeling_budget)]
+    peeling_budget: usize,
+
     /// SVG underlays, comma-separated: delaunay, voronoi, labels.
     #[arg(long, value_enum, value_delimiter = ',', value_name = "LAYERS")]
     show: Vec<Layer>,
@@ -149,6 +155,7 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
     let options = Options {
         algorithm: args.algorithm.into(),
         peeling: !args.no_peeling,
+        peeling_budget: args.peeling_budget,
         ..Default::default()
     };
     let n = points.len();
@@ -177,6 +184,15 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
         )
     });
 
+    if rec.peeling_budget_exhausted() {
+        eprintln!(
+            "wdm-crust: note: {}: peeling stopped after {} passes (--peeling-budget {}); {} points are on no curve",
+            input.name(),
+            rec.passes(),
+            options.peeling_budget,
+            rec.untouched_points().len()
+        );
+    }
     timings.begin(|| "writing".to_string());
     let svg = SvgOptions {
         delaunay: args.show.contains(&Layer::Delaunay),

@@ -54,6 +54,13 @@ pub struct Options {
     pub peeling: bool,
     /// How water-flow states become labels (see [`LabelRule`]).
     pub label_rule: LabelRule,
+    /// Bounds the work of peeling: the extra passes together may run on at most this many
+    /// times the input's point count (default 4), so a reconstruction costs at most about
+    /// five single passes. Nested curves leave few points for the later passes and never
+    /// meet the bound; inputs that are not curve samples do (uniform noise or a grid peel off
+    /// a thin layer per pass and would take hundreds of passes).
+    /// [`Reconstruction::peeling_budget_exhausted`] tells when it stopped the peeling.
+    pub peeling_budget: usize,
 }
 
 impl Default for Options {
@@ -62,6 +69,7 @@ impl Default for Options {
             algorithm: Algorithm::Wdm,
             peeling: true,
             label_rule: LabelRule::WaterReached,
+            peeling_budget: 4,
         }
     }
 }
@@ -107,6 +115,7 @@ pub struct Reconstruction {
     curves: Vec<Curve>,
     medial_axis: MedialAxis,
     passes: usize,
+    budget_exhausted: bool,
 }
 
 impl Reconstruction {
@@ -123,6 +132,13 @@ impl Reconstruction {
     /// Closed loops and open chains assembled from [`Self::edges`].
     pub fn curves(&self) -> &[Curve] {
         &self.curves
+    }
+
+    /// True when peeling stopped because the next pass would have exceeded
+    /// [`Options::peeling_budget`]: the [`untouched_points`](Self::untouched_points) may
+    /// then still hold curves.
+    pub fn peeling_budget_exhausted(&self) -> bool {
+        self.budget_exhausted
     }
 
     /// WDM_MAT: segments between inner Voronoi vertices.
@@ -242,7 +258,7 @@ pub fn reconstruct_observed(
     // not change.
     let renaming = triangulation.locality_renaming();
     triangulation.rename_points(&renaming.new_of_old);
-    let (labels, mut edges, medial_axis, passes, local_curves) = {
+    let (labels, mut edges, medial_axis, peeling, local_curves) = {
         let vor = triangulation.voronoi();
         lap(Phase::Voronoi);
         let flow = wdm::label_vertices(&vor, options.label_rule);
@@ -252,11 +268,12 @@ pub fn reconstruct_observed(
         } else {
             crust_edges(&vor, &flow.labels)
         };
-        let passes = 1 + if options.peeling {
+        let peeling = if options.peeling {
             peel(&triangulation, &mut edges, options)
         } else {
-            0
+            Peeling::done(0)
         };
+        let passes = 1 + peeling.extra_passes;
         edges.sort_unstable();
         edges.dedup();
         let axis = if passes > 1 {
@@ -280,7 +297,7 @@ pub fn reconstruct_observed(
             medial_axis(&vor, &flow.labels)
         };
         let curves = curves::assemble(points.len(), &edges, triangulation.points());
-        (flow.labels, edges, axis, passes, curves)
+        (flow.labels, edges, axis, peeling, curves)
     };
     let old = &renaming.old_of_new;
     triangulation.rename_points(old);
@@ -297,7 +314,8 @@ pub fn reconstruct_observed(
         edges,
         curves,
         medial_axis,
-        passes,
+        passes: 1 + peeling.extra_passes,
+        budget_exhausted: peeling.budget_exhausted,
     };
     lap(Phase::Extract);
     Ok(rec)
@@ -324,6 +342,7 @@ fn finish(
         curves,
         medial_axis,
         passes,
+        budget_exhausted: false,
     }
 }
 
@@ -391,29 +410,38 @@ fn untouched(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<u32> {
 }
 
 /// Reruns WDM_CRUST on the points the crust left untouched, adding what each pass finds,
-/// until a pass finds nothing or fewer than three points remain. Returns the extra passes.
+/// until a pass finds nothing, fewer than three points remain, or the next pass would exceed
+/// [`Options::peeling_budget`].
 ///
 /// Only edges of the full Delaunay triangulation are taken from a later pass. A nested
 /// curve's edges are Delaunay edges of all the points (so they never cross an earlier
 /// curve), whereas the leftovers of a noisy band would otherwise be joined by long chords
 /// across the curve already found.
-fn peel(tri: &Triangulation, edges: &mut Vec<[u32; 2]>, options: &Options) -> usize {
+fn peel(tri: &Triangulation, edges: &mut Vec<[u32; 2]>, options: &Options) -> Peeling {
     let points = tri.points();
+    let mut budget = options.peeling_budget.saturating_mul(points.len());
     // Built on first need: a clean sample leaves no point untouched and never needs it.
     let mut delaunay_edges: Option<Vec<[u32; 2]>> = None;
     let mut extra = 0;
     loop {
         let rest = untouched(tri, edges);
         if rest.len() < 3 {
-            return extra;
+            return Peeling::done(extra);
         }
+        if rest.len() > budget {
+            return Peeling {
+                extra_passes: extra,
+                budget_exhausted: true,
+            };
+        }
+        budget -= rest.len();
         let subset: Vec<[f64; 2]> = rest.iter().map(|&i| points[i as usize]).collect();
         // The subset is a selection of already validated points: this cannot fail.
         let Ok(sub) = triangulate(&subset) else {
-            return extra;
+            return Peeling::done(extra);
         };
         if sub.is_degenerate() {
-            return extra;
+            return Peeling::done(extra);
         }
         let vor = sub.voronoi();
         let flow = wdm::label_vertices(&vor, options.label_rule);
@@ -427,10 +455,25 @@ fn peel(tri: &Triangulation, edges: &mut Vec<[u32; 2]>, options: &Options) -> us
             .filter(|e| full.binary_search(e).is_ok())
             .collect();
         if found.is_empty() {
-            return extra;
+            return Peeling::done(extra);
         }
         edges.extend(found);
         extra += 1;
+    }
+}
+
+/// How peeling ended.
+struct Peeling {
+    extra_passes: usize,
+    budget_exhausted: bool,
+}
+
+impl Peeling {
+    fn done(extra_passes: usize) -> Peeling {
+        Peeling {
+            extra_passes,
+            budget_exhausted: false,
+        }
     }
 }
 
@@ -523,7 +566,7 @@ mod tests {
                 assert_eq!(rec.labels(), &flow.labels[..], "round {round}");
                 let mut edges = crust_edges(&vor, &flow.labels);
                 let passes = 1 + if peeling {
-                    peel(&tri, &mut edges, &options)
+                    peel(&tri, &mut edges, &options).extra_passes
                 } else {
                     0
                 };

@@ -182,7 +182,8 @@ impl<'a> Voronoi<'a> {
     }
 
     /// Circumcenters of all vertices, rounded to f64 as [`vertex_position`] rounds them.
-    /// Computed on the first call (about 60 ns per vertex) and kept.
+    /// Computed on the first call (a filtered circumcenter per vertex, some tens of
+    /// nanoseconds each) and kept.
     ///
     /// [`vertex_position`]: Voronoi::vertex_position
     pub fn vertex_positions(&self) -> &[[f64; 2]] {
@@ -377,6 +378,24 @@ impl<'a> Voronoi<'a> {
         }
     }
 
+    /// Is `[a, b]` an edge of the triangulation? Walks the triangles around `a`: O(degree).
+    pub(crate) fn is_delaunay_edge(&self, a: u32, b: u32) -> bool {
+        let start = self.out_halfedge[a as usize];
+        if start == NO_TWIN || a == b {
+            return false;
+        }
+        let mut e = start;
+        loop {
+            if self.tri.triangles()[e as usize / 3].contains(&b) {
+                return true;
+            }
+            match self.rotate_counterclockwise(e) {
+                Some(next) if next != start => e = next,
+                _ => return false,
+            }
+        }
+    }
+
     /// The half-edge out of the same point, one triangle counterclockwise; `None` past the hull.
     fn rotate_counterclockwise(&self, e: u32) -> Option<u32> {
         let incoming = prev_in_triangle(e as usize);
@@ -544,6 +563,48 @@ fn order_face_cycle(tri: &Triangulation, row: &mut [u32]) {
         let dest = tri.halfedge_destination(e as usize);
         if let Ok(i) = by_origin.binary_search_by_key(&dest, |&(o, _)| o) {
             e = by_origin[i].1;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::sample::Rng;
+    use crate::triangulate;
+    use std::collections::BTreeSet;
+
+    #[test]
+    fn is_delaunay_edge_agrees_with_the_edge_list() {
+        let mut rng = Rng::new(23);
+        for round in 0..60 {
+            let n = 3 + rng.below(60);
+            // Random points, or a small lattice (collinear hull runs, merged faces).
+            let points: Vec<[f64; 2]> = (0..n)
+                .map(|_| {
+                    if round % 2 == 0 {
+                        [rng.f64(), rng.f64()]
+                    } else {
+                        [rng.below(6) as f64, rng.below(6) as f64]
+                    }
+                })
+                .collect();
+            let tri = triangulate(&points).unwrap();
+            let vor = tri.voronoi();
+            let edges: BTreeSet<[u32; 2]> = (0..tri.halfedges().len())
+                .map(|e| {
+                    let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
+                    [a.min(b), a.max(b)]
+                })
+                .collect();
+            for a in 0..n as u32 {
+                for b in 0..n as u32 {
+                    assert_eq!(
+                        vor.is_delaunay_edge(a, b),
+                        edges.contains(&[a.min(b), a.max(b)]),
+                        "round {round}: {a}-{b}"
+                    );
+                }
+            }
         }
     }
 }

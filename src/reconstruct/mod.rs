@@ -269,7 +269,7 @@ pub fn reconstruct_observed(
             crust_edges(&vor, &flow.labels)
         };
         let peeling = if options.peeling {
-            peel(&triangulation, &mut edges, options)
+            peel(&vor, &mut edges, options)
         } else {
             Peeling::done(0)
         };
@@ -346,7 +346,8 @@ fn finish(
     }
 }
 
-/// Delaunay edges dual to branch edges. A ray's far end is the root vertex, always outer.
+/// Delaunay edges dual to branch edges, each once, unsorted. A ray's far end is the root
+/// vertex, always outer.
 fn crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
     let mut edges = Vec::new();
     for v in 0..vor.vertex_count() as u32 {
@@ -362,7 +363,6 @@ fn crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
             }
         }
     }
-    edges.sort_unstable();
     edges
 }
 
@@ -417,11 +417,10 @@ fn untouched(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<u32> {
 /// curve's edges are Delaunay edges of all the points (so they never cross an earlier
 /// curve), whereas the leftovers of a noisy band would otherwise be joined by long chords
 /// across the curve already found.
-fn peel(tri: &Triangulation, edges: &mut Vec<[u32; 2]>, options: &Options) -> Peeling {
+fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Options) -> Peeling {
+    let tri = full.triangulation();
     let points = tri.points();
     let mut budget = options.peeling_budget.saturating_mul(points.len());
-    // Built on first need: a clean sample leaves no point untouched and never needs it.
-    let mut delaunay_edges: Option<Vec<[u32; 2]>> = None;
     let mut extra = 0;
     loop {
         let rest = untouched(tri, edges);
@@ -445,14 +444,13 @@ fn peel(tri: &Triangulation, edges: &mut Vec<[u32; 2]>, options: &Options) -> Pe
         }
         let vor = sub.voronoi();
         let flow = wdm::label_vertices(&vor, options.label_rule);
-        let full = delaunay_edges.get_or_insert_with(|| self::delaunay_edges(tri));
         let found: Vec<[u32; 2]> = crust_edges(&vor, &flow.labels)
             .iter()
             .map(|&[a, b]| {
                 let (a, b) = (rest[a as usize], rest[b as usize]);
                 [a.min(b), a.max(b)]
             })
-            .filter(|e| full.binary_search(e).is_ok())
+            .filter(|&[a, b]| full.is_delaunay_edge(a, b))
             .collect();
         if found.is_empty() {
             return Peeling::done(extra);
@@ -477,33 +475,34 @@ impl Peeling {
     }
 }
 
-/// Every Delaunay edge `[i, j]`, `i < j`, sorted.
-fn delaunay_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
-    let mut out: Vec<[u32; 2]> = (0..tri.halfedges().len())
-        .filter(|&e| {
-            let twin = tri.halfedges()[e];
-            twin == crate::delaunay::NO_TWIN || e < twin as usize
-        })
-        .map(|e| {
-            let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
-            [a.min(b), a.max(b)]
-        })
-        .collect();
-    out.sort_unstable();
-    out
-}
-
 /// Inside/outside of every Voronoi vertex by the parity of crust edges crossed on the way
 /// from infinity (breadth first; the first path found decides where the crust is not a set
 /// of closed curves).
 fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
     let tri = vor.triangulation();
+    // Crust neighbours of every point (compressed rows; two for most points): a lookup
+    // touches one short row instead of a binary search over all edges.
+    let n = tri.points().len();
+    let mut start = vec![0u32; n + 1];
+    for &[a, b] in edges {
+        start[a as usize + 1] += 1;
+        start[b as usize + 1] += 1;
+    }
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut fill = start.clone();
+    let mut neighbours = vec![0u32; start[n] as usize];
+    for &[a, b] in edges {
+        for (p, q) in [(a, b), (b, a)] {
+            neighbours[fill[p as usize] as usize] = q;
+            fill[p as usize] += 1;
+        }
+    }
     let is_crust = |e: u32| {
-        let (a, b) = (
-            tri.halfedge_origin(e as usize),
-            tri.halfedge_destination(e as usize),
-        );
-        edges.binary_search(&[a.min(b), a.max(b)]).is_ok()
+        let a = tri.halfedge_origin(e as usize) as usize;
+        let b = tri.halfedge_destination(e as usize);
+        neighbours[start[a] as usize..start[a + 1] as usize].contains(&b)
     };
     let n = vor.vertex_count();
     let mut inside = vec![false; n];
@@ -566,7 +565,7 @@ mod tests {
                 assert_eq!(rec.labels(), &flow.labels[..], "round {round}");
                 let mut edges = crust_edges(&vor, &flow.labels);
                 let passes = 1 + if peeling {
-                    peel(&tri, &mut edges, &options).extra_passes
+                    peel(&vor, &mut edges, &options).extra_passes
                 } else {
                     0
                 };

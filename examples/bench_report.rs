@@ -218,9 +218,10 @@ fn scaling_plot(results: &Results) -> String {
         let x = px(10u64.pow(e));
         let _ = writeln!(
             svg,
-            r##"<line x1="{x}" y1="{y0}" x2="{x}" y2="{}" stroke="#333"/><text x="{x}" y="{}" text-anchor="middle">10^{e}</text>"##,
+            r##"<line x1="{x}" y1="{y0}" x2="{x}" y2="{}" stroke="#333"/><text x="{x}" y="{}" text-anchor="middle">10{}</text>"##,
             y0 + 5.0,
-            y0 + 18.0
+            y0 + 18.0,
+            ["⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷"][e as usize]
         );
     }
     let _ = writeln!(

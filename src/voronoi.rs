@@ -19,6 +19,7 @@ use crate::delaunay::{cocircular, next_in_triangle, prev_in_triangle, Triangulat
 use crate::predicates::exact::{
     circumcenter_exact, circumcenter_uncounted, count_circumcenter_calls, ExactPoint,
 };
+use crate::predicates::{orient2d, Orientation};
 use num_rational::BigRational;
 
 /// The far end of a Voronoi edge.
@@ -209,9 +210,36 @@ impl<'a> Voronoi<'a> {
     }
 
     fn compute_position(&self, v: u32) -> [f64; 2] {
-        let [a, b, c] = self.vertex_triangle(v);
+        let [a, b, c] = self.canonical_triangle(v);
         // Delaunay triangles are never collinear; the fallback is unreachable.
         circumcenter_uncounted(a, b, c).unwrap_or(a)
+    }
+
+    /// Three sites of the face of `v`, chosen and ordered by their coordinates alone: the
+    /// rounded circumcenter depends on which triangle and which corner it starts from, and
+    /// those depend on the input order where points tie in the Z-order (points much closer
+    /// together than the spread of the input). A single triangle is rotated to start at its
+    /// lexicographically smallest corner; a merged face gives its three lexicographically
+    /// smallest sites (distinct points on one circle: never collinear), counterclockwise.
+    fn canonical_triangle(&self, v: u32) -> [[f64; 2]; 3] {
+        let points = self.tri.points();
+        let mut t = if self.degree(v) == 3 {
+            self.vertex_triangle(v)
+        } else {
+            let mut sites: Vec<[f64; 2]> =
+                self.vertex_sites(v).map(|p| points[p as usize]).collect();
+            sites.sort_unstable_by(|p, q| lexicographic(*p, *q));
+            let (a, mut b, mut c) = (sites[0], sites[1], sites[2]);
+            if orient2d(a, b, c) == Orientation::Clockwise {
+                std::mem::swap(&mut b, &mut c);
+            }
+            [a, b, c]
+        };
+        let smallest = (0..3)
+            .min_by(|&i, &j| lexicographic(t[i], t[j]))
+            .unwrap_or(0);
+        t.rotate_left(smallest);
+        t
     }
 
     /// Circumcenter of vertex `v` as an exact rational point.
@@ -418,6 +446,11 @@ impl<'a> Voronoi<'a> {
             Vec::new()
         }
     }
+}
+
+/// Orders points by x, then y.
+fn lexicographic(p: [f64; 2], q: [f64; 2]) -> std::cmp::Ordering {
+    p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
 }
 
 /// Iterator over the vertices of one Voronoi cell, counterclockwise.

@@ -169,3 +169,37 @@ fn byte_order_mark_before_a_header() {
     let detected = read_points(data, Some(detect_format(data))).map_err(|e| e.to_string());
     assert_eq!(on_the_fly, detected);
 }
+
+/// Fixed issue, found by `reconstruct` (single pass, 507 points: a shifted lattice of order
+/// 10^2 plus points of order 10^-42; `tests/data/fuzz-order-tiny-points.txt`). The tiny points
+/// share one Z-order key, so their order in the divide and conquer, hence the first corner of
+/// their triangles, followed the input order; the rounded circumcenter, computed from the
+/// first corner, moved by an ulp under permutation. Positions are now computed from a
+/// triangle chosen and rotated by coordinates alone (`Voronoi::canonical_triangle`).
+#[test]
+fn tiny_points_sharing_a_zorder_key_give_order_independent_positions() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/fuzz-order-tiny-points.txt"
+    );
+    let points = wdm_crust::io::read_points_from_path(std::path::Path::new(path)).unwrap();
+    let text = std::fs::read_to_string(path).unwrap();
+    let perm: Vec<usize> = text
+        .lines()
+        .find_map(|l| l.strip_prefix("# permutation "))
+        .unwrap()
+        .split_whitespace()
+        .map(|k| k.parse().unwrap())
+        .collect();
+    assert_eq!((points.len(), perm.len()), (507, 507));
+    let shuffled = checks::permute(&points, &perm);
+    assert_eq!(position_bits(&points), position_bits(&shuffled));
+    let options = Options {
+        peeling: false,
+        ..Options::default()
+    };
+    let rec = reconstruct_with(&points, &options).unwrap();
+    let other = reconstruct_with(&shuffled, &options).unwrap();
+    checks::check_permuted(&points, &perm, &rec, &other, true, true).unwrap();
+    check_everything(&points);
+}

@@ -170,13 +170,13 @@ fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]]) {
 }
 
 /// Compressed adjacency lists: for each point, `(edge index, other end)`.
-struct Adjacency {
+pub(crate) struct Adjacency {
     start: Vec<u32>,
     entries: Vec<(u32, u32)>,
 }
 
 impl Adjacency {
-    fn new(point_count: usize, edges: &[[u32; 2]]) -> Self {
+    pub(crate) fn new(point_count: usize, edges: &[[u32; 2]]) -> Self {
         let mut start = vec![0u32; point_count + 1];
         for &[a, b] in edges {
             start[a as usize + 1] += 1;
@@ -196,7 +196,7 @@ impl Adjacency {
         Adjacency { start, entries }
     }
 
-    fn neighbours(&self, p: u32) -> &[(u32, u32)] {
+    pub(crate) fn neighbours(&self, p: u32) -> &[(u32, u32)] {
         &self.entries[self.start[p as usize] as usize..self.start[p as usize + 1] as usize]
     }
 

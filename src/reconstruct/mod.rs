@@ -480,29 +480,15 @@ impl Peeling {
 /// of closed curves).
 fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
     let tri = vor.triangulation();
-    // Crust neighbours of every point (compressed rows; two for most points): a lookup
-    // touches one short row instead of a binary search over all edges.
-    let n = tri.points().len();
-    let mut start = vec![0u32; n + 1];
-    for &[a, b] in edges {
-        start[a as usize + 1] += 1;
-        start[b as usize + 1] += 1;
-    }
-    for i in 0..n {
-        start[i + 1] += start[i];
-    }
-    let mut fill = start.clone();
-    let mut neighbours = vec![0u32; start[n] as usize];
-    for &[a, b] in edges {
-        for (p, q) in [(a, b), (b, a)] {
-            neighbours[fill[p as usize] as usize] = q;
-            fill[p as usize] += 1;
-        }
-    }
+    // Crust neighbours of every point (two for most): a lookup touches one short row
+    // instead of a binary search over all edges.
+    let crust = curves::Adjacency::new(tri.points().len(), edges);
     let is_crust = |e: u32| {
-        let a = tri.halfedge_origin(e as usize) as usize;
         let b = tri.halfedge_destination(e as usize);
-        neighbours[start[a] as usize..start[a + 1] as usize].contains(&b)
+        crust
+            .neighbours(tri.halfedge_origin(e as usize))
+            .iter()
+            .any(|&(_, q)| q == b)
     };
     let n = vor.vertex_count();
     let mut inside = vec![false; n];

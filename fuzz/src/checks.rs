@@ -46,8 +46,8 @@ pub fn rpoint(p: [f64; 2]) -> RPoint {
     [rat(p[0]), rat(p[1])]
 }
 
-/// The sign of a rational.
-pub fn sign(x: &BigRational) -> Sign {
+/// The sign of an exact number (a rational or an integer).
+pub fn sign<T: Signed>(x: &T) -> Sign {
     if x.is_positive() {
         Sign::Positive
     } else if x.is_negative() {
@@ -466,14 +466,7 @@ impl IntPoints {
         let q = self.p(p);
         let vx = &q[0] * &h.d - &h.x;
         let vy = &q[1] * &h.d - &h.y;
-        let c = &dir[0] * &vy - &dir[1] * &vx;
-        if c.is_positive() {
-            Sign::Positive
-        } else if c.is_negative() {
-            Sign::Negative
-        } else {
-            Sign::Zero
-        }
+        sign(&(&dir[0] * &vy - &dir[1] * &vx))
     }
 }
 

@@ -129,6 +129,24 @@ impl Extremes {
     }
 }
 
+/// A side of a merge.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Side {
+    Left,
+    Right,
+}
+
+/// One side's candidate for the next triangle above the merge base `l–r`.
+struct Candidate {
+    /// The candidate lies strictly above the base (`r × candidate > 0` seen from `l`).
+    valid: bool,
+    v: u32,
+    p: [f64; 2],
+    /// The candidate relative to `l`, and `r × candidate`.
+    rel: Lifted,
+    cross: f64,
+}
+
 struct DivideConquer<'a> {
     /// Distinct points; a subproblem may reorder its own range before recursing.
     pts: &'a mut [[f64; 2]],
@@ -143,6 +161,63 @@ impl DivideConquer<'_> {
     #[inline]
     fn p(&self, v: u32) -> [f64; 2] {
         self.pts[v as usize]
+    }
+
+    /// Settles the candidate of one side of the merge step at base `l–r` (`base` holds
+    /// `l`, `r` and `r` relative to `l`): while the next neighbour `x` behind the side's
+    /// ghost lies inside the circle through `l`, `r` and the candidate, the edge to the
+    /// candidate is flipped into the ghost ring and `x` becomes the candidate. Every test is
+    /// evaluated relative to `l`; the orientation `r × candidate` doubles as a minor of the
+    /// in-circle test. A side without a ghost (a single point) has no valid candidate.
+    #[inline(always)]
+    fn settle_candidate(
+        &mut self,
+        f: &StaticFilter,
+        side: Side,
+        ghost: Option<u32>,
+        (pl, pr, rel_r): ([f64; 2], [f64; 2], &Lifted),
+        (mut v, mut p): (u32, [f64; 2]),
+    ) -> Candidate {
+        let mut rel = Lifted::new(p, pl);
+        let mut cross = rel_r.cross(&rel);
+        let mut valid = false;
+        if let Some(g) = ghost {
+            valid = f.orientation(cross).unwrap_or_else(|| ccw(p, pl, pr));
+            if valid {
+                let mut flipped = false;
+                loop {
+                    let x = self.mesh.org(prev(self.mesh.twin[3 * g as usize]));
+                    if x == GHOST {
+                        break;
+                    }
+                    let px = self.p(x);
+                    let rel_x = Lifted::new(px, pl);
+                    let delete = f
+                        .in_circle(rel_r, &rel, &rel_x, cross)
+                        .unwrap_or_else(|| inside(pl, pr, p, px));
+                    if !delete {
+                        break;
+                    }
+                    v = match side {
+                        Side::Left => self.mesh.flip_left(g),
+                        Side::Right => self.mesh.flip_right(g),
+                    };
+                    (p, rel) = (px, rel_x);
+                    cross = rel_r.cross(&rel);
+                    flipped = true;
+                }
+                if flipped {
+                    valid = f.orientation(cross).unwrap_or_else(|| ccw(p, pl, pr));
+                }
+            }
+        }
+        Candidate {
+            valid,
+            v,
+            p,
+            rel,
+            cross,
+        }
     }
 
     #[inline]
@@ -405,68 +480,11 @@ impl DivideConquer<'_> {
         // as lifted differences, the validity orientations r × lc, r × rc reused as minors.
         loop {
             let rel_r = Lifted::new(pr, pl);
-            // The edge l–lc is deleted (flipped into the ghost ring) while the next neighbour
-            // x of l lies inside the circle through l, r, lc.
-            let mut rel_lc = Lifted::new(plc, pl);
-            let mut cross_l = rel_r.cross(&rel_lc);
-            let mut l_valid = false;
-            if let Some(a) = a {
-                l_valid = f.orientation(cross_l).unwrap_or_else(|| ccw(plc, pl, pr));
-                if l_valid {
-                    let mut flipped = false;
-                    loop {
-                        let x = self.mesh.org(prev(self.mesh.twin[3 * a as usize]));
-                        if x == GHOST {
-                            break;
-                        }
-                        let px = self.p(x);
-                        let rel_x = Lifted::new(px, pl);
-                        let delete = f
-                            .in_circle(&rel_r, &rel_lc, &rel_x, cross_l)
-                            .unwrap_or_else(|| inside(pl, pr, plc, px));
-                        if !delete {
-                            break;
-                        }
-                        lc = self.mesh.flip_left(a);
-                        (plc, rel_lc) = (px, rel_x);
-                        cross_l = rel_r.cross(&rel_lc);
-                        flipped = true;
-                    }
-                    if flipped {
-                        l_valid = f.orientation(cross_l).unwrap_or_else(|| ccw(plc, pl, pr));
-                    }
-                }
-            }
-            let mut rel_rc = Lifted::new(prc, pl);
-            let mut cross_r = rel_r.cross(&rel_rc);
-            let mut r_valid = false;
-            if let Some(b) = b {
-                r_valid = f.orientation(cross_r).unwrap_or_else(|| ccw(prc, pl, pr));
-                if r_valid {
-                    let mut flipped = false;
-                    loop {
-                        let z = self.mesh.org(prev(self.mesh.twin[3 * b as usize]));
-                        if z == GHOST {
-                            break;
-                        }
-                        let pz = self.p(z);
-                        let rel_z = Lifted::new(pz, pl);
-                        let delete = f
-                            .in_circle(&rel_r, &rel_rc, &rel_z, cross_r)
-                            .unwrap_or_else(|| inside(pl, pr, prc, pz));
-                        if !delete {
-                            break;
-                        }
-                        rc = self.mesh.flip_right(b);
-                        (prc, rel_rc) = (pz, rel_z);
-                        cross_r = rel_r.cross(&rel_rc);
-                        flipped = true;
-                    }
-                    if flipped {
-                        r_valid = f.orientation(cross_r).unwrap_or_else(|| ccw(prc, pl, pr));
-                    }
-                }
-            }
+            let left = self.settle_candidate(&f, Side::Left, a, (pl, pr, &rel_r), (lc, plc));
+            let right = self.settle_candidate(&f, Side::Right, b, (pl, pr, &rel_r), (rc, prc));
+            let (l_valid, rel_lc, cross_l) = (left.valid, left.rel, left.cross);
+            let (r_valid, rel_rc) = (right.valid, right.rel);
+            (lc, plc, rc, prc) = (left.v, left.p, right.v, right.p);
             if !l_valid && !r_valid {
                 break;
             }

@@ -273,19 +273,24 @@ impl Lifted {
 mod tests {
     use super::*;
 
+    /// A deterministic stream of uniform numbers in [0, 1) (a 64-bit LCG's high bits).
+    fn uniform_stream(seed: u64) -> impl FnMut() -> f64 {
+        let mut s = seed;
+        move || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
     fn ulp_step(x: f64, k: i64) -> f64 {
         f64::from_bits((x.to_bits() as i64 + k) as u64)
     }
 
     #[test]
     fn the_static_filter_agrees_with_the_exact_predicates() {
-        let mut s = 5u64;
-        let mut next = || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = uniform_stream(5);
         for round in 0..20_000 {
             // A box at some offset and scale; points inside it, some snapped to a coarse grid
             // (exact degeneracies), some nudged off a circle through three of them.
@@ -369,13 +374,7 @@ mod tests {
 
     #[test]
     fn agrees_with_the_exact_predicates_near_degeneracy() {
-        let mut s = 3u64;
-        let mut next = || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = uniform_stream(3);
         for _ in 0..20_000 {
             // Nearly collinear: c on the line a→b, nudged by a few ulps.
             let a = [next(), next()];

@@ -408,18 +408,30 @@ impl<'a> Voronoi<'a> {
 
     /// Is `[a, b]` an edge of the triangulation? Walks the triangles around `a`: O(degree).
     pub(crate) fn is_delaunay_edge(&self, a: u32, b: u32) -> bool {
+        self.delaunay_halfedge(a, b).is_some()
+    }
+
+    /// The half-edge from `a` to `b`, or from `b` to `a` when `a → b` is a hull edge seen
+    /// from outside; `None` when `[a, b]` is no edge of the triangulation. O(degree of `a`).
+    pub(crate) fn delaunay_halfedge(&self, a: u32, b: u32) -> Option<u32> {
         let start = self.out_halfedge[a as usize];
         if start == NO_TWIN || a == b {
-            return false;
+            return None;
         }
         let mut e = start;
         loop {
-            if self.tri.triangles()[e as usize / 3].contains(&b) {
-                return true;
+            if self.tri.halfedge_destination(e as usize) == b {
+                return Some(e);
+            }
+            // The incoming half-edge of this triangle ends at `a`; on the hull it is the
+            // only way to meet the last neighbour clockwise.
+            let incoming = prev_in_triangle(e as usize) as u32;
+            if self.tri.halfedge_origin(incoming as usize) == b {
+                return Some(incoming);
             }
             match self.rotate_counterclockwise(e) {
                 Some(next) if next != start => e = next,
-                _ => return false,
+                _ => return None,
             }
         }
     }

@@ -118,14 +118,15 @@ fn merged_face_position_depends_on_input_order() {
     assert_eq!(position_bits(&points), position_bits(&reversed));
 }
 
-/// Fixed issue, same root cause as [`merged_face_position_depends_on_input_order`], found by
-/// `reconstruct` (peeling on, 600 points of rotated grids; reduced to 17 points).
+/// Found by `reconstruct` (peeling on, 600 points of rotated grids; reduced to 17 points).
 ///
-/// With peeling, src/reconstruct/mod.rs `parity_inside` labels vertices by the parity of crust
-/// edges crossed on a breadth-first walk from the rays; where the crust is not closed the
-/// first path found decides, and that path follows the (index-dependent) boundary order of
-/// merged faces. Here the medial axis has 16 segments for the input and 13 for the same
-/// points reversed (the crust edges are the same).
+/// With peeling, `parity_inside` labelled vertices by the parity of crust edges crossed on a
+/// breadth-first walk from the rays; where the crust is not closed the first path found
+/// decided, and that path followed the (index-dependent) boundary order of merged faces.
+/// Here the medial axis had 16 segments for the input and 13 for the same points reversed
+/// (the crust edges are the same). Making the boundary order index-independent hid it; the
+/// cause was removed with issue 18 (see
+/// [`medial_axis_of_noisy_chains_does_not_depend_on_the_input_order`]).
 #[test]
 fn peeled_medial_axis_depends_on_input_order() {
     let points = [
@@ -201,5 +202,50 @@ fn tiny_points_sharing_a_zorder_key_give_order_independent_positions() {
     let rec = reconstruct_with(&points, &options).unwrap();
     let other = reconstruct_with(&shuffled, &options).unwrap();
     checks::check_permuted(&points, &perm, &rec, &other, true, true).unwrap();
+    check_everything(&points);
+}
+
+/// Issue 18, found by `reconstruct` (25 minutes, `-max_len=4096 -len_control=0`): 600 points,
+/// two closed curves at ~1e40 and ~1e58 scale, 157 duplicates, in two orders. The crust was
+/// the same; with peeling the medial axis had 435 segments in one order and 436 in the other.
+///
+/// Cause: with more than one pass, `parity_inside` decided which inner vertices lie in a hole
+/// by the parity of crust edges crossed on a breadth-first walk from the rays. The crust here
+/// is all open chains, which bound nothing, so the parity depended on the path the walk took,
+/// and the walk's order follows vertex and half-edge ids, which follow the input order. Now
+/// only hole loops (closed loops of later-pass edges, every edge with a Voronoi dual) are
+/// counted; their parity is the same along every path.
+#[test]
+fn medial_axis_of_noisy_chains_does_not_depend_on_the_input_order() {
+    let read = |name: &str| {
+        let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
+        wdm_crust::io::read_points_from_path(std::path::Path::new(&path))
+            .unwrap_or_else(|e| panic!("{path}: {e}"))
+    };
+    let points = read("fuzz-medial-axis-order-points.txt");
+    let permuted = read("fuzz-medial-axis-order-permuted.txt");
+    assert_eq!((points.len(), permuted.len()), (600, 600));
+    // permuted[i] = points[perm[i]]; among duplicates any index will do, since the checks map
+    // every index to the first occurrence of its coordinates.
+    let index_of: std::collections::HashMap<[u64; 2], usize> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (p.map(f64::to_bits), i))
+        .collect();
+    let perm: Vec<usize> = permuted
+        .iter()
+        .map(|p| index_of[&p.map(f64::to_bits)])
+        .collect();
+    for peeling in [false, true] {
+        let options = Options {
+            peeling,
+            ..Options::default()
+        };
+        let rec = reconstruct_with(&points, &options).unwrap();
+        let other = reconstruct_with(&permuted, &options).unwrap();
+        checks::check_permuted(&points, &perm, &rec, &other, true, true)
+            .unwrap_or_else(|e| panic!("peeling {peeling}: {e}"));
+        assert_eq!(checks::axis_segments(&rec), checks::axis_segments(&other));
+    }
     check_everything(&points);
 }

@@ -1095,6 +1095,16 @@ pub fn check_permuted(
         permuted.passes(),
         rec.passes()
     );
+    ensure!(
+        canonical_curves(permuted, back) == canonical_curves(rec, |i| i),
+        "permuted input: the curves differ (original indices)"
+    );
+    let mut untouched: Vec<u32> = permuted.untouched_points().into_iter().map(back).collect();
+    untouched.sort_unstable();
+    ensure!(
+        untouched == rec.untouched_points(),
+        "permuted input: the unassigned points differ (original indices)"
+    );
     let mine = vertices_by_sites(rec, |s| s);
     let theirs = vertices_by_sites(permuted, back);
     ensure!(
@@ -1139,6 +1149,34 @@ pub fn check_permuted(
         );
     }
     Ok(())
+}
+
+/// The curves of `rec` with indices mapped by `name`, in a form that does not depend on where
+/// a curve starts, which way it runs or where it stands in the list: each loop rotated to its
+/// smallest point and run towards its smaller neighbour, each chain run from its smaller end
+/// (by the second point when both ends are the same junction), the list sorted.
+pub fn canonical_curves(rec: &Reconstruction, name: impl Fn(u32) -> u32) -> Vec<(bool, Vec<u32>)> {
+    let mut out: Vec<(bool, Vec<u32>)> = rec
+        .curves()
+        .iter()
+        .map(|curve| {
+            let mut c: Vec<u32> = curve.points.iter().map(|&p| name(p)).collect();
+            if curve.closed {
+                if let Some(min_at) = (0..c.len()).min_by_key(|&i| c[i]) {
+                    c.rotate_left(min_at);
+                }
+                if c.len() > 2 && c[1] > c[c.len() - 1] {
+                    c[1..].reverse();
+                }
+            } else {
+                let reversed: Vec<u32> = c.iter().rev().copied().collect();
+                c = c.min(reversed);
+            }
+            (curve.closed, c)
+        })
+        .collect();
+    out.sort_unstable();
+    out
 }
 
 /// Applies a permutation: `out[i] = points[perm[i]]`.

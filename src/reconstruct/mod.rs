@@ -268,24 +268,38 @@ pub fn reconstruct_observed(
         } else {
             crust_edges(&vor, &flow.labels)
         };
+        let first_pass_len = edges.len();
         let peeling = if options.peeling {
             peel(&vor, &mut edges, options)
         } else {
             Peeling::done(0)
         };
-        let passes = 1 + peeling.extra_passes;
+        let holes_possible = peeling.extra_passes > 0;
+        let mut first_pass = Vec::new();
+        if holes_possible {
+            first_pass.extend_from_slice(&edges[..first_pass_len]);
+            first_pass.sort_unstable();
+        }
         edges.sort_unstable();
         edges.dedup();
-        let axis = if passes > 1 {
-            // Holes were found: a vertex is inside the shape when it is inner in the first
-            // pass and an odd number of curves separate it from infinity.
-            let inside = parity_inside(&vor, &edges);
+        let curves = curves::assemble(points.len(), &edges, triangulation.points());
+        let holes = if holes_possible {
+            hole_edges(&vor, &curves, &first_pass)
+        } else {
+            Vec::new()
+        };
+        let axis = if holes.is_empty() {
+            medial_axis(&vor, &flow.labels)
+        } else {
+            // A vertex is inside the shape when it is inner in the first pass and not
+            // inside a hole: an even number of hole loops separate it from infinity.
+            let in_hole = parity_inside(&vor, &holes);
             let combined: Vec<Label> = flow
                 .labels
                 .iter()
-                .zip(&inside)
-                .map(|(&l, &i)| {
-                    if l == Label::Inner && i {
+                .zip(&in_hole)
+                .map(|(&l, &h)| {
+                    if l == Label::Inner && !h {
                         Label::Inner
                     } else {
                         Label::Outer
@@ -293,10 +307,7 @@ pub fn reconstruct_observed(
                 })
                 .collect();
             medial_axis(&vor, &combined)
-        } else {
-            medial_axis(&vor, &flow.labels)
         };
-        let curves = curves::assemble(points.len(), &edges, triangulation.points());
         (flow.labels, edges, axis, peeling, curves)
     };
     let old = &renaming.old_of_new;
@@ -475,9 +486,40 @@ impl Peeling {
     }
 }
 
-/// Inside/outside of every Voronoi vertex by the parity of crust edges crossed on the way
-/// from infinity (breadth first; the first path found decides where the crust is not a set
-/// of closed curves).
+/// The edges of the holes peeling found: closed loops made only of later-pass edges, each
+/// with a dual Voronoi edge. The first pass never reaches inside a hole (DESIGN: water from
+/// infinity), so its labels already say what lies inside the outer curves; the hole loops
+/// say what to take away.
+///
+/// Only such loops are counted because only they make the parity below well defined: they
+/// are disjoint cycles of degree-2 points, so every closed walk in the Voronoi graph crosses
+/// them an even number of times, and the parity of a vertex does not depend on the path by
+/// which it is reached. Open chains and junctions (noise) have no inside; counting them made
+/// the result depend on the search order, hence on the input order (a fuzz finding). A
+/// loop through an edge without a dual (inside a merged cocircular face) cannot separate
+/// that face's vertex and is not counted either.
+fn hole_edges(vor: &Voronoi<'_>, curves: &[Curve], first_pass: &[[u32; 2]]) -> Vec<[u32; 2]> {
+    let mut holes = Vec::new();
+    for curve in curves.iter().filter(|c| c.closed) {
+        let loop_edges = curve
+            .points
+            .iter()
+            .zip(curve.points.iter().cycle().skip(1))
+            .map(|(&a, &b)| [a.min(b), a.max(b)]);
+        let is_hole = loop_edges.clone().all(|[a, b]| {
+            first_pass.binary_search(&[a, b]).is_err()
+                && vor.delaunay_halfedge(a, b).is_some_and(|e| vor.has_dual(e))
+        });
+        if is_hole {
+            holes.extend(loop_edges);
+        }
+    }
+    holes
+}
+
+/// Every Voronoi vertex: is it separated from infinity by an odd number of the given edges
+/// (breadth first from the rays)? Well defined only for a set of closed loops, see
+/// [`hole_edges`].
 fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
     let tri = vor.triangulation();
     // Crust neighbours of every point (two for most): a lookup touches one short row

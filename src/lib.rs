@@ -15,6 +15,7 @@
 
 pub mod delaunay;
 pub mod error;
+#[cfg(feature = "cli")]
 pub mod io;
 pub mod predicates;
 pub mod reconstruct;

@@ -1,7 +1,8 @@
 //! Assembly of reconstructed edges into curves: closed loops and open chains.
 
 /// One reconstructed curve.
-#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Curve {
     /// True for a closed loop (the last point connects back to the first).
     pub closed: bool,

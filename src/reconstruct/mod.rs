@@ -97,7 +97,8 @@ impl EdgeClass {
 }
 
 /// The medial axis approximation: segments between inner Voronoi vertices.
-#[derive(Debug, Clone, Default, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MedialAxis {
     /// Circumcenters (rounded to f64) of the inner vertices that have a medial-axis edge.
     pub vertices: Vec<[f64; 2]>,

@@ -15,8 +15,9 @@ use crate::predicates::exact::{
 use crate::voronoi::{EdgeEnd, Voronoi};
 
 /// Inside or outside the curve, for a Voronoi vertex.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
 pub enum Label {
     /// Inside the reconstructed curve: a medial-axis vertex.
     Inner,

@@ -1,0 +1,309 @@
+//! The invariant checker: is a [`Triangulation`] a valid Delaunay triangulation of its
+//! points? Used by unit tests, property tests and fuzz targets; exact throughout.
+
+use std::fmt;
+
+use super::triangulation::{next_in_triangle, Triangulation, NO_TWIN};
+use crate::predicates::{incircle, orient2d, CirclePosition, Orientation};
+
+/// The first invariant a [`Triangulation`] was found to break.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ValidationError {
+    /// A triangle is not strictly counterclockwise.
+    NotCounterClockwise {
+        /// Triangle index.
+        triangle: usize,
+    },
+    /// A triangle uses an index out of range or a duplicate point.
+    BadVertex {
+        /// Triangle index.
+        triangle: usize,
+    },
+    /// The half-edge array is not an involution with reversed endpoints.
+    TwinMismatch {
+        /// Half-edge index.
+        halfedge: usize,
+    },
+    /// The boundary half-edges do not form the hull cycle.
+    HullMismatch(String),
+    /// The hull turns clockwise somewhere.
+    HullNotConvex {
+        /// Position in the hull listing.
+        position: usize,
+    },
+    /// The triangle count differs from 2n − 2 − h.
+    WrongTriangleCount {
+        /// Triangles present.
+        found: usize,
+        /// 2n − 2 − h.
+        expected: usize,
+    },
+    /// An interior edge has the opposite point strictly inside a triangle's circumcircle.
+    NotLocallyDelaunay {
+        /// Half-edge index.
+        halfedge: usize,
+    },
+    /// A point is neither in the triangulation nor reported as a duplicate, or a duplicate
+    /// pair is wrong.
+    PointUnaccounted {
+        /// Point index.
+        point: usize,
+    },
+}
+
+impl fmt::Display for ValidationError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "invalid triangulation: {self:?}")
+    }
+}
+
+impl std::error::Error for ValidationError {}
+
+impl Triangulation {
+    /// Checks every invariant exactly: counterclockwise triangles, symmetric half-edges, a
+    /// closed convex hull made of exactly the boundary half-edges, 2n − 2 − h triangles,
+    /// every interior edge locally Delaunay, every point present or reported as a duplicate.
+    ///
+    /// Together these make it a Delaunay triangulation of the distinct points: consistently
+    /// oriented triangles glued along twins whose boundary is the convex hull cover it once,
+    /// and local Delaunayhood everywhere implies the global empty-circle property.
+    pub fn validate(&self) -> Result<(), ValidationError> {
+        let n = self.points.len();
+        let duplicate_of = self.check_duplicates()?;
+        let distinct = n - self.duplicates.len();
+        if self.triangles.is_empty() {
+            return self.check_degenerate(&duplicate_of, distinct);
+        }
+        let mut used = vec![false; n];
+        for (t, tri) in self.triangles.iter().enumerate() {
+            for &v in tri {
+                let v = v as usize;
+                if v >= n || duplicate_of[v].is_some() {
+                    return Err(ValidationError::BadVertex { triangle: t });
+                }
+                used[v] = true;
+            }
+            let [a, b, c] = self.triangle_points(t);
+            if orient2d(a, b, c) != Orientation::CounterClockwise {
+                return Err(ValidationError::NotCounterClockwise { triangle: t });
+            }
+        }
+        if let Some(point) = (0..n).find(|&i| !used[i] && duplicate_of[i].is_none()) {
+            return Err(ValidationError::PointUnaccounted { point });
+        }
+        self.check_twins()?;
+        self.check_hull()?;
+        let expected = 2 * distinct - 2 - self.hull.len();
+        if self.triangles.len() != expected {
+            return Err(ValidationError::WrongTriangleCount {
+                found: self.triangles.len(),
+                expected,
+            });
+        }
+        self.check_locally_delaunay()
+    }
+
+    /// Every duplicate pair names equal coordinates and an earlier kept point.
+    fn check_duplicates(&self) -> Result<Vec<Option<u32>>, ValidationError> {
+        let n = self.points.len();
+        let mut duplicate_of = vec![None; n];
+        for &[dup, kept] in &self.duplicates {
+            let (d, k) = (dup as usize, kept as usize);
+            let ok = d < n
+                && k < d
+                && self.points[d][0] == self.points[k][0]
+                && self.points[d][1] == self.points[k][1]
+                && duplicate_of[d].is_none();
+            if !ok {
+                return Err(ValidationError::PointUnaccounted { point: d.min(n) });
+            }
+            duplicate_of[d] = Some(kept);
+        }
+        if let Some(&[_, kept]) = self
+            .duplicates
+            .iter()
+            .find(|&&[_, kept]| duplicate_of[kept as usize].is_some())
+        {
+            return Err(ValidationError::PointUnaccounted {
+                point: kept as usize,
+            });
+        }
+        Ok(duplicate_of)
+    }
+
+    /// No triangles: all distinct points must be collinear and listed along the line.
+    fn check_degenerate(
+        &self,
+        duplicate_of: &[Option<u32>],
+        distinct: usize,
+    ) -> Result<(), ValidationError> {
+        if self.hull.len() != distinct
+            || self
+                .hull
+                .iter()
+                .any(|&v| v as usize >= self.points.len() || duplicate_of[v as usize].is_some())
+        {
+            return Err(ValidationError::HullMismatch(
+                "degenerate hull must list every distinct point once".into(),
+            ));
+        }
+        let p = |i: usize| self.points[self.hull[i] as usize];
+        for i in 2..self.hull.len() {
+            if orient2d(p(0), p(1), p(i)) != Orientation::Collinear {
+                return Err(ValidationError::HullMismatch(format!(
+                    "no triangles, but hull point {i} is off the line"
+                )));
+            }
+        }
+        for i in 1..self.hull.len() {
+            let (a, b) = (p(i - 1), p(i));
+            if (a[0], a[1]) >= (b[0], b[1]) {
+                return Err(ValidationError::HullMismatch(format!(
+                    "collinear chain not in order at {i}"
+                )));
+            }
+        }
+        let mut seen = vec![false; self.points.len()];
+        for &v in &self.hull {
+            if std::mem::replace(&mut seen[v as usize], true) {
+                return Err(ValidationError::PointUnaccounted { point: v as usize });
+            }
+        }
+        Ok(())
+    }
+
+    fn check_twins(&self) -> Result<(), ValidationError> {
+        if self.halfedges.len() != 3 * self.triangles.len() {
+            return Err(ValidationError::TwinMismatch {
+                halfedge: self.halfedges.len(),
+            });
+        }
+        for (e, &twin) in self.halfedges.iter().enumerate() {
+            if twin == NO_TWIN {
+                continue;
+            }
+            let t = twin as usize;
+            let ok = t < self.halfedges.len()
+                && t != e
+                && self.halfedges[t] as usize == e
+                && self.halfedge_origin(t) == self.halfedge_destination(e)
+                && self.halfedge_destination(t) == self.halfedge_origin(e);
+            if !ok {
+                return Err(ValidationError::TwinMismatch { halfedge: e });
+            }
+        }
+        Ok(())
+    }
+
+    /// The boundary half-edges have the interior on their left, so they run counterclockwise
+    /// around the hull: `hull[i] → hull[i+1]` must be one of them for every i, and there must
+    /// be no others. The hull must be convex.
+    fn check_hull(&self) -> Result<(), ValidationError> {
+        let h = self.hull.len();
+        let mut boundary: Vec<(u32, u32)> = (0..self.halfedges.len())
+            .filter(|&e| self.halfedges[e] == NO_TWIN)
+            .map(|e| (self.halfedge_origin(e), self.halfedge_destination(e)))
+            .collect();
+        boundary.sort_unstable();
+        let mut expected: Vec<(u32, u32)> = (0..h)
+            .map(|i| (self.hull[i], self.hull[(i + 1) % h]))
+            .collect();
+        expected.sort_unstable();
+        if boundary != expected {
+            return Err(ValidationError::HullMismatch(format!(
+                "{} boundary half-edges, hull has {h} edges (or they differ)",
+                boundary.len()
+            )));
+        }
+        let p = |i: usize| self.points[self.hull[i % h] as usize];
+        let mut strict_turns = 0;
+        for i in 0..h {
+            match orient2d(p(i), p(i + 1), p(i + 2)) {
+                Orientation::Clockwise => {
+                    return Err(ValidationError::HullNotConvex { position: i + 1 })
+                }
+                Orientation::CounterClockwise => strict_turns += 1,
+                Orientation::Collinear => {}
+            }
+        }
+        if strict_turns < 3 {
+            return Err(ValidationError::HullNotConvex { position: 0 });
+        }
+        Ok(())
+    }
+
+    fn check_locally_delaunay(&self) -> Result<(), ValidationError> {
+        for (e, &twin) in self.halfedges.iter().enumerate() {
+            if twin == NO_TWIN || (twin as usize) < e {
+                continue;
+            }
+            let t = twin as usize;
+            let opposite = self.points[self.halfedge_origin(
+                next_in_triangle(next_in_triangle(t)),
+            ) as usize];
+            let [a, b, c] = self.triangle_points(e / 3);
+            if incircle(a, b, c, opposite) == CirclePosition::Inside {
+                return Err(ValidationError::NotLocallyDelaunay { halfedge: e });
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::triangulate;
+
+    fn square_with_centre() -> Triangulation {
+        triangulate(&[[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0], [2.0, 1.0]]).unwrap()
+    }
+
+    #[test]
+    fn the_checker_accepts_a_real_triangulation() {
+        square_with_centre().validate().unwrap();
+    }
+
+    #[test]
+    fn the_checker_catches_a_flipped_triangle() {
+        let mut tri = square_with_centre();
+        tri.triangles[0].swap(1, 2);
+        assert!(tri.validate().is_err());
+    }
+
+    #[test]
+    fn the_checker_catches_a_broken_twin() {
+        let mut tri = square_with_centre();
+        let e = tri.halfedges.iter().position(|&t| t != NO_TWIN).unwrap();
+        tri.halfedges[e] = NO_TWIN;
+        assert!(tri.validate().is_err());
+    }
+
+    #[test]
+    fn the_checker_catches_a_non_delaunay_edge() {
+        // Two triangles over a convex quad, split along the wrong diagonal.
+        let mut tri = triangulate(&[[0.0, 0.0], [3.0, -1.0], [6.0, 0.0], [3.0, 1.0]]).unwrap();
+        tri.validate().unwrap();
+        // Rebuild with the other diagonal: (0, 2) is the long one and fails incircle.
+        tri.triangles = vec![[0, 1, 2], [0, 2, 3]];
+        tri.halfedges = vec![NO_TWIN, NO_TWIN, 3, 2, NO_TWIN, NO_TWIN];
+        assert_eq!(
+            tri.validate(),
+            Err(ValidationError::NotLocallyDelaunay { halfedge: 2 })
+        );
+    }
+
+    #[test]
+    fn the_checker_catches_a_missing_point_and_a_wrong_hull() {
+        let mut tri = square_with_centre();
+        tri.duplicates.clear();
+        tri.points.push([9.0, 9.0]);
+        assert_eq!(
+            tri.validate(),
+            Err(ValidationError::PointUnaccounted { point: 5 })
+        );
+        let mut tri = square_with_centre();
+        tri.hull.reverse();
+        assert!(matches!(tri.validate(), Err(ValidationError::HullMismatch(_))));
+    }
+}

@@ -23,7 +23,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use wdm_crust::reconstruct::{reconstruct_with, Algorithm, LabelRule, Options};
-use wdm_crust::sample::{
+use wdm_crust_testkit::{
     ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Sample, SampleConfig, Similarity,
     Star, Superellipse,
 };
@@ -783,7 +783,7 @@ fn main() {
             let curves = std::fs::read_to_string(&path)
                 .map_err(|e| e.to_string())
                 .and_then(|svg| {
-                    wdm_crust::sample::svg_dense_curves(&svg, 8000).map_err(|e| e.to_string())
+                    wdm_crust_testkit::svg_dense_curves(&svg, 8000).map_err(|e| e.to_string())
                 });
             match curves {
                 Ok(curves) if !curves.is_empty() => sets.push(CurveSet::new(curves)),

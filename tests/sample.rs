@@ -1,9 +1,9 @@
-//! Tests of the ground-truth generator `wdm_crust::sample`: PRNG, lfs against known answers
+//! Tests of the ground-truth generator `wdm_crust_testkit`: PRNG, lfs against known answers
 //! and brute force, the ε-sample property by brute force, determinism, shuffling, noise, SVG.
 
 use std::collections::HashSet;
 use std::time::Instant;
-use wdm_crust::sample::*;
+use wdm_crust_testkit::*;
 
 /// Brute force: the largest `dist(x, nearest sample) / max(lfs(x), floor)` over all dense x.
 fn brute_coverage(set: &CurveSet, samples: &[[f64; 2]], floor: f64) -> f64 {

@@ -547,7 +547,7 @@ fn svg_files_parse_and_sample() {
         .filter(|p| p.extension().is_some_and(|e| e == "svg"))
         .collect();
     files.sort();
-    assert_eq!(files.len(), 19);
+    assert_eq!(files.len(), 19, "SVG drawings in {}", dir.display());
     for path in &files {
         let text = std::fs::read_to_string(path).unwrap();
         let subs = parse_svg(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));

@@ -21,8 +21,8 @@ use wdm_crust::predicates::exact::{
 };
 use wdm_crust::predicates::Orientation;
 use wdm_crust::reconstruct::wdm::label_vertices;
-use wdm_crust::sample::Rng;
 use wdm_crust::{Triangulation, Voronoi};
+use wdm_crust_testkit::Rng;
 
 type P = [f64; 2];
 type T = [P; 3];

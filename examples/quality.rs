@@ -1,7 +1,7 @@
 //! Reconstruction quality of WDM_CRUST against the crust and the NN-crust.
 //!
 //! ```text
-//! cargo run --release --example quality
+//! cargo run --release --example quality [-- DATA_DIR]
 //! ```
 //!
 //! For point sets with known ground-truth edges it reports, per algorithm, the recall and
@@ -13,8 +13,12 @@
 //!   1.2 (beyond it), randomly moved, scaled and shuffled;
 //! * polygons with sharp corners, several disjoint curves, nested curves, 10–40 % outliers,
 //!   Gaussian noise proportional to the local feature size;
-//! * ε-samples of the SVG drawings of `sampling2d`, and the real point sets in
-//!   `/work/shared/data` whose file order gives the ground truth (see its README).
+//! * ε-samples of the SVG drawings of `sampling2d`, and the real point sets whose file order
+//!   gives the ground truth.
+//!
+//! The real data (GPL-3.0 point sets and SVG drawings, see `tests/data/README.md`) is read from
+//! `DATA_DIR`, else from the environment variable `WDM_CRUST_DATA`, else from the repository's
+//! `tests/data`. A missing file stops the run with an error; nothing is skipped.
 //!
 //! Every random choice comes from fixed seeds: the output is deterministic.
 
@@ -23,7 +27,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use wdm_crust::reconstruct::{reconstruct_with, Algorithm, LabelRule, Options};
-use wdm_crust::sample::{
+use wdm_crust_testkit::{
     ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Sample, SampleConfig, Similarity,
     Star, Superellipse,
 };
@@ -77,7 +81,10 @@ fn wdm_variants() -> Vec<Method> {
         },
     ]
 }
-const DATA: &str = "/work/shared/data";
+/// Default directory of the real data: the copies inside the repository.
+const DEFAULT_DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data");
+/// The real-data directory chosen in `main`.
+static DATA: std::sync::OnceLock<PathBuf> = std::sync::OnceLock::new();
 /// Dense points per analytic curve.
 const DENSE: usize = 4000;
 
@@ -480,14 +487,18 @@ fn polygons() -> Vec<(&'static str, Vec<[f64; 2]>)> {
 // ---------------------------------------------------------------------------------------
 // Real data.
 
-fn read_points(path: &Path) -> Option<Vec<[f64; 2]>> {
-    match wdm_crust::io::read_points_from_path(path) {
-        Ok(points) => Some(points),
-        Err(e) => {
-            eprintln!("skipping {}: {e}", path.display());
-            None
-        }
-    }
+/// Stops the run with a message: the real data is required, never skipped.
+fn data_error(path: &Path, error: impl std::fmt::Display) -> ! {
+    eprintln!(
+        "error: real data {}: {error}\n(pass the data directory as the first argument or in \
+         WDM_CRUST_DATA; default {DEFAULT_DATA})",
+        path.display()
+    );
+    std::process::exit(2)
+}
+
+fn read_points(path: &Path) -> Vec<[f64; 2]> {
+    wdm_crust::io::read_points_from_path(path).unwrap_or_else(|e| data_error(path, e))
 }
 
 /// Ground truth from the file order: components split where the step to the next point
@@ -537,7 +548,7 @@ fn ordered_case(points: Vec<[f64; 2]>, jump: Option<f64>) -> Case {
 }
 
 fn data(path: &str) -> PathBuf {
-    Path::new(DATA).join(path)
+    DATA.get().expect("set in main").join(path)
 }
 
 /// Structure of a reconstruction without ground truth.
@@ -571,6 +582,14 @@ fn structure_line(name: &str, points: &[[f64; 2]]) -> String {
 
 fn main() {
     let started = Instant::now();
+    let data_dir = std::env::args_os()
+        .nth(1)
+        .or_else(|| std::env::var_os("WDM_CRUST_DATA"))
+        .map_or_else(|| PathBuf::from(DEFAULT_DATA), PathBuf::from);
+    if !data_dir.is_dir() {
+        data_error(&data_dir, "not a directory");
+    }
+    DATA.set(data_dir).expect("set once");
     println!("# Reconstruction quality: WDM_CRUST vs crust vs NN-crust\n");
     println!(
         "`cargo run --release --example quality`. R = recall, P = precision (edges, % pooled \
@@ -780,16 +799,13 @@ fn main() {
         let mut sets = Vec::new();
         for file in *files {
             let path = data(&format!("sampling2d/data/{file}.svg"));
-            let curves = std::fs::read_to_string(&path)
-                .map_err(|e| e.to_string())
-                .and_then(|svg| {
-                    wdm_crust::sample::svg_dense_curves(&svg, 8000).map_err(|e| e.to_string())
-                });
-            match curves {
-                Ok(curves) if !curves.is_empty() => sets.push(CurveSet::new(curves)),
-                Ok(_) => eprintln!("{}: no curves", path.display()),
-                Err(e) => eprintln!("skipping {}: {e}", path.display()),
+            let svg = std::fs::read_to_string(&path).unwrap_or_else(|e| data_error(&path, e));
+            let curves = wdm_crust_testkit::svg_dense_curves(&svg, 8000)
+                .unwrap_or_else(|e| data_error(&path, e));
+            if curves.is_empty() {
+                data_error(&path, "no curves");
             }
+            sets.push(CurveSet::new(curves));
         }
         let cases = sampled_cases(&sets, 0.3, 0.005, 2, 600 + g as u64, &keep);
         let label = format!("{name} ({} files)", sets.len());
@@ -823,23 +839,22 @@ fn main() {
     ];
     let (mut real_closed, mut real_components) = (Vec::new(), Vec::new());
     for (file, jump) in ordered {
-        if let Some(points) = read_points(&data(file)) {
-            let case = ordered_case(points, jump);
-            if jump.is_none() {
-                real_closed.push(case.clone());
-            } else {
-                real_components.push(case.clone());
-            }
-            let name = file.rsplit('/').next().unwrap_or(file);
-            let label = match jump {
-                None => name.to_string(),
-                Some(j) => format!("{name} (components, break > {j}× median step)"),
-            };
-            rows.push(run_row(&label, &[case], &methods, false));
+        let points = read_points(&data(file));
+        let case = ordered_case(points, jump);
+        if jump.is_none() {
+            real_closed.push(case.clone());
+        } else {
+            real_components.push(case.clone());
         }
+        let name = file.rsplit('/').next().unwrap_or(file);
+        let label = match jump {
+            None => name.to_string(),
+            Some(j) => format!("{name} (components, break > {j}× median step)"),
+        };
+        rows.push(run_row(&label, &[case], &methods, false));
     }
     print_table(
-        "Real point sets with ground-truth order (/work/shared/data; closed curves in file \
+        "Real point sets with ground-truth order (tests/data; closed curves in file \
          order, multi-component files split at jumps; ventilator.p2d skipped: its order \
          interleaves components)",
         &rows,
@@ -886,10 +901,9 @@ fn main() {
         "stretchdenoise/data/family.p2d",
         "hnn-crust-sgp16/ventilator.p2d",
     ] {
-        if let Some(points) = read_points(&data(file)) {
-            let name = file.rsplit('/').next().unwrap_or(file);
-            println!("{}", structure_line(name, &points));
-        }
+        let points = read_points(&data(file));
+        let name = file.rsplit('/').next().unwrap_or(file);
+        println!("{}", structure_line(name, &points));
     }
 
     // Scale.

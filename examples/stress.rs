@@ -26,7 +26,7 @@
 use std::time::Instant;
 
 use wdm_crust::reconstruct::{reconstruct_with, Options};
-use wdm_crust::sample::Rng;
+use wdm_crust_testkit::Rng;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();

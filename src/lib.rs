@@ -19,7 +19,6 @@ pub mod error;
 pub mod io;
 pub mod predicates;
 pub mod reconstruct;
-pub mod sample;
 pub mod voronoi;
 
 pub use delaunay::{triangulate, Triangulation};

@@ -614,9 +614,9 @@ fn order_face_cycle(tri: &Triangulation, row: &mut [u32]) {
 
 #[cfg(test)]
 mod tests {
-    use crate::sample::Rng;
     use crate::triangulate;
     use std::collections::BTreeSet;
+    use wdm_crust_testkit::Rng;
 
     #[test]
     fn is_delaunay_edge_agrees_with_the_edge_list() {

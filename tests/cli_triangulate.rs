@@ -472,24 +472,20 @@ fn closed_standard_output_is_a_quiet_success() {
 
 // ----- real data -----
 
-fn data_dir() -> Option<PathBuf> {
-    let dir = PathBuf::from(
-        std::env::var_os("WDM_CRUST_DATA").unwrap_or_else(|| "/work/shared/data".into()),
+/// `tests/data/<rel>`: the real point sets, inside the repository (GPL-3.0 data, see
+/// `tests/data/README.md`). A missing file fails the test.
+fn data_path(rel: &str) -> PathBuf {
+    let path = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data")).join(rel);
+    assert!(
+        path.is_file(),
+        "test data {} is missing (the real point sets live in tests/data, see its README.md)",
+        path.display()
     );
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "note: {} is absent, skipping the real-data round trip",
-            dir.display()
-        );
-        None
-    }
+    path
 }
 
 #[test]
 fn real_data_round_trip() {
-    let Some(data) = data_dir() else { return };
     for (name, count) in [
         ("hnn-crust-sgp16/crocodile-conf.gtn", 129),
         ("fitconnect/data/bot.txt", 1000),
@@ -498,7 +494,7 @@ fn real_data_round_trip() {
         ("stretchdenoise/data/vase_xyz.txt", 329),
         ("stretchdenoise/data/family.p2d", 9990),
     ] {
-        let path = data.join(name);
+        let path = data_path(name);
         let points = wdm_crust::io::read_points_from_path(&path).unwrap();
         assert_eq!(points.len(), count, "{name}");
         let path_arg = path.to_str().unwrap();

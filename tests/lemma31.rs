@@ -1,12 +1,12 @@
 //! Lemma 3.1 of the paper as a property test: for an ε-sample (ε < 0.4) of a smooth closed
 //! BNC curve, WDM_CRUST contains the edge between every pair of adjacent samples.
 //!
-//! The samples and their local feature size come from `wdm_crust::sample`, which computes
+//! The samples and their local feature size come from `wdm_crust_testkit`, which computes
 //! lfs from tangent medial balls of a dense polyline, independently of the crate's
 //! Delaunay/Voronoi code. Extra edges are reported: the goal is the exact polygon.
 
 use proptest::prelude::*;
-use wdm_crust::sample::{
+use wdm_crust_testkit::{
     ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Star, Superellipse,
 };
 

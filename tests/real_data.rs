@@ -1,21 +1,28 @@
-//! Real point sets from published curve-reconstruction work (`../shared/data`, GPL-3.0 data):
-//! recall and precision against the known point order, guarded from below.
+//! Real point sets from published curve-reconstruction work (GPL-3.0 data, copied into
+//! `tests/data`; origins in `tests/data/README.md`): recall and precision against the known
+//! point order, guarded from below. A missing data file fails the test; nothing is skipped.
 
 use std::collections::BTreeSet;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-fn data_dir() -> Option<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/data");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("note: {} is absent; real-data tests skipped", dir.display());
-        None
-    }
+/// The real point sets, inside the repository.
+const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data");
+
+/// `tests/data/<rel>`, which must exist: a missing file fails the test.
+fn data_path(rel: &str) -> PathBuf {
+    let path = Path::new(DATA).join(rel);
+    assert!(
+        path.exists(),
+        "test data {} is missing (the real point sets live in tests/data, see its README.md)",
+        path.display()
+    );
+    path
 }
 
-fn read(dir: &std::path::Path, file: &str) -> Vec<[f64; 2]> {
-    wdm_crust::io::read_points_from_path(&dir.join(file)).expect("readable data file")
+fn read(file: &str) -> Vec<[f64; 2]> {
+    let path = data_path(file);
+    wdm_crust::io::read_points_from_path(&path)
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
 /// Recall and precision of the reconstruction against the closed polygon in file order.
@@ -32,7 +39,6 @@ fn recall_precision(points: &[[f64; 2]]) -> (f64, f64) {
 
 #[test]
 fn ordered_sets_reach_their_recall_and_precision() {
-    let Some(dir) = data_dir() else { return };
     // (file, recall at least, precision at least): measured values rounded down by ~0.02.
     // The fitconnect sets carry 2 % noise, Circle0 is stair-stepped, mushroom is very sparse
     // with thin spikes: none of them is an ε-sample, so the polygon is not expected exactly.
@@ -47,7 +53,7 @@ fn ordered_sets_reach_their_recall_and_precision() {
         ("stretchdenoise/data/thing.txt", 0.96, 0.97),
     ];
     for (file, min_recall, min_precision) in cases {
-        let (recall, precision) = recall_precision(&read(&dir, file));
+        let (recall, precision) = recall_precision(&read(file));
         eprintln!("{file}: recall {recall:.3}, precision {precision:.3}");
         assert!(recall >= min_recall, "{file}: recall {recall:.3}");
         assert!(
@@ -85,14 +91,13 @@ fn component_edges(points: &[[f64; 2]]) -> BTreeSet<[u32; 2]> {
 
 #[test]
 fn multi_curve_sets_keep_their_recall() {
-    let Some(dir) = data_dir() else { return };
     // Sparse multi-curve sets from HNN-Crust (crust is known to fail on the crocodile);
     // measured values rounded down by ~0.02.
     for (file, min_recall, min_precision) in [
         ("hnn-crust-sgp16/crocodile-conf.p2d", 0.43, 0.46),
         ("hnn-crust-sgp16/ventilator.p2d", 0.67, 0.68),
     ] {
-        let points = read(&dir, file);
+        let points = read(file);
         let truth = component_edges(&points);
         let rec = wdm_crust::reconstruct(&points).unwrap();
         let ours: BTreeSet<[u32; 2]> = rec.edges().iter().copied().collect();
@@ -111,10 +116,9 @@ fn multi_curve_sets_keep_their_recall() {
 
 #[test]
 fn every_data_file_triangulates_and_reconstructs() {
-    let Some(dir) = data_dir() else { return };
     let mut files = Vec::new();
     for sub in ["hnn-crust-sgp16", "fitconnect/data", "stretchdenoise/data"] {
-        for entry in std::fs::read_dir(dir.join(sub)).unwrap() {
+        for entry in std::fs::read_dir(data_path(sub)).unwrap() {
             let path = entry.unwrap().path();
             if matches!(
                 path.extension().and_then(|e| e.to_str()),
@@ -124,7 +128,8 @@ fn every_data_file_triangulates_and_reconstructs() {
             }
         }
     }
-    assert!(files.len() >= 20);
+    // Every real point set in tests/data: a lost file fails here.
+    assert_eq!(files.len(), 29, "real point sets in {DATA}");
     for path in files {
         let points = wdm_crust::io::read_points_from_path(&path).unwrap();
         let tri = wdm_crust::triangulate(&points).unwrap();

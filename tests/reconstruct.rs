@@ -3,10 +3,10 @@
 
 use std::collections::BTreeSet;
 use wdm_crust::reconstruct::{Label, LabelRule, Options};
-use wdm_crust::sample::{
+use wdm_crust::{reconstruct, reconstruct_with};
+use wdm_crust_testkit::{
     ClosedCurve, CurveSet, Ellipse, Peanut, Rng, Sample, SampleConfig, Similarity, Star,
 };
-use wdm_crust::{reconstruct, reconstruct_with};
 
 type EdgeSet = BTreeSet<(usize, usize)>;
 

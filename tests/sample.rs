@@ -1,9 +1,9 @@
-//! Tests of the ground-truth generator `wdm_crust::sample`: PRNG, lfs against known answers
+//! Tests of the ground-truth generator `wdm_crust_testkit`: PRNG, lfs against known answers
 //! and brute force, the ε-sample property by brute force, determinism, shuffling, noise, SVG.
 
 use std::collections::HashSet;
 use std::time::Instant;
-use wdm_crust::sample::*;
+use wdm_crust_testkit::*;
 
 /// Brute force: the largest `dist(x, nearest sample) / max(lfs(x), floor)` over all dense x.
 fn brute_coverage(set: &CurveSet, samples: &[[f64; 2]], floor: f64) -> f64 {
@@ -531,18 +531,23 @@ fn svg_transforms_and_groups() {
 
 #[test]
 fn svg_files_parse_and_sample() {
-    let dir = std::path::Path::new("/work/shared/data/sampling2d/data");
-    if !dir.is_dir() {
-        println!("note: {} absent, SVG file test skipped", dir.display());
-        return;
-    }
+    // The sampling2d drawings (GPL-3.0 data, see tests/data/README.md); missing ones fail.
+    let dir = std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/sampling2d/data"
+    ));
+    assert!(
+        dir.is_dir(),
+        "test data {} is missing (the real point sets live in tests/data, see its README.md)",
+        dir.display()
+    );
     let mut files: Vec<_> = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().path())
         .filter(|p| p.extension().is_some_and(|e| e == "svg"))
         .collect();
     files.sort();
-    assert_eq!(files.len(), 19);
+    assert_eq!(files.len(), 19, "SVG drawings in {}", dir.display());
     for path in &files {
         let text = std::fs::read_to_string(path).unwrap();
         let subs = parse_svg(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));

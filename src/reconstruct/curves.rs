@@ -260,7 +260,7 @@ mod tests {
 
     #[test]
     fn renaming_back_gives_the_curves_of_the_old_names() {
-        use crate::sample::Rng;
+        use wdm_crust_testkit::Rng;
         let mut rng = Rng::new(17);
         for round in 0..300 {
             // A random graph of small degree on up to 40 points: loops, chains, junctions,

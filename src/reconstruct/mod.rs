@@ -561,7 +561,7 @@ fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sample::Rng;
+    use wdm_crust_testkit::Rng;
 
     /// The pipeline runs on renamed points; its result must be what the same steps give on
     /// the caller's indices directly.

@@ -544,25 +544,21 @@ proptest! {
 
 // ----- the real data files -----
 
-/// The shared data directory, or `None` (with a note) when it is not there.
-fn data_dir() -> Option<PathBuf> {
-    let dir = PathBuf::from(
-        std::env::var_os("WDM_CRUST_DATA").unwrap_or_else(|| "/work/shared/data".into()),
+/// The real point sets inside the repository (GPL-3.0 data, see `tests/data/README.md`). A
+/// missing directory fails the test; nothing is skipped.
+fn data_dir() -> PathBuf {
+    let dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data"));
+    assert!(
+        dir.is_dir(),
+        "test data {} is missing (the real point sets live in tests/data, see its README.md)",
+        dir.display()
     );
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "note: {} is absent, skipping the real-data parse test",
-            dir.display()
-        );
-        None
-    }
+    dir
 }
 
 #[test]
 fn real_data_files_have_their_documented_point_counts() {
-    let Some(dir) = data_dir() else { return };
+    let dir = data_dir();
     let files: &[(&str, usize)] = &[
         ("hnn-crust-sgp16/crocodile-conf.p2d", 129),
         ("hnn-crust-sgp16/crocodile-conf.gtn", 129),

@@ -8,7 +8,7 @@
 /// Not cryptographic. The same seed gives the same stream on every platform and build.
 ///
 /// ```
-/// use wdm_crust::sample::Rng;
+/// use wdm_crust_testkit::Rng;
 /// let mut a = Rng::new(7);
 /// let mut b = Rng::new(7);
 /// assert_eq!(a.next_u64(), b.next_u64());

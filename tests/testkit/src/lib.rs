@@ -1,5 +1,11 @@
 //! Ground-truth inputs for reconstruction tests and quality benchmarks.
 //!
+//! **Dev-only; not part of the published `wdm-crust` library.** This small path crate
+//! (`publish = false`, no dependencies, not even on `wdm-crust`) is shared by the
+//! integration tests, examples and benches (as a dev-dependency), by the library's own
+//! `#[cfg(test)]` unit tests, and by the fuzz crate. It lives in `tests/testkit/` and is left
+//! out of the published package.
+//!
 //! * [`Rng`]: a small deterministic PRNG (xoshiro256**), so every input is reproducible
 //!   from a `u64` seed.
 //! * Curves: smooth closed curves ([`Ellipse`], [`Star`], [`Peanut`], [`Superellipse`], or
@@ -12,12 +18,12 @@
 //!   [`Similarity`], shuffled, and spoiled with noise or outliers.
 //!
 //! ```
-//! use wdm_crust::sample::{ClosedCurve, CurveSet, Ellipse, Rng, Star};
+//! use wdm_crust_testkit::{ClosedCurve, CurveSet, Ellipse, Rng, Star};
 //!
 //! let mut rng = Rng::new(42);
 //! // Two disjoint curves: an ellipse and a star moved beside it.
 //! let star = Star { a: 0.2, k: 5 }.dense(4000);
-//! let star = star.transformed(&wdm_crust::sample::Similarity::translation([4.0, 0.0]));
+//! let star = star.transformed(&wdm_crust_testkit::Similarity::translation([4.0, 0.0]));
 //! let set = CurveSet::new(vec![Ellipse { a: 2.0, b: 1.0 }.dense(4000), star]);
 //!
 //! let sample = set.eps_sample(0.3, &mut rng);
@@ -29,6 +35,9 @@
 //! let scrambled = sample.randomized(&mut rng);
 //! assert_eq!(scrambled.edge_set().len(), sample.edge_set().len());
 //! ```
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
 
 mod arctree;
 mod curve;

@@ -126,7 +126,7 @@ fn box_dist2(b: &[f64; 4], q: P2) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sample::Rng;
+    use crate::Rng;
 
     #[test]
     fn nearest_matches_brute_force() {

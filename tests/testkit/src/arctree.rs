@@ -167,7 +167,7 @@ impl ArcTree {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sample::Rng;
+    use crate::Rng;
 
     #[test]
     fn min_tangent_radius_matches_brute_force() {

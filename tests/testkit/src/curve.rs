@@ -11,7 +11,7 @@ use std::f64::consts::TAU;
 /// `scale`, so they are the only transforms offered.
 ///
 /// ```
-/// use wdm_crust::sample::Similarity;
+/// use wdm_crust_testkit::Similarity;
 /// let s = Similarity::rotation(std::f64::consts::FRAC_PI_2).then(&Similarity::translation([1.0, 0.0]));
 /// let p = s.apply([1.0, 0.0]);
 /// assert!((p[0] - 1.0).abs() < 1e-12 && (p[1] - 1.0).abs() < 1e-12);

@@ -94,7 +94,7 @@ pub fn medial_balls(curves: &[DenseCurve]) -> Vec<MedialBall> {
 /// opt-level 2); near-circular arcs are the worst case (a 20 000-point circle: about 0.5–0.9 s).
 ///
 /// ```
-/// use wdm_crust::sample::{local_feature_size, ClosedCurve, Ellipse};
+/// use wdm_crust_testkit::{local_feature_size, ClosedCurve, Ellipse};
 /// let circle = Ellipse::circle(2.0).dense(2000);
 /// let lfs = local_feature_size(std::slice::from_ref(&circle));
 /// assert!(lfs[0].iter().all(|&f| (f - 2.0).abs() < 1e-9));

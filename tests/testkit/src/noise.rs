@@ -6,7 +6,7 @@ use super::vec2::bbox;
 /// Adds independent Gaussian noise with standard deviation `sigma` to each coordinate.
 ///
 /// ```
-/// use wdm_crust::sample::{add_gaussian_noise, Rng};
+/// use wdm_crust_testkit::{add_gaussian_noise, Rng};
 /// let mut pts = vec![[0.0, 0.0]; 1000];
 /// add_gaussian_noise(&mut pts, 0.1, &mut Rng::new(1));
 /// let var = pts.iter().map(|p| p[0] * p[0]).sum::<f64>() / 1000.0;

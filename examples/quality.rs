@@ -46,21 +46,18 @@ fn algorithms() -> Vec<Method> {
         .iter()
         .map(|&algorithm| Method {
             name: algorithm.name(),
-            options: Options {
-                algorithm,
-                ..Options::default()
-            },
+            options: Options::new().with_algorithm(algorithm),
         })
         .collect()
 }
 
 /// WDM_CRUST with peeling on and off and with the three label rules.
 fn wdm_variants() -> Vec<Method> {
-    let wdm = |peeling, label_rule| Options {
-        algorithm: Algorithm::Wdm,
-        peeling,
-        label_rule,
-        ..Options::default()
+    let wdm = |peeling, label_rule| {
+        Options::new()
+            .with_algorithm(Algorithm::Wdm)
+            .with_peeling(peeling)
+            .with_label_rule(label_rule)
     };
     vec![
         Method {
@@ -555,10 +552,7 @@ fn data(path: &str) -> PathBuf {
 fn structure_line(name: &str, points: &[[f64; 2]]) -> String {
     let mut line = format!("| {name} | {} |", points.len());
     for algorithm in ALGORITHMS {
-        let options = Options {
-            algorithm,
-            ..Options::default()
-        };
+        let options = Options::new().with_algorithm(algorithm);
         let start = Instant::now();
         match reconstruct_with(points, &options) {
             Ok(rec) => {
@@ -920,10 +914,7 @@ fn main() {
             .collect();
         let mut line = format!("| noisy star, random order | {n} |");
         for algorithm in ALGORITHMS {
-            let options = Options {
-                algorithm,
-                ..Options::default()
-            };
+            let options = Options::new().with_algorithm(algorithm);
             let start = Instant::now();
             let ok = reconstruct_with(&points, &options).is_ok();
             line += &format!(

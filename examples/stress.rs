@@ -84,10 +84,7 @@ fn main() {
         if !stage(name) {
             continue;
         }
-        let options = Options {
-            peeling,
-            ..Options::default()
-        };
+        let options = Options::new().with_peeling(peeling);
         let t = Instant::now();
         let rec = reconstruct_with(&points, &options).expect("valid points");
         println!(

@@ -13,6 +13,7 @@ pub const MAX_MAGNITUDE: f64 = 3.2138760885179806e60; // 2^201
 
 /// Everything that can go wrong in the library. No public function panics instead.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum Error {
     /// A coordinate is NaN or infinite.
     NotFinite {

@@ -33,6 +33,7 @@ pub enum EdgeEnd {
 
 /// A Voronoi edge seen from one of its finite ends.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub struct VoronoiEdge {
     /// The dual Delaunay half-edge, on the boundary of `from`'s face.
     pub halfedge: u32,

@@ -107,7 +107,7 @@ fn check_json(json: &str, points: &[[f64; 2]], options: &Options) {
     assert!(at("points") < at("edges") && at("edges") < at("curves"));
     assert!(at("curves") < at("medial_axis"));
     let rec = wdm_crust::reconstruct_with(points, options).unwrap();
-    assert_eq!(value["algorithm"], options.algorithm.name());
+    assert_eq!(value["algorithm"], options.algorithm().name());
     assert_eq!(value["points"].as_u64().unwrap() as usize, points.len());
     let edges: Vec<[u32; 2]> = serde_json::from_value(value["edges"].clone()).unwrap();
     assert_eq!(edges, rec.edges());
@@ -255,11 +255,9 @@ fn every_algorithm_and_no_peeling_match_the_library() {
             }
             let run = run_in(d, &args, b"");
             assert_eq!(run.code, 0, "{args:?}: {}", run.stderr);
-            let options = Options {
-                algorithm,
-                peeling,
-                ..Default::default()
-            };
+            let options = Options::new()
+                .with_algorithm(algorithm)
+                .with_peeling(peeling);
             check_json(&run.stdout, &points, &options);
             args.extend(["--format", "svg", "--show", "delaunay,voronoi,labels"]);
             let run = run_in(d, &args, b"");

@@ -18,10 +18,7 @@ fn check_everything(points: &[[f64; 2]]) {
     checks::check_triangulate(points, &result).unwrap();
     let Ok(tri) = result else { return };
     checks::check_voronoi(&tri.voronoi()).unwrap();
-    let single_options = Options {
-        peeling: false,
-        ..Options::default()
-    };
+    let single_options = Options::new().with_peeling(false);
     let single = reconstruct_with(points, &single_options).unwrap();
     let full = wdm_crust::reconstruct(points).unwrap();
     checks::check_single_pass(points, &single).unwrap();
@@ -195,10 +192,7 @@ fn tiny_points_sharing_a_zorder_key_give_order_independent_positions() {
     assert_eq!((points.len(), perm.len()), (507, 507));
     let shuffled = checks::permute(&points, &perm);
     assert_eq!(position_bits(&points), position_bits(&shuffled));
-    let options = Options {
-        peeling: false,
-        ..Options::default()
-    };
+    let options = Options::new().with_peeling(false);
     let rec = reconstruct_with(&points, &options).unwrap();
     let other = reconstruct_with(&shuffled, &options).unwrap();
     checks::check_permuted(&points, &perm, &rec, &other, true, true).unwrap();
@@ -237,10 +231,7 @@ fn medial_axis_of_noisy_chains_does_not_depend_on_the_input_order() {
         .map(|p| index_of[&p.map(f64::to_bits)])
         .collect();
     for peeling in [false, true] {
-        let options = Options {
-            peeling,
-            ..Options::default()
-        };
+        let options = Options::new().with_peeling(peeling);
         let rec = reconstruct_with(&points, &options).unwrap();
         let other = reconstruct_with(&permuted, &options).unwrap();
         checks::check_permuted(&points, &perm, &rec, &other, true, true)

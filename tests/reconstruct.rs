@@ -186,14 +186,7 @@ fn a_shape_with_a_hole_needs_peeling() {
         assert_eq!(peeled.curves().len(), 2);
         assert!(!peeled.peeling_budget_exhausted());
         // The paper's single pass never reaches the hole: its curve is lost entirely.
-        let single = reconstruct_with(
-            &sample.points,
-            &Options {
-                peeling: false,
-                ..Default::default()
-            },
-        )
-        .unwrap();
+        let single = reconstruct_with(&sample.points, &Options::new().with_peeling(false)).unwrap();
         let inner: EdgeSet = Sample {
             curves: vec![sample.curves[1].clone()],
             ..sample.clone()
@@ -229,14 +222,8 @@ fn peeling_a_grid_stops_at_the_budget() {
     let grid: Vec<[f64; 2]> = (0..side * side)
         .map(|i| [(i % side) as f64, (i / side) as f64])
         .collect();
-    let unbounded = reconstruct_with(
-        &grid,
-        &Options {
-            peeling_budget: usize::MAX,
-            ..Default::default()
-        },
-    )
-    .unwrap();
+    let unbounded =
+        reconstruct_with(&grid, &Options::new().with_peeling_budget(usize::MAX)).unwrap();
     assert!(!unbounded.peeling_budget_exhausted());
     assert!(unbounded.passes() >= 10, "{} passes", unbounded.passes());
     let bounded = reconstruct(&grid).unwrap();
@@ -249,14 +236,7 @@ fn peeling_a_grid_stops_at_the_budget() {
     // The passes that did run found the same edges as without the bound.
     let all: EdgeSet = edge_set(unbounded.edges());
     assert!(edge_set(bounded.edges()).is_subset(&all));
-    let zero = reconstruct_with(
-        &grid,
-        &Options {
-            peeling_budget: 0,
-            ..Default::default()
-        },
-    )
-    .unwrap();
+    let zero = reconstruct_with(&grid, &Options::new().with_peeling_budget(0)).unwrap();
     assert_eq!(zero.passes(), 1);
     assert!(zero.peeling_budget_exhausted());
 }
@@ -394,16 +374,7 @@ fn rounded_triangle(n: usize) -> Vec<[f64; 2]> {
 fn label_readings_differ_on_a_convex_shape_with_a_junction() {
     for n in [12, 24, 36] {
         let pts = rounded_triangle(n);
-        let with = |rule| {
-            reconstruct_with(
-                &pts,
-                &Options {
-                    label_rule: rule,
-                    ..Default::default()
-                },
-            )
-            .unwrap()
-        };
+        let with = |rule| reconstruct_with(&pts, &Options::new().with_label_rule(rule)).unwrap();
         let truth = cycle_edges(n);
         // DESIGN.md's reading: outer = reached by the water and still activated.
         let reached = with(LabelRule::WaterReached);

@@ -28,10 +28,7 @@ const KNOWN_MERGED_FACE_ORDER_ISSUE: bool = false;
 
 fuzz_target!(|scene: Scene| {
     let points = scene.points(MAX_POINTS);
-    let single_options = Options {
-        peeling: false,
-        ..Options::default()
-    };
+    let single_options = Options::new().with_peeling(false);
     let single = reconstruct_with(&points, &single_options);
     let full = wdm_crust::reconstruct(&points);
     let (single, full) = match (single, full, expected_error(&points)) {
@@ -69,7 +66,7 @@ fuzz_target!(|scene: Scene| {
         (Options::default(), &full, "peeling"),
     ] {
         let strict = !KNOWN_MERGED_FACE_ORDER_ISSUE;
-        let axis = strict || !options.peeling;
+        let axis = strict || !options.peeling();
         match reconstruct_with(&shuffled, &options) {
             Ok(other) => {
                 if let Err(e) = check_permuted(&points, &perm, rec, &other, strict, axis) {

@@ -112,7 +112,7 @@ pub struct ReconstructArgs {
     /// Peeling stops before the extra passes together would run on more than N times the
     /// input's points (a note on standard error says so). Curve samples with holes never
     /// reach it; noise and grids would otherwise peel for hundreds of passes.
-    #[arg(long, value_name = "N", default_value_t = Options::default().peeling_budget)]
+    #[arg(long, value_name = "N", default_value_t = Options::default().peeling_budget())]
     peeling_budget: usize,
 
     /// SVG underlays, comma-separated: delaunay, voronoi, labels.
@@ -152,22 +152,20 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
 
     let points = input.read_points_timed(&mut timings)?;
 
-    let options = Options {
-        algorithm: args.algorithm.into(),
-        peeling: !args.no_peeling,
-        peeling_budget: args.peeling_budget,
-        ..Default::default()
-    };
+    let options = Options::new()
+        .with_algorithm(args.algorithm.into())
+        .with_peeling(!args.no_peeling)
+        .with_peeling_budget(args.peeling_budget);
     let n = points.len();
     timings.begin(|| format!("triangulating {n} points"));
     // The library reports each phase as it ends; the next one begins right then.
     let rec = wdm_crust::reconstruct_observed(&points, &options, &mut |phase, _| {
         timings.phase(phase.name(), String::new);
-        if let Some(next) = next_phase(options.algorithm, phase) {
+        if let Some(next) = next_phase(options.algorithm(), phase) {
             timings.begin(|| match next {
                 Phase::Voronoi => "building the Voronoi diagram".to_string(),
                 Phase::Label => "labeling by water flow".to_string(),
-                _ => format!("extracting ({})", options.algorithm.name()),
+                _ => format!("extracting ({})", options.algorithm().name()),
             });
         }
     })
@@ -189,17 +187,15 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
             "wdm-crust: note: {}: peeling stopped after {} passes (--peeling-budget {}); {} points are on no curve",
             input.name(),
             rec.passes(),
-            options.peeling_budget,
+            options.peeling_budget(),
             rec.untouched_points().len()
         );
     }
     timings.begin(|| "writing".to_string());
-    let svg = SvgOptions {
-        delaunay: args.show.contains(&Layer::Delaunay),
-        voronoi: args.show.contains(&Layer::Voronoi),
-        labels: args.show.contains(&Layer::Labels),
-        title: None,
-    };
+    let mut svg = SvgOptions::default();
+    svg.delaunay = args.show.contains(&Layer::Delaunay);
+    svg.voronoi = args.show.contains(&Layer::Voronoi);
+    svg.labels = args.show.contains(&Layer::Labels);
     output.write(|out| match format {
         ReconstructFormat::Json => write_reconstruction_json(&rec, out),
         ReconstructFormat::Text => write_reconstruction_text(&rec, out),

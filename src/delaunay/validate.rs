@@ -8,6 +8,7 @@ use crate::predicates::{incircle, orient2d, CirclePosition, Orientation};
 
 /// The first invariant a [`Triangulation`] was found to break.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum ValidationError {
     /// A triangle is not strictly counterclockwise.
     NotCounterClockwise {

@@ -41,6 +41,7 @@ use crate::error::{check_coordinate, Error as CoordinateError};
 
 /// The point-file formats understood by [`read_points`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum InputFormat {
     /// One point per line: two numbers separated by white space and/or one comma, further
     /// columns ignored. No header line.
@@ -63,6 +64,7 @@ impl fmt::Display for InputFormat {
 
 /// Which coordinate of a point a problem is about.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Axis {
     /// The first coordinate.
     X,
@@ -236,6 +238,7 @@ impl fmt::Display for ParseErrorKind {
 
 /// A point file that could not be read: where (1-based line number) and what.
 #[derive(Debug)]
+#[non_exhaustive]
 pub struct ParseError {
     /// The 1-based line number of the problem, if it has one (opening a file has none).
     pub line: Option<usize>,

@@ -27,6 +27,7 @@ use crate::Reconstruction;
 
 /// What to draw besides the points, the curves and the medial axis.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct SvgOptions {
     /// Draw the Delaunay edges under everything (faint grey).
     pub delaunay: bool,
@@ -73,7 +74,8 @@ const OUTER: &str = "#1f77b4";
 ///     .map(|k| [(k as f64 * 0.785).cos(), (k as f64 * 0.785).sin()])
 ///     .collect();
 /// let rec = wdm_crust::reconstruct(&octagon)?;
-/// let options = wdm_crust::io::SvgOptions { delaunay: true, ..Default::default() };
+/// let mut options = wdm_crust::io::SvgOptions::default();
+/// options.delaunay = true;
 /// let mut out = Vec::new();
 /// wdm_crust::io::write_reconstruction_svg(&rec, &options, &mut out)?;
 /// let svg = String::from_utf8(out)?;

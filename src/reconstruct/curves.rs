@@ -3,6 +3,7 @@
 /// One reconstructed curve.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct Curve {
     /// True for a closed loop (the last point connects back to the first).
     pub closed: bool,

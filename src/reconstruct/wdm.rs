@@ -28,6 +28,7 @@ pub enum Label {
 /// How water-flow states become inner/outer labels. The paper is ambiguous here; the
 /// default is the one DESIGN.md argues for, the others are kept so tests can compare.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[non_exhaustive]
 pub enum LabelRule {
     /// Outer = reached by the water and still ACTIVATED; inner = everything else.
     #[default]
@@ -41,6 +42,7 @@ pub enum LabelRule {
 
 /// The water-flow state of every Voronoi vertex after labeling.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct WaterFlow {
     /// Label of every finite Voronoi vertex.
     pub labels: Vec<Label>,

@@ -1,0 +1,78 @@
+//! Reading the WDM result off the labelled Voronoi diagram: the crust (Delaunay edges dual
+//! to inner–outer Voronoi edges) and the medial axis (inner–inner Voronoi edges).
+
+use super::result::MedialAxis;
+use super::wdm::Label;
+use crate::delaunay::Triangulation;
+use crate::voronoi::{EdgeEnd, Voronoi};
+
+/// The class of a Voronoi edge by the labels of its ends (Section 3.3 of the paper).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum EdgeClass {
+    /// Both ends outer: a pipe the water runs through.
+    Carrier,
+    /// One end inner, one outer: its dual Delaunay edge is a crust edge.
+    Branch,
+    /// Both ends inner: a medial-axis edge.
+    Neutral,
+}
+
+impl EdgeClass {
+    /// The class of an edge whose ends carry labels `a` and `b`.
+    pub fn of(a: Label, b: Label) -> EdgeClass {
+        match (a, b) {
+            (Label::Outer, Label::Outer) => EdgeClass::Carrier,
+            (Label::Inner, Label::Inner) => EdgeClass::Neutral,
+            _ => EdgeClass::Branch,
+        }
+    }
+}
+
+/// Delaunay edges dual to branch edges, each once, unsorted. A ray's far end is the root
+/// vertex, always outer.
+pub(super) fn wdm_crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
+    let mut edges = Vec::new();
+    for v in 0..vor.vertex_count() as u32 {
+        for edge in vor.vertex_edges(v) {
+            let far = match edge.to {
+                EdgeEnd::Vertex(u) if u < v => continue, // each finite edge once
+                EdgeEnd::Vertex(u) => labels[u as usize],
+                EdgeEnd::Infinity => Label::Outer,
+            };
+            if EdgeClass::of(labels[v as usize], far) == EdgeClass::Branch {
+                let [a, b] = edge.sites;
+                edges.push([a.min(b), a.max(b)]);
+            }
+        }
+    }
+    edges
+}
+
+/// Finite Voronoi edges with both ends inner, with the used vertices renumbered.
+pub(super) fn medial_axis(vor: &Voronoi<'_>, labels: &[Label]) -> MedialAxis {
+    let mut index = vec![u32::MAX; vor.vertex_count()];
+    let mut axis = MedialAxis::default();
+    let mut renumber = |v: u32, axis: &mut MedialAxis| {
+        if index[v as usize] == u32::MAX {
+            index[v as usize] = axis.vertices.len() as u32;
+            axis.vertices.push(vor.vertex_position(v));
+        }
+        index[v as usize]
+    };
+    for (_, a, b) in vor.finite_edges() {
+        if labels[a as usize] == Label::Inner && labels[b as usize] == Label::Inner {
+            let (ia, ib) = (renumber(a, &mut axis), renumber(b, &mut axis));
+            axis.edges.push([ia.min(ib), ia.max(ib)]);
+        }
+    }
+    axis.edges.sort_unstable();
+    axis
+}
+
+/// Collinear or tiny input: the chain along the line is the reconstruction.
+pub(super) fn chain_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
+    tri.hull()
+        .windows(2)
+        .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
+        .collect()
+}

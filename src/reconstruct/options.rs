@@ -1,0 +1,117 @@
+//! What a reconstruction is asked to do: the algorithm and its settings.
+
+pub use super::wdm::LabelRule;
+
+/// Which reconstruction algorithm to run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[non_exhaustive]
+pub enum Algorithm {
+    /// WDM_CRUST (Peethambaran, Parakkat, Muthuganapathy): water-flow labeling.
+    #[default]
+    Wdm,
+    /// The crust of Amenta, Bern and Eppstein: Delaunay edges between samples that survive
+    /// when the Voronoi vertices are added to the point set.
+    Crust,
+    /// The nearest-neighbour crust of Dey and Kumar: each sample's nearest neighbour, plus
+    /// its nearest "half neighbour" on the other side.
+    NnCrust,
+}
+
+impl Algorithm {
+    /// The name used on the command line and in JSON output.
+    pub fn name(self) -> &'static str {
+        match self {
+            Algorithm::Wdm => "wdm",
+            Algorithm::Crust => "crust",
+            Algorithm::NnCrust => "nn-crust",
+        }
+    }
+}
+
+/// Reconstruction options, set through `with_*` methods so that new ones can come without
+/// breaking callers.
+///
+/// ```
+/// use wdm_crust::reconstruct::{Algorithm, Options};
+/// let options = Options::default().with_algorithm(Algorithm::Crust).with_peeling(false);
+/// assert_eq!(options.algorithm(), Algorithm::Crust);
+/// assert!(!options.peeling());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Options {
+    algorithm: Algorithm,
+    peeling: bool,
+    label_rule: LabelRule,
+    peeling_budget: usize,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            algorithm: Algorithm::Wdm,
+            peeling: true,
+            label_rule: LabelRule::WaterReached,
+            peeling_budget: 4,
+        }
+    }
+}
+
+impl Options {
+    /// The defaults: WDM_CRUST with peeling, the [`LabelRule::WaterReached`] labels and a
+    /// peeling budget of 4.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// The algorithm (default [`Algorithm::Wdm`]).
+    pub fn with_algorithm(mut self, algorithm: Algorithm) -> Self {
+        self.algorithm = algorithm;
+        self
+    }
+
+    /// Nested curves (holes): rerun on the points the crust left untouched until none (or
+    /// fewer than three) remain, and take the union. The paper's single pass never reaches
+    /// a hole, so its inner curve would be lost. On by default; WDM only.
+    pub fn with_peeling(mut self, peeling: bool) -> Self {
+        self.peeling = peeling;
+        self
+    }
+
+    /// How water-flow states become labels (see [`LabelRule`]); WDM only.
+    pub fn with_label_rule(mut self, label_rule: LabelRule) -> Self {
+        self.label_rule = label_rule;
+        self
+    }
+
+    /// Bounds the work of peeling: the extra passes together may run on at most this many
+    /// times the input's point count (default 4), so a reconstruction costs at most about
+    /// five single passes. Nested curves leave few points for the later passes and never
+    /// meet the bound; inputs that are not curve samples do (uniform noise or a grid peel off
+    /// a thin layer per pass and would take hundreds of passes).
+    /// [`Reconstruction::peeling_budget_exhausted`](super::Reconstruction::peeling_budget_exhausted)
+    /// tells when it stopped the peeling.
+    pub fn with_peeling_budget(mut self, peeling_budget: usize) -> Self {
+        self.peeling_budget = peeling_budget;
+        self
+    }
+
+    /// See [`with_algorithm`](Self::with_algorithm).
+    pub fn algorithm(&self) -> Algorithm {
+        self.algorithm
+    }
+
+    /// See [`with_peeling`](Self::with_peeling).
+    pub fn peeling(&self) -> bool {
+        self.peeling
+    }
+
+    /// See [`with_label_rule`](Self::with_label_rule).
+    pub fn label_rule(&self) -> LabelRule {
+        self.label_rule
+    }
+
+    /// See [`with_peeling_budget`](Self::with_peeling_budget).
+    pub fn peeling_budget(&self) -> usize {
+        self.peeling_budget
+    }
+}

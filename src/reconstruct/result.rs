@@ -1,0 +1,86 @@
+//! What a reconstruction returns.
+
+use super::curves::{self, Curve};
+use super::options::Algorithm;
+use super::wdm::Label;
+use crate::delaunay::Triangulation;
+
+/// The medial axis approximation: segments between inner Voronoi vertices.
+#[derive(Debug, Clone, Default, PartialEq)]
+#[non_exhaustive]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct MedialAxis {
+    /// Circumcenters (rounded to f64) of the inner vertices that have a medial-axis edge.
+    pub vertices: Vec<[f64; 2]>,
+    /// Segments as index pairs into `vertices`, `[a, b]` with `a < b`, sorted.
+    pub edges: Vec<[u32; 2]>,
+}
+
+/// The result of a reconstruction.
+#[derive(Debug, Clone)]
+pub struct Reconstruction {
+    pub(super) algorithm: Algorithm,
+    pub(super) triangulation: Triangulation,
+    pub(super) labels: Vec<Label>,
+    pub(super) edges: Vec<[u32; 2]>,
+    pub(super) curves: Vec<Curve>,
+    pub(super) medial_axis: MedialAxis,
+    pub(super) passes: usize,
+    pub(super) budget_exhausted: bool,
+}
+
+impl Reconstruction {
+    /// The algorithm that produced this result.
+    pub fn algorithm(&self) -> Algorithm {
+        self.algorithm
+    }
+
+    /// Reconstructed edges `[i, j]` with `i < j`, sorted, over the caller's indices.
+    pub fn edges(&self) -> &[[u32; 2]] {
+        &self.edges
+    }
+
+    /// Closed loops and open chains assembled from [`Self::edges`].
+    pub fn curves(&self) -> &[Curve] {
+        &self.curves
+    }
+
+    /// True when peeling stopped because the next pass would have exceeded
+    /// [`Options::with_peeling_budget`](super::Options::with_peeling_budget): the [`untouched_points`](Self::untouched_points) may
+    /// then still hold curves.
+    pub fn peeling_budget_exhausted(&self) -> bool {
+        self.budget_exhausted
+    }
+
+    /// WDM_MAT: segments between inner Voronoi vertices.
+    pub fn medial_axis(&self) -> &MedialAxis {
+        &self.medial_axis
+    }
+
+    /// The Delaunay triangulation of all the points.
+    pub fn triangulation(&self) -> &Triangulation {
+        &self.triangulation
+    }
+
+    /// The label of every vertex of `self.triangulation().voronoi()` from the first pass
+    /// (empty for the baseline algorithms, which do not label).
+    pub fn labels(&self) -> &[Label] {
+        &self.labels
+    }
+
+    /// Distinct points with a degree other than 0 or 2 in the reconstruction: curve ends and
+    /// junctions.
+    pub fn irregular_points(&self) -> Vec<u32> {
+        curves::irregular_points(self.triangulation.points().len(), &self.edges)
+    }
+
+    /// Distinct points that no reconstructed edge touches.
+    pub fn untouched_points(&self) -> Vec<u32> {
+        super::peel::untouched(&self.triangulation, &self.edges)
+    }
+
+    /// How many passes ran (more than one when peeling found nested curves).
+    pub fn passes(&self) -> usize {
+        self.passes
+    }
+}

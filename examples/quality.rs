@@ -867,7 +867,7 @@ fn main() {
         .collect();
     print_table(
         "WDM_CRUST variants on inputs from the tables above: peeling on (default) and off (the \
-         paper's single pass), and the three readings of the labels (DESIGN.md, water flow \
+         paper's single pass), and the three readings of the labels (ARCHITECTURE.md, water flow \
          step 6)",
         &rows,
         &variants,

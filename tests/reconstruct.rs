@@ -376,7 +376,7 @@ fn label_readings_differ_on_a_convex_shape_with_a_junction() {
         let pts = rounded_triangle(n);
         let with = |rule| reconstruct_with(&pts, &Options::new().with_label_rule(rule)).unwrap();
         let truth = cycle_edges(n);
-        // DESIGN.md's reading: outer = reached by the water and still activated.
+        // ARCHITECTURE.md's reading: outer = reached by the water and still activated.
         let reached = with(LabelRule::WaterReached);
         assert_eq!(score(&truth, reached.edges()), (0, 0));
         // The literal reading leaves the unreached junction activated = outer, and the

@@ -89,7 +89,7 @@ impl Peeling {
 }
 
 /// The edges of the holes peeling found: closed loops made only of later-pass edges, each
-/// with a dual Voronoi edge. The first pass never reaches inside a hole (DESIGN: water from
+/// with a dual Voronoi edge. The first pass never reaches inside a hole (water from
 /// infinity), so its labels already say what lies inside the outer curves; the hole loops
 /// say what to take away.
 ///

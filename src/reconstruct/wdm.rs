@@ -1,4 +1,4 @@
-//! WDM labeling (Section 3 of the paper, made precise in DESIGN.md "Water flow").
+//! WDM labeling (Section 3 of the paper, made precise in ARCHITECTURE.md, "The water flow").
 //!
 //! Water is pumped in from the root vertex at infinity. The finite vertices carrying a ray
 //! (FVVs) outside the convex hull are the inlets, largest circumradius first. From each inlet
@@ -26,7 +26,7 @@ pub enum Label {
 }
 
 /// How water-flow states become inner/outer labels. The paper is ambiguous here; the
-/// default is the one DESIGN.md argues for, the others are kept so tests can compare.
+/// default is the one ARCHITECTURE.md argues for, the others are kept so tests can compare.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[non_exhaustive]
 pub enum LabelRule {

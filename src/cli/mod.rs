@@ -78,6 +78,34 @@ pub fn run() -> ExitCode {
 
 /// Help and version go to standard output with exit 0; a usage error becomes one line on
 /// standard error with exit 2 (clap's tip and list of possible values kept).
+/// The triangulation step of every subcommand, as a timed phase; a library error names the
+/// input it came from.
+fn triangulate_timed(
+    input: &input::Input,
+    points: &[[f64; 2]],
+    timings: &mut timings::Timings,
+    note: impl FnOnce(&wdm_crust::Triangulation) -> String,
+) -> Result<wdm_crust::Triangulation, CliError> {
+    timings.begin(|| format!("triangulating {} points", points.len()));
+    let tri = wdm_crust::triangulate(points).map_err(|e| input.library_error(&e))?;
+    timings.phase("triangulate", || note(&tri));
+    Ok(tri)
+}
+
+/// The last step of every subcommand: write the result as a timed phase, then report the
+/// timings.
+fn write_timed(
+    output: &output::Output,
+    timings: &mut timings::Timings,
+    write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+) -> Result<(), CliError> {
+    timings.begin(|| "writing".to_string());
+    output.write(write)?;
+    timings.phase("write", String::new);
+    timings.report();
+    Ok(())
+}
+
 fn clap_exit(e: &clap::Error) -> ExitCode {
     match e.kind() {
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {

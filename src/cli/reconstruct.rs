@@ -12,7 +12,7 @@ use wdm_crust::reconstruct::{Algorithm, Options, Phase};
 use super::input::Input;
 use super::output::Output;
 use super::timings::Timings;
-use super::CliError;
+use super::{write_timed, CliError};
 
 /// Shown after `wdm-crust reconstruct --help`.
 pub const EXAMPLES: &str = "\
@@ -191,19 +191,15 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
             rec.untouched_points().len()
         );
     }
-    timings.begin(|| "writing".to_string());
     let mut svg = SvgOptions::default();
     svg.delaunay = args.show.contains(&Layer::Delaunay);
     svg.voronoi = args.show.contains(&Layer::Voronoi);
     svg.labels = args.show.contains(&Layer::Labels);
-    output.write(|out| match format {
+    write_timed(&output, &mut timings, |out| match format {
         ReconstructFormat::Json => write_reconstruction_json(&rec, out),
         ReconstructFormat::Text => write_reconstruction_text(&rec, out),
         ReconstructFormat::Svg => write_reconstruction_svg(&rec, &svg, out),
-    })?;
-    timings.phase("write", String::new);
-    timings.report();
-    Ok(())
+    })
 }
 
 /// The phase after `phase` in the pipeline of `algorithm`.

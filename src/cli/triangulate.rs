@@ -8,7 +8,7 @@ use wdm_crust::io::{write_triangulation_json, write_triangulation_text};
 use super::input::Input;
 use super::output::Output;
 use super::timings::Timings;
-use super::CliError;
+use super::{triangulate_timed, write_timed, CliError};
 
 /// Shown after `wdm-crust triangulate --help`.
 pub const EXAMPLES: &str = "\
@@ -62,22 +62,15 @@ pub fn run(args: &TriangulateArgs) -> Result<(), CliError> {
 
     let points = input.read_points_timed(&mut timings)?;
 
-    timings.begin(|| format!("triangulating {} points", points.len()));
-    let tri = wdm_crust::triangulate(&points).map_err(|e| input.library_error(&e))?;
-    timings.phase("triangulate", || {
+    let tri = triangulate_timed(&input, &points, &mut timings, |tri| {
         format!(
             "{} triangles, {} duplicates",
             tri.triangles().len(),
             tri.duplicates().len()
         )
-    });
-
-    timings.begin(|| "writing".to_string());
-    output.write(|out| match args.format {
+    })?;
+    write_timed(&output, &mut timings, |out| match args.format {
         TriangulateFormat::Json => write_triangulation_json(&tri, out),
         TriangulateFormat::Text => write_triangulation_text(&tri, out),
-    })?;
-    timings.phase("write", String::new);
-    timings.report();
-    Ok(())
+    })
 }

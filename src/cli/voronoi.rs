@@ -9,7 +9,7 @@ use wdm_crust::io::{write_voronoi_json, write_voronoi_text};
 use super::input::Input;
 use super::output::Output;
 use super::timings::Timings;
-use super::CliError;
+use super::{triangulate_timed, write_timed, CliError};
 
 /// Shown after `wdm-crust voronoi --help`.
 pub const EXAMPLES: &str = "\
@@ -76,11 +76,9 @@ pub fn run(args: &VoronoiArgs) -> Result<(), CliError> {
 
     let points = input.read_points_timed(&mut timings)?;
 
-    timings.begin(|| format!("triangulating {} points", points.len()));
-    let tri = wdm_crust::triangulate(&points).map_err(|e| input.library_error(&e))?;
-    timings.phase("triangulate", || {
+    let tri = triangulate_timed(&input, &points, &mut timings, |tri| {
         format!("{} triangles", tri.triangles().len())
-    });
+    })?;
 
     timings.begin(|| "building the Voronoi diagram".to_string());
     let vor = tri.voronoi();
@@ -93,12 +91,8 @@ pub fn run(args: &VoronoiArgs) -> Result<(), CliError> {
         )
     });
 
-    timings.begin(|| "writing".to_string());
-    output.write(|out| match args.format {
+    write_timed(&output, &mut timings, |out| match args.format {
         VoronoiFormat::Json => write_voronoi_json(&vor, out),
         VoronoiFormat::Text => write_voronoi_text(&vor, out),
-    })?;
-    timings.phase("write", String::new);
-    timings.report();
-    Ok(())
+    })
 }

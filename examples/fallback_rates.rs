@@ -14,7 +14,7 @@
 mod common;
 
 use common::PointSet;
-use wdm_crust::predicates::exact::{fallback_counts, PredicateCounts};
+use wdm_crust::predicates::{fallback_counts, PredicateCounts};
 
 fn main() {
     let n: usize = std::env::args()

@@ -15,11 +15,11 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-use wdm_crust::predicates::exact::{
+use wdm_crust::predicates::Orientation;
+use wdm_crust::predicates::{
     circumcenter, circumcenter_in_convex_hull, compare_circumradius, dot_sign_circumcenters,
     fallback_counts, orient2d_circumcenter, reset_fallback_counts, HullPosition, Sign,
 };
-use wdm_crust::predicates::Orientation;
 use wdm_crust::reconstruct::wdm::label_vertices;
 use wdm_crust::sample::Rng;
 use wdm_crust::{Triangulation, Voronoi};
@@ -217,7 +217,7 @@ fn main() {
         hull_cases.len(),
     );
     let c = fallback_counts();
-    let rate = |c: wdm_crust::predicates::exact::PredicateCounts| {
+    let rate = |c: wdm_crust::predicates::PredicateCounts| {
         let pct = |x: u64| 100.0 * x as f64 / c.calls.max(1) as f64;
         format!(
             "exact {} / {} = {:.4} %, slow {} = {:.4} %",

@@ -16,6 +16,7 @@
 pub mod delaunay;
 pub mod error;
 pub mod io;
+mod kernel;
 pub mod predicates;
 pub mod reconstruct;
 pub mod sample;

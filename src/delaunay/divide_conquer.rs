@@ -20,10 +20,11 @@
 //! is broken by coordinates, never by input position: a permutation of the input gives the
 //! same triangles. The hull starts at the lexicographically smallest point.
 
-use super::filter::{ccw, inside, Lifted, StaticFilter};
 use super::mesh::{prev, Mesh, GHOST};
 use super::triangulation::{Triangulation, NO_TWIN};
 use super::zorder::{lexicographic, order, Grid};
+use crate::kernel::basic::{ccw, inside};
+use crate::kernel::static_filter::{Lifted, StaticFilter};
 use crate::predicates::{orient2d, Orientation};
 
 /// Triangulates validated points (finite, inside the exact envelope).

@@ -1,8 +1,8 @@
 //! Profiles the derived exact predicates and the pipeline stages that call them.
 //!
 //! ```text
-//! cargo run --release --example predicate_profile                 # 200k points, 3 repetitions
-//! cargo run --release --example predicate_profile -- 20000 1      # n points, repetitions
+//! cargo run --release --features predicate-stats --example predicate_profile            # 200k points, 3 repetitions
+//! cargo run --release --features predicate-stats --example predicate_profile -- 20000 1 # n points, repetitions
 //! valgrind --tool=callgrind target/release/examples/predicate_profile 20000 1
 //! ```
 //!

@@ -186,15 +186,14 @@ impl<'a> Voronoi<'a> {
     /// [`vertex_position`]: Voronoi::vertex_position
     pub fn vertex_positions(&self) -> &[[f64; 2]] {
         self.positions.get_or_init(|| {
-            let positions = (0..self.vertex_count as u32)
+            (0..self.vertex_count as u32)
                 .map(|v| self.compute_position(v))
-                .collect();
-            positions
+                .collect()
         })
     }
 
     /// Circumcenter of vertex `v`, rounded to f64: within 256 ulps of the exact one, see
-    /// [`circumcenter`](crate::predicates::circumcenter).
+    /// [`crate::predicates::circumcenter`].
     pub fn vertex_position(&self, v: u32) -> [f64; 2] {
         match self.positions.get() {
             Some(positions) => positions[v as usize],

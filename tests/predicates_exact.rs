@@ -1,8 +1,8 @@
-//! Property tests of `wdm_crust::predicates::exact` against an independently written rational
-//! reference, on random input and on adversarial input built to hit exact zeros (lattice
-//! points on circles, right angles, shared circumcenters, circumcenters on hull edges), the
-//! same perturbed by one ulp, translated far from the origin and scaled by 2^k over the whole
-//! input envelope.
+//! Property tests of the circumcenter predicates of `wdm_crust::predicates` against an
+//! independently written rational reference, on random input and on adversarial input built
+//! to hit exact zeros (lattice points on circles, right angles, shared circumcenters,
+//! circumcenters on hull edges), the same perturbed by one ulp, translated far from the
+//! origin and scaled by 2^k over the whole input envelope.
 
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};

@@ -16,7 +16,7 @@
 //! change under a rotation, so only the extreme points differ. Each subproblem reports its
 //! extreme points in both orders, `(x, y)` and `(y, −x)`, with a ghost at each.
 //!
-//! Every decision is an exact predicate (filtered, [`filter`](super::filter)), and every tie
+//! Every decision is an exact predicate (filtered, `crate::kernel::basic`), and every tie
 //! is broken by coordinates, never by input position: a permutation of the input gives the
 //! same triangles. The hull starts at the lexicographically smallest point.
 

@@ -37,47 +37,35 @@ pub(super) fn signs<const K: usize>(
     (out, Stage::Exact)
 }
 
-impl Arith for BigInt {
-    fn add(&self, other: &Self) -> Self {
-        self + other
-    }
+/// The ring operations of an exact number type by its operators; `$sign` maps a value to
+/// its sign.
+macro_rules! exact_arith {
+    ($t:ty, $sign:expr) => {
+        impl Arith for $t {
+            fn add(&self, other: &Self) -> Self {
+                self + other
+            }
 
-    fn sub(&self, other: &Self) -> Self {
-        self - other
-    }
+            fn sub(&self, other: &Self) -> Self {
+                self - other
+            }
 
-    fn mul(&self, other: &Self) -> Self {
-        self * other
-    }
+            fn mul(&self, other: &Self) -> Self {
+                self * other
+            }
 
-    fn twice(&self) -> Self {
-        self << 1u32
-    }
-
-    fn sign(&self) -> Option<Sign> {
-        Some(integer_sign(self))
-    }
+            fn sign(&self) -> Option<Sign> {
+                Some($sign(self))
+            }
+        }
+    };
 }
 
-/// Exact rationals, for the tests: an evaluation independent of [`lift_exact`].
+exact_arith!(BigInt, integer_sign);
+
+// Exact rationals, for the tests: an evaluation independent of `lift_exact`.
 #[cfg(test)]
-impl Arith for BigRational {
-    fn add(&self, other: &Self) -> Self {
-        self + other
-    }
-
-    fn sub(&self, other: &Self) -> Self {
-        self - other
-    }
-
-    fn mul(&self, other: &Self) -> Self {
-        self * other
-    }
-
-    fn sign(&self) -> Option<Sign> {
-        Some(integer_sign(self.numer()))
-    }
-}
+exact_arith!(BigRational, |x: &BigRational| integer_sign(x.numer()));
 
 /// The exact sign of an integer.
 pub(super) fn integer_sign(x: &BigInt) -> Sign {

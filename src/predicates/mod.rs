@@ -14,7 +14,7 @@
 //!   [`HullPosition`]; and the constructions [`circumcenter`] (`f64`, error proven per call)
 //!   and [`circumcenter_exact`] (the crate's one exact accessor, an [`ExactPoint`]).
 //!
-//! With the `predicate-stats` feature, [`fallback_counts`] reports per thread how often the
+//! With the `predicate-stats` feature, `fallback_counts` reports per thread how often the
 //! circumcenter predicates left their fast filter.
 //!
 //! ```

@@ -16,7 +16,7 @@
 //! iterator is empty and [`Voronoi::collinear_bisectors`] lists the bisected pairs.
 
 use crate::delaunay::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
-use crate::kernel::{circumcenter, circumcenter_exact, cocircular, ExactPoint};
+use crate::kernel::{circumcenter, circumcenter_exact, incircle, ExactPoint, Sign};
 use crate::predicates::{orient2d, Orientation};
 
 /// The far end of a Voronoi edge.
@@ -149,7 +149,7 @@ impl<'a> Voronoi<'a> {
                 if twin != NO_TWIN && twin as usize > e {
                     let opposite =
                         points[tri.halfedge_origin(prev_in_triangle(twin as usize)) as usize];
-                    if cocircular(a, b, c, opposite) {
+                    if incircle(a, b, c, opposite) == Sign::Zero {
                         cocircular_pairs.push([t as u32, twin / 3]);
                     }
                 }

@@ -4,8 +4,8 @@
 //! `ccwerrboundA` and `iccerrboundA` for exactly this evaluation order, scaled by the
 //! permanent of the evaluation) in front of the exact stages: the `robust` crate's adaptive
 //! predicates, and for in-circle first the `i128` lattice evaluation (`super::lattice`).
-//! [`ccw`], [`inside`] and [`cocircular`] are the construction's boolean readings of them,
-//! inlined so that the comparison folds into the filter's branches.
+//! Both are inlined into their callers, so that a comparison of the answer (`== Positive`)
+//! folds into the filter's branches.
 //!
 //! The bounds assume no intermediate underflow or overflow, which the input envelope of a
 //! triangulation guarantees: coordinate differences are 0 or in [2^-194, 2^202], so products
@@ -100,29 +100,11 @@ fn exact_incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Sign {
     }
 }
 
-/// Is `c` strictly left of the directed line `a → b`?
-#[inline(always)]
-pub(crate) fn ccw(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> bool {
-    orient(a, b, c) == Sign::Positive
-}
-
-/// Is `d` strictly inside the circle through the counterclockwise `a, b, c`?
-#[inline(always)]
-pub(crate) fn inside(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
-    incircle(a, b, c, d) == Sign::Positive
-}
-
-/// Are `a, b, c, d` exactly cocircular? Nearly every call is decided by the filter, since
-/// exact cocircularity is rare outside lattices, where the lattice stage decides it cheaply.
-#[inline(always)]
-pub(crate) fn cocircular(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
-    incircle(a, b, c, d) == Sign::Zero
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::kernel::static_filter::{Lifted, StaticFilter};
+    use crate::kernel::Sign;
     use crate::predicates::{CirclePosition, Orientation};
 
     // The references: the adaptive predicates alone, without the filters under test.
@@ -143,6 +125,18 @@ mod tests {
                 .wrapping_add(1442695040888963407);
             (s >> 11) as f64 / (1u64 << 53) as f64
         }
+    }
+
+    fn ccw(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> bool {
+        super::orient(a, b, c) == Sign::Positive
+    }
+
+    fn inside(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
+        super::incircle(a, b, c, d) == Sign::Positive
+    }
+
+    fn cocircular(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
+        super::incircle(a, b, c, d) == Sign::Zero
     }
 
     fn ulp_step(x: f64, k: i64) -> f64 {
@@ -174,11 +168,11 @@ mod tests {
             let f = StaticFilter::for_box(hi(0) - lo(0), hi(1) - lo(1));
             let [a, b, c, d] = pts;
             let exact = orient2d(a, b, c);
-            assert_eq!(f.ccw(a, b, c), exact == Orientation::CounterClockwise);
+            assert_eq!(Orientation::from(f.orient(a, b, c)), exact);
             // The same tests relative to a: orient(a, b, c) is b' × c'.
             let (rb, rc, rd) = (Lifted::new(b, a), Lifted::new(c, a), Lifted::new(d, a));
-            if let Some(ccw) = f.orientation(rb.cross(&rc)) {
-                assert_eq!(ccw, exact == Orientation::CounterClockwise);
+            if let Some(s) = f.orientation(rb.cross(&rc)) {
+                assert_eq!(Orientation::from(s), exact);
             }
             let (a, b) = if exact == Orientation::Clockwise {
                 (b, a)
@@ -191,9 +185,9 @@ mod tests {
                 (rb, rc, rd)
             };
             if exact != Orientation::Collinear {
-                let inside_exact = incircle(a, b, c, d) == CirclePosition::Inside;
-                if let Some(inside) = f.in_circle(&rb, &rc, &rd, rb.cross(&rc)) {
-                    assert_eq!(inside, inside_exact, "{a:?} {b:?} {c:?} {d:?}");
+                if let Some(s) = f.in_circle(&rb, &rc, &rd, rb.cross(&rc)) {
+                    let exact = incircle(a, b, c, d);
+                    assert_eq!(CirclePosition::from(s), exact, "{a:?} {b:?} {c:?} {d:?}");
                 }
             }
         }

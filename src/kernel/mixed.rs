@@ -12,15 +12,15 @@
 
 use std::cell::OnceCell;
 
-use num_bigint::BigInt;
+use num_bigint::{BigInt, Sign as BigSign};
 
+use super::arith::Arith;
 use super::basic::{incircle, orient};
 use super::bounded::{ulp, Bounded};
 use super::circumcenter::{circumcenter_bounded, circumcenter_homogeneous, point_homogeneous};
-use super::exact::integer_sign;
+use super::exact::{integer_sign, ratio_to_f64};
 use super::poly::{incircle_homogeneous, orient_homogeneous};
 use super::Sign;
-use crate::kernel::arith::Arith;
 
 /// The samples of a triangulation together with its Voronoi vertices, addressed by one index
 /// space: `i < n` is sample `i` (the caller's index), `n + v` is Voronoi vertex `v`.
@@ -135,14 +135,7 @@ impl<'a> MixedPoints<'a> {
 /// `(X/W, Y/W)` correctly rounded.
 fn rounded(h: &[BigInt; 3]) -> [f64; 2] {
     let [x, y, w] = h;
-    [x, y].map(|n| {
-        super::exact::ratio_to_f64(
-            n.sign() == num_bigint::Sign::Minus,
-            n.magnitude(),
-            w.magnitude(),
-            0,
-        )
-    })
+    [x, y].map(|n| ratio_to_f64(n.sign() == BigSign::Minus, n.magnitude(), w.magnitude(), 0))
 }
 
 #[cfg(test)]

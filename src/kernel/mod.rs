@@ -65,7 +65,7 @@ mod sign;
 pub(crate) mod static_filter;
 pub(crate) mod stats;
 
-pub(crate) use basic::{cocircular, incircle, orient};
+pub(crate) use basic::{incircle, orient};
 pub use circumcenter::{circumcenter, circumcenter_exact, ExactPoint};
 pub use derived::{circumcenter_in_convex_hull, dot_sign_circumcenters, HullPosition};
 pub(crate) use derived::{compare_circumradius, orient_circumcenter};

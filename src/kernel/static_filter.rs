@@ -32,47 +32,47 @@ impl StaticFilter {
         }
     }
 
-    /// Is `c` strictly left of `a → b`, for points in the box? (`orient == Positive`.)
+    /// [`orient`] for points in the box.
     #[inline(always)]
-    pub fn ccw(&self, a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> bool {
+    pub fn orient(&self, a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
         let det = (a[0] - c[0]) * (b[1] - c[1]) - (a[1] - c[1]) * (b[0] - c[0]);
         if det > self.ccw {
-            true
+            Sign::Positive
         } else if -det > self.ccw {
-            false
+            Sign::Negative
         } else {
-            orient(a, b, c) == Sign::Positive
+            orient(a, b, c)
         }
     }
 
     /// The sign of an orientation determinant `r × a` of [`Lifted`] differences (Shewchuk's
-    /// evaluation of `orient2d(r, a, origin)`), if the bound decides it: `Some(true)` for
+    /// evaluation of `orient2d(r, a, origin)`), if the bound decides it: `Positive` for
     /// counterclockwise `origin, r, a`.
     #[inline(always)]
-    pub fn orientation(&self, cross: f64) -> Option<bool> {
+    pub fn orientation(&self, cross: f64) -> Option<Sign> {
         if cross > self.ccw {
-            Some(true)
+            Some(Sign::Positive)
         } else if -cross > self.ccw {
-            Some(false)
+            Some(Sign::Negative)
         } else {
             None
         }
     }
 
-    /// Is `b` inside the circle through the counterclockwise `origin, r, a`, if the bound
-    /// decides it? All three are [`Lifted`] differences to the origin and `cross_ra = r × a`.
+    /// The in-circle sign of `b` and the circle through the counterclockwise `origin, r, a`
+    /// (`Positive`: inside), if the bound decides it. All three are [`Lifted`] differences to the origin and `cross_ra = r × a`.
     ///
     /// This is Shewchuk's evaluation of the in-circle determinant with the origin as the
     /// fourth point: `incircle(origin, r, a, b) = −det[r; a; b]`, the rows lifted (a cyclic
     /// shift of the four rows flips the sign), evaluated in his order, so his bound holds.
     #[inline(always)]
-    pub fn in_circle(&self, r: &Lifted, a: &Lifted, b: &Lifted, cross_ra: f64) -> Option<bool> {
+    pub fn in_circle(&self, r: &Lifted, a: &Lifted, b: &Lifted, cross_ra: f64) -> Option<Sign> {
         let det =
             r.lift * (a.x * b.y - b.x * a.y) + a.lift * (b.x * r.y - r.x * b.y) + b.lift * cross_ra;
         if det > self.incircle {
-            Some(false)
+            Some(Sign::Negative)
         } else if -det > self.incircle {
-            Some(true)
+            Some(Sign::Positive)
         } else {
             None
         }

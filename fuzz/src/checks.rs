@@ -13,8 +13,9 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use wdm_crust::delaunay::NO_TWIN;
-use wdm_crust::predicates::{orient2d, CirclePosition, Orientation};
-use wdm_crust::predicates::{ExactPoint, HullPosition, Sign};
+use wdm_crust::predicates::{
+    orient2d, CirclePosition, ExactPoint, HullPosition, Orientation, Sign,
+};
 use wdm_crust::reconstruct::{Curve, Label};
 use wdm_crust::voronoi::{EdgeEnd, Voronoi};
 use wdm_crust::{Error, Reconstruction, Triangulation};

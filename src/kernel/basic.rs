@@ -104,7 +104,6 @@ fn exact_incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Sign {
 mod tests {
     use super::*;
     use crate::kernel::static_filter::{Lifted, StaticFilter};
-    use crate::kernel::Sign;
     use crate::predicates::{CirclePosition, Orientation};
 
     // The references: the adaptive predicates alone, without the filters under test.
@@ -127,16 +126,14 @@ mod tests {
         }
     }
 
-    fn ccw(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> bool {
-        super::orient(a, b, c) == Sign::Positive
+    /// The filtered predicates under test agree with the references.
+    fn check_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) {
+        assert_eq!(Orientation::from(super::orient(a, b, c)), orient2d(a, b, c));
     }
 
-    fn inside(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
-        super::incircle(a, b, c, d) == Sign::Positive
-    }
-
-    fn cocircular(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
-        super::incircle(a, b, c, d) == Sign::Zero
+    fn check_incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) {
+        let got = CirclePosition::from(super::incircle(a, b, c, d));
+        assert_eq!(got, incircle(a, b, c, d), "{a:?} {b:?} {c:?} {d:?}");
     }
 
     fn ulp_step(x: f64, k: i64) -> f64 {
@@ -239,24 +236,13 @@ mod tests {
                 ulp_step(a[0] + t * (b[0] - a[0]), (next() * 9.0) as i64 - 4),
                 ulp_step(a[1] + t * (b[1] - a[1]), (next() * 9.0) as i64 - 4),
             ];
-            assert_eq!(
-                ccw(a, b, c),
-                orient2d(a, b, c) == Orientation::CounterClockwise
-            );
+            check_orient(a, b, c);
             // Nearly cocircular: four points on the unit circle, nudged.
             let ang = |u: f64| [u.cos(), u.sin()];
             let (u, v, w) = (next(), next() + 2.0, next() + 4.0);
             let d = ang(next() * 6.0);
             let d = [ulp_step(d[0], (next() * 5.0) as i64 - 2), d[1]];
-            let (pa, pb, pc) = (ang(u), ang(v), ang(w));
-            assert_eq!(
-                inside(pa, pb, pc, d),
-                incircle(pa, pb, pc, d) == CirclePosition::Inside
-            );
-            assert_eq!(
-                cocircular(pa, pb, pc, d),
-                incircle(pa, pb, pc, d) == CirclePosition::On
-            );
+            check_incircle(ang(u), ang(v), ang(w), d);
             let grid = |x: f64| (x * 4.0).floor();
             let (pa, pb, pc, d) = (
                 [grid(next()), grid(next())],
@@ -264,20 +250,8 @@ mod tests {
                 [grid(next()), grid(next())],
                 [grid(next()), grid(next())],
             );
-            assert_eq!(
-                ccw(pa, pb, pc),
-                orient2d(pa, pb, pc) == Orientation::CounterClockwise
-            );
-            if ccw(pa, pb, pc) {
-                assert_eq!(
-                    inside(pa, pb, pc, d),
-                    incircle(pa, pb, pc, d) == CirclePosition::Inside
-                );
-                assert_eq!(
-                    cocircular(pa, pb, pc, d),
-                    incircle(pa, pb, pc, d) == CirclePosition::On
-                );
-            }
+            check_orient(pa, pb, pc);
+            check_incircle(pa, pb, pc, d);
         }
     }
 }

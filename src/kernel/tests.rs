@@ -1071,3 +1071,92 @@ fn rescale_brings_the_spread_into_range() {
         assert_eq!(s[1][0] - s[0][0], 1.0);
     }
 }
+
+// ----------------------------------------------------------------------------------------
+// The NN-crust's metric tests and the crust's mixed predicates against rationals.
+
+type RPt = [BigRational; 2];
+
+fn r_orient(a: &RPt, b: &RPt, c: &RPt) -> Sign {
+    exact_sign(&((&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0])))
+}
+
+/// The in-circle determinant by cofactors of the 4 × 4 lifted matrix, translated to `d`.
+fn r_incircle(a: &RPt, b: &RPt, c: &RPt, d: &RPt) -> Sign {
+    let row = |p: &RPt| {
+        let (x, y) = (&p[0] - &d[0], &p[1] - &d[1]);
+        let lift = &x * &x + &y * &y;
+        [x, y, lift]
+    };
+    let [ra, rb, rc] = [row(a), row(b), row(c)];
+    let minor = |p: &[BigRational; 3], q: &[BigRational; 3], i: usize, j: usize| {
+        &p[i] * &q[j] - &p[j] * &q[i]
+    };
+    let det = &ra[0] * minor(&rb, &rc, 1, 2) - &ra[1] * minor(&rb, &rc, 0, 2)
+        + &ra[2] * minor(&rb, &rc, 0, 1);
+    exact_sign(&det)
+}
+
+fn r_dist2(p: &RPt, q: &RPt) -> BigRational {
+    let (dx, dy) = (&q[0] - &p[0], &q[1] - &p[1]);
+    &dx * &dx + &dy * &dy
+}
+
+fn check_metric_and_mixed(pts: [[f64; 2]; 8]) -> Result<(), TestCaseError> {
+    use super::metric::{distance_order, dot_sign};
+    use super::mixed::MixedPoints;
+    let r = lift_rational(pts);
+    let [p, a, b] = [0, 1, 2].map(|i| pts[i]);
+    let want = exact_sign(&(r_dist2(&r[0], &r[1]) - r_dist2(&r[0], &r[2])));
+    prop_assert_eq!(distance_order(p, a, b), want);
+    let dot = (&r[1][0] - &r[0][0]) * (&r[2][0] - &r[0][0])
+        + (&r[1][1] - &r[0][1]) * (&r[2][1] - &r[0][1]);
+    prop_assert_eq!(dot_sign(p, a, b), exact_sign(&dot));
+    // Samples 0..5 and the circumcenters of two triangles of them (indices 5 and 6).
+    let samples = &pts[..5];
+    let tris = [[pts[5], pts[6], pts[7]], [pts[0], pts[1], pts[2]]];
+    let Some(centers) = tris
+        .iter()
+        .map(|t| circumcenter_exact(t[0], t[1], t[2]))
+        .collect::<Option<Vec<_>>>()
+    else {
+        return Ok(());
+    };
+    let mut all: Vec<RPt> = r[..5].to_vec();
+    all.extend(centers.iter().map(|o| [o.x().clone(), o.y().clone()]));
+    let mp = MixedPoints::new(samples, tris.to_vec());
+    let quads = [
+        [0, 1, 5, 6],
+        [5, 6, 2, 3],
+        [0, 5, 1, 6],
+        [6, 0, 5, 4],
+        [1, 2, 3, 5],
+    ];
+    for [i, j, k, l] in quads {
+        let (ri, rj, rk, rl) = (&all[i], &all[j], &all[k], &all[l]);
+        let [i, j, k, l] = [i, j, k, l].map(|x| x as u32);
+        let o = r_orient(ri, rj, rk);
+        prop_assert_eq!(mp.orient(i, j, k), o);
+        match o {
+            Sign::Positive => prop_assert_eq!(mp.incircle(i, j, k, l), r_incircle(ri, rj, rk, rl)),
+            Sign::Negative => prop_assert_eq!(mp.incircle(i, k, j, l), r_incircle(ri, rk, rj, rl)),
+            Sign::Zero => {}
+        }
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// On adversarial input (lattice points on circles, right angles, shared circumcenters)
+    /// and on random input, the metric and mixed predicates give the rational answers.
+    #[test]
+    fn metric_and_mixed_predicates_are_exact(
+        seed in any::<u64>(),
+        random in prop::array::uniform8(prop::array::uniform2(coordinate())),
+    ) {
+        check_metric_and_mixed(adversarial_points(seed))?;
+        check_metric_and_mixed(random)?;
+    }
+}

@@ -1,8 +1,8 @@
 //! How often the derived exact predicates leave their floating-point filter, per workload.
 //!
 //! ```text
-//! cargo run --release --example fallback_rates            # 100 000 points per set
-//! cargo run --release --example fallback_rates -- 1000000
+//! cargo run --release --features predicate-stats --example fallback_rates    # 100 000 points per set
+//! cargo run --release --features predicate-stats --example fallback_rates -- 1000000
 //! ```
 //!
 //! Runs the whole reconstruction (with peeling) on each point set of the benches, then a
@@ -14,7 +14,7 @@
 mod common;
 
 use common::PointSet;
-use wdm_crust::predicates::exact::{fallback_counts, PredicateCounts};
+use wdm_crust::predicates::{fallback_counts, PredicateCounts};
 
 fn main() {
     let n: usize = std::env::args()

@@ -1,8 +1,8 @@
 //! Profiles the derived exact predicates and the pipeline stages that call them.
 //!
 //! ```text
-//! cargo run --release --example predicate_profile                 # 200k points, 3 repetitions
-//! cargo run --release --example predicate_profile -- 20000 1      # n points, repetitions
+//! cargo run --release --features predicate-stats --example predicate_profile            # 200k points, 3 repetitions
+//! cargo run --release --features predicate-stats --example predicate_profile -- 20000 1 # n points, repetitions
 //! valgrind --tool=callgrind target/release/examples/predicate_profile 20000 1
 //! ```
 //!
@@ -15,11 +15,11 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-use wdm_crust::predicates::exact::{
+use wdm_crust::predicates::Orientation;
+use wdm_crust::predicates::{
     circumcenter, circumcenter_in_convex_hull, compare_circumradius, dot_sign_circumcenters,
     fallback_counts, orient2d_circumcenter, reset_fallback_counts, HullPosition, Sign,
 };
-use wdm_crust::predicates::Orientation;
 use wdm_crust::reconstruct::wdm::label_vertices;
 use wdm_crust::{Triangulation, Voronoi};
 use wdm_crust_testkit::Rng;
@@ -217,7 +217,7 @@ fn main() {
         hull_cases.len(),
     );
     let c = fallback_counts();
-    let rate = |c: wdm_crust::predicates::exact::PredicateCounts| {
+    let rate = |c: wdm_crust::predicates::PredicateCounts| {
         let pct = |x: u64| 100.0 * x as f64 / c.calls.max(1) as f64;
         format!(
             "exact {} / {} = {:.4} %, slow {} = {:.4} %",

@@ -17,6 +17,7 @@ pub mod delaunay;
 pub mod error;
 #[cfg(feature = "cli")]
 pub mod io;
+mod kernel;
 pub mod predicates;
 pub mod reconstruct;
 pub mod voronoi;

@@ -15,12 +15,9 @@
 //! [`Triangulation::hull`], which this vertex/edge/ray model does not represent; every cell
 //! iterator is empty and [`Voronoi::collinear_bisectors`] lists the bisected pairs.
 
-use crate::delaunay::{cocircular, next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
-use crate::predicates::exact::{
-    circumcenter_exact, circumcenter_uncounted, count_circumcenter_calls, ExactPoint,
-};
+use crate::delaunay::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
+use crate::kernel::{circumcenter, circumcenter_exact, incircle, ExactPoint, Sign};
 use crate::predicates::{orient2d, Orientation};
-use num_rational::BigRational;
 
 /// The far end of a Voronoi edge.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -153,7 +150,7 @@ impl<'a> Voronoi<'a> {
                 if twin != NO_TWIN && twin as usize > e {
                     let opposite =
                         points[tri.halfedge_origin(prev_in_triangle(twin as usize)) as usize];
-                    if cocircular(a, b, c, opposite) {
+                    if incircle(a, b, c, opposite) == Sign::Zero {
                         cocircular_pairs.push([t as u32, twin / 3]);
                     }
                 }
@@ -190,30 +187,25 @@ impl<'a> Voronoi<'a> {
     /// [`vertex_position`]: Voronoi::vertex_position
     pub fn vertex_positions(&self) -> &[[f64; 2]] {
         self.positions.get_or_init(|| {
-            let positions = (0..self.vertex_count as u32)
+            (0..self.vertex_count as u32)
                 .map(|v| self.compute_position(v))
-                .collect();
-            count_circumcenter_calls(self.vertex_count as u64);
-            positions
+                .collect()
         })
     }
 
     /// Circumcenter of vertex `v`, rounded to f64: within 256 ulps of the exact one, see
-    /// [`circumcenter`](crate::predicates::exact::circumcenter).
+    /// [`crate::predicates::circumcenter`].
     pub fn vertex_position(&self, v: u32) -> [f64; 2] {
         match self.positions.get() {
             Some(positions) => positions[v as usize],
-            None => {
-                count_circumcenter_calls(1);
-                self.compute_position(v)
-            }
+            None => self.compute_position(v),
         }
     }
 
     fn compute_position(&self, v: u32) -> [f64; 2] {
         let [a, b, c] = self.canonical_triangle(v);
         // Delaunay triangles are never collinear; the fallback is unreachable.
-        circumcenter_uncounted(a, b, c).unwrap_or(a)
+        circumcenter(a, b, c).unwrap_or(a)
     }
 
     /// Three sites of the face of `v`, chosen and ordered by their coordinates alone: the
@@ -247,10 +239,7 @@ impl<'a> Voronoi<'a> {
     pub fn vertex_exact(&self, v: u32) -> ExactPoint {
         let [a, b, c] = self.vertex_triangle(v);
         // Delaunay triangles are never collinear, so the circumcenter exists.
-        circumcenter_exact(a, b, c).unwrap_or_else(|| ExactPoint {
-            x: BigRational::from_float(a[0]).unwrap_or_default(),
-            y: BigRational::from_float(a[1]).unwrap_or_default(),
-        })
+        circumcenter_exact(a, b, c).unwrap_or_else(|| ExactPoint::from_f64(a))
     }
 
     /// Three points of the face of `v` (a Delaunay triangle of it): the input the exact

@@ -1,35 +1,22 @@
-//! Property tests of `wdm_crust::predicates::exact` against an independently written rational
-//! reference, on random input and on adversarial input built to hit exact zeros (lattice
-//! points on circles, right angles, shared circumcenters, circumcenters on hull edges), the
-//! same perturbed by one ulp, translated far from the origin and scaled by 2^k over the whole
-//! input envelope.
-
-use std::sync::{RwLock, RwLockReadGuard, RwLockWriteGuard};
+//! Property tests of the circumcenter predicates of `wdm_crust::predicates` against an
+//! independently written rational reference, on random input and on adversarial input built
+//! to hit exact zeros (lattice points on circles, right angles, shared circumcenters,
+//! circumcenters on hull edges), the same perturbed by one ulp, translated far from the
+//! origin and scaled by 2^k over the whole input envelope.
 
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use proptest::prelude::*;
-use wdm_crust::predicates::exact::{
+use wdm_crust::predicates::{
     circumcenter, circumcenter_exact, circumcenter_in_convex_hull, compare_circumradius,
-    dot_sign_circumcenters, fallback_counts, orient2d_circumcenter, FallbackCounts, HullPosition,
-    Sign,
+    dot_sign_circumcenters, orient2d_circumcenter, HullPosition, Sign,
 };
+#[cfg(feature = "predicate-stats")]
+use wdm_crust::predicates::{fallback_counts, FallbackCounts, PredicateCounts};
 use wdm_crust::predicates::{orient2d, Orientation};
 
 type P = [f64; 2];
 type T = [P; 3];
-
-/// Tests that only call predicates share this lock; the test reading the global counters
-/// takes it exclusively so that no other test of this binary adds calls meanwhile.
-static COUNTERS: RwLock<()> = RwLock::new(());
-
-fn shared() -> RwLockReadGuard<'static, ()> {
-    COUNTERS.read().unwrap_or_else(|e| e.into_inner())
-}
-
-fn exclusive() -> RwLockWriteGuard<'static, ()> {
-    COUNTERS.write().unwrap_or_else(|e| e.into_inner())
-}
 
 // ----------------------------------------------------------------------------------------
 // The reference: rational arithmetic, written without the library's formulas.
@@ -540,8 +527,8 @@ fn check(s: &Scene) -> Result<(), TestCaseError> {
     );
 
     let exact = circumcenter_exact(s.t1[0], s.t1[1], s.t1[2]).expect("not collinear");
-    prop_assert_eq!(&exact.x, &o1[0]);
-    prop_assert_eq!(&exact.y, &o1[1]);
+    prop_assert_eq!(exact.x(), &o1[0]);
+    prop_assert_eq!(exact.y(), &o1[1]);
     check_circumcenter(s.t1, &exact.to_f64(), &o1)?;
     check_circumcenter(
         s.t2,
@@ -581,20 +568,17 @@ proptest! {
 
     #[test]
     fn predicates_match_reference_on_adversarial_input(seed in any::<u64>()) {
-        let _guard = shared();
         let scene = adversarial_scene(seed);
         check(&scene)?;
     }
 
     #[test]
     fn predicates_match_reference_far_from_the_origin(seed in any::<u64>()) {
-        let _guard = shared();
         check(&far_scene(seed))?;
     }
 
     #[test]
     fn predicates_match_reference_on_random_input(seed in any::<u64>()) {
-        let _guard = shared();
         check(&random_scene(seed))?;
         check(&wide_scene(seed))?;
     }
@@ -602,7 +586,6 @@ proptest! {
     /// The same triangle pair at every scale of the envelope gives the same answers.
     #[test]
     fn answers_are_scale_invariant(seed in any::<u64>(), fraction in 0.0f64..1.0) {
-        let _guard = shared();
         let s = adversarial_scene(seed);
         // Scale by 2^k with every coordinate staying in the envelope [2^-142, 2^201].
         let exponent = |x: f64| ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
@@ -624,7 +607,6 @@ proptest! {
 /// passes exactly through it; one ulp off, it does not.
 #[test]
 fn right_triangles_on_lattices() {
-    let _guard = shared();
     let mut rng = Rng::new(7);
     for _ in 0..300 {
         let c = [rng.range(-1000, 1000), rng.range(-1000, 1000)];
@@ -661,12 +643,12 @@ fn right_triangles_on_lattices() {
     }
 }
 
+#[cfg(feature = "predicate-stats")]
 /// The fast filter decides a good share of the adversarial and far-from-the-origin input on
 /// its own, and every answer is the reference's: the fast stage is exercised on hard input,
-/// not bypassed (read from the global counters, with this binary's other tests excluded).
+/// not bypassed (read from this thread's counters: the `predicate-stats` feature).
 #[test]
 fn fast_filter_decides_hard_input_correctly() {
-    let _guard = exclusive();
     for scene in [adversarial_scene as fn(u64) -> Scene, far_scene] {
         let before = fallback_counts();
         for seed in 0..1000u64 {
@@ -691,14 +673,17 @@ fn fast_filter_decides_hard_input_correctly() {
     }
 }
 
-fn rate(c: wdm_crust::predicates::exact::PredicateCounts) -> f64 {
+#[cfg(feature = "predicate-stats")]
+fn rate(c: PredicateCounts) -> f64 {
     c.exact as f64 / c.calls.max(1) as f64
 }
 
-fn slow_rate(c: wdm_crust::predicates::exact::PredicateCounts) -> f64 {
+#[cfg(feature = "predicate-stats")]
+fn slow_rate(c: PredicateCounts) -> f64 {
     c.slow as f64 / c.calls.max(1) as f64
 }
 
+#[cfg(feature = "predicate-stats")]
 fn run_scenes(scene: fn(u64) -> Scene, n: u64) -> FallbackCounts {
     let before = fallback_counts();
     for seed in 0..n {
@@ -712,12 +697,11 @@ fn run_scenes(scene: fn(u64) -> Scene, n: u64) -> FallbackCounts {
     fallback_counts().since(&before)
 }
 
+#[cfg(feature = "predicate-stats")]
 /// The fast filter decides ordinary input alone, and the adversarial input really exercises
-/// the exact fallback (read from the global counters, with this binary's other tests
-/// excluded).
+/// the exact fallback (read from this thread's counters: the `predicate-stats` feature).
 #[test]
 fn fallback_rates() {
-    let _guard = exclusive();
     let random = run_scenes(random_scene, 2000);
     let wide = run_scenes(wide_scene, 2000);
     let adversarial = run_scenes(adversarial_scene, 2000);
@@ -738,7 +722,7 @@ fn fallback_rates() {
         .chain(all(&wide))
         .chain(all(&adversarial))
     {
-        assert_eq!(c.calls, 2000, "another test ran predicates concurrently");
+        assert_eq!(c.calls, 2000);
         assert!(c.exact <= c.slow);
     }
     // Ordinary input: the fast filter alone decides the predicates (measured: no call left

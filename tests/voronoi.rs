@@ -3,7 +3,7 @@
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use proptest::prelude::*;
-use wdm_crust::predicates::exact::{circumcenter_exact, ExactPoint};
+use wdm_crust::predicates::{circumcenter_exact, ExactPoint};
 use wdm_crust::predicates::{in_circumcircle, CirclePosition};
 use wdm_crust::triangulate;
 use wdm_crust::voronoi::{EdgeEnd, Voronoi};
@@ -13,8 +13,8 @@ fn rational(x: f64) -> BigRational {
 }
 
 fn squared_distance(c: &ExactPoint, p: [f64; 2]) -> BigRational {
-    let dx = &c.x - rational(p[0]);
-    let dy = &c.y - rational(p[1]);
+    let dx = c.x() - rational(p[0]);
+    let dy = c.y() - rational(p[1]);
     &dx * &dx + &dy * &dy
 }
 
@@ -102,7 +102,7 @@ fn check_dual(vor: &Voronoi<'_>) {
     assert_eq!(one_by_one, vor.vertex_positions());
     for (v, position) in one_by_one.iter().enumerate() {
         let exact = vor.vertex_exact(v as u32);
-        for (k, x) in [&exact.x, &exact.y].into_iter().enumerate() {
+        for (k, x) in [exact.x(), exact.y()].into_iter().enumerate() {
             let error = num_traits::Signed::abs(&(rational(position[k]) - x));
             let scale = rational(position[0].abs().max(position[1].abs()).max(1e-300));
             assert!(error <= scale / BigRational::from_integer(BigInt::from(1u64 << 40)));
@@ -160,13 +160,9 @@ fn lattice_points_on_a_circle_make_one_vertex() {
     let vor = tri.voronoi();
     assert_eq!(vor.vertex_count(), 1);
     assert_eq!(vor.vertex_position(0), [3.0, -7.0]);
-    assert_eq!(
-        vor.vertex_exact(0),
-        ExactPoint {
-            x: BigRational::from_integer(BigInt::from(3)),
-            y: BigRational::from_integer(BigInt::from(-7))
-        }
-    );
+    let exact = vor.vertex_exact(0);
+    assert_eq!(exact.x(), &BigRational::from_integer(BigInt::from(3)));
+    assert_eq!(exact.y(), &BigRational::from_integer(BigInt::from(-7)));
     assert_eq!(vor.degree(0), pts.len());
     assert_eq!(vor.rays().count(), pts.len());
     assert_eq!(vor.finite_edges().count(), 0);
@@ -216,7 +212,7 @@ fn brute_force_vertices(pts: &[[f64; 2]]) -> Vec<(BigRational, BigRational)> {
                 };
                 let () = pos;
                 let c = circumcenter_exact(pts[i], pts[j], pts[k]).unwrap();
-                out.push((c.x, c.y));
+                out.push((c.x().clone(), c.y().clone()));
             }
         }
     }
@@ -237,7 +233,7 @@ proptest! {
         let vor = tri.voronoi();
         check_dual(&vor);
         let mut ours: Vec<(BigRational, BigRational)> = (0..vor.vertex_count() as u32)
-            .map(|v| { let c = vor.vertex_exact(v); (c.x, c.y) })
+            .map(|v| { let c = vor.vertex_exact(v); (c.x().clone(), c.y().clone()) })
             .collect();
         ours.sort();
         prop_assert_eq!(ours.len(), vor.vertex_count(), "a vertex appears twice");
@@ -251,7 +247,7 @@ proptest! {
         let vor = tri.voronoi();
         check_dual(&vor);
         let mut ours: Vec<(BigRational, BigRational)> = (0..vor.vertex_count() as u32)
-            .map(|v| { let c = vor.vertex_exact(v); (c.x, c.y) })
+            .map(|v| { let c = vor.vertex_exact(v); (c.x().clone(), c.y().clone()) })
             .collect();
         ours.sort();
         prop_assert_eq!(ours, brute_force_vertices(&pts));

@@ -16,14 +16,15 @@
 //! change under a rotation, so only the extreme points differ. Each subproblem reports its
 //! extreme points in both orders, `(x, y)` and `(y, −x)`, with a ghost at each.
 //!
-//! Every decision is an exact predicate (filtered, [`filter`](super::filter)), and every tie
+//! Every decision is an exact predicate (filtered, `crate::kernel::basic`), and every tie
 //! is broken by coordinates, never by input position: a permutation of the input gives the
 //! same triangles. The hull starts at the lexicographically smallest point.
 
-use super::filter::{ccw, inside, Lifted, StaticFilter};
 use super::mesh::{prev, Mesh, GHOST};
 use super::triangulation::{Triangulation, NO_TWIN};
 use super::zorder::{lexicographic, order, Grid};
+use crate::kernel::static_filter::{Lifted, StaticFilter};
+use crate::kernel::{incircle, orient, Sign};
 use crate::predicates::{orient2d, Orientation};
 
 /// Triangulates validated points (finite, inside the exact envelope).
@@ -182,7 +183,7 @@ impl DivideConquer<'_> {
         let mut cross = rel_r.cross(&rel);
         let mut valid = false;
         if let Some(g) = ghost {
-            valid = f.orientation(cross).unwrap_or_else(|| ccw(p, pl, pr));
+            valid = f.orientation(cross).unwrap_or_else(|| orient(p, pl, pr)) == Sign::Positive;
             if valid {
                 let mut flipped = false;
                 loop {
@@ -194,7 +195,8 @@ impl DivideConquer<'_> {
                     let rel_x = Lifted::new(px, pl);
                     let delete = f
                         .in_circle(rel_r, &rel, &rel_x, cross)
-                        .unwrap_or_else(|| inside(pl, pr, p, px));
+                        .unwrap_or_else(|| incircle(pl, pr, p, px))
+                        == Sign::Positive;
                     if !delete {
                         break;
                     }
@@ -207,7 +209,8 @@ impl DivideConquer<'_> {
                     flipped = true;
                 }
                 if flipped {
-                    valid = f.orientation(cross).unwrap_or_else(|| ccw(p, pl, pr));
+                    valid =
+                        f.orientation(cross).unwrap_or_else(|| orient(p, pl, pr)) == Sign::Positive;
                 }
             }
         }
@@ -449,14 +452,14 @@ impl DivideConquer<'_> {
         loop {
             let (pl, pr) = (self.p(l), self.p(r));
             if let Some(g) = gl {
-                if f.ccw(pl, self.p(self.mesh.tri[g as usize][1]), pr) {
+                if f.orient(pl, self.p(self.mesh.tri[g as usize][1]), pr) == Sign::Positive {
                     let g = self.mesh.ring_prev(g);
                     (gl, l) = (Some(g), self.mesh.tri[g as usize][0]);
                     continue;
                 }
             }
             if let Some(g) = gr {
-                if f.ccw(pl, self.p(self.mesh.tri[g as usize][0]), pr) {
+                if f.orient(pl, self.p(self.mesh.tri[g as usize][0]), pr) == Sign::Positive {
                     let g = self.mesh.ring_next(g);
                     (gr, r) = (Some(g), self.mesh.tri[g as usize][1]);
                     continue;
@@ -493,7 +496,8 @@ impl DivideConquer<'_> {
             let take_right = !l_valid
                 || (r_valid
                     && f.in_circle(&rel_r, &rel_lc, &rel_rc, cross_l)
-                        .unwrap_or_else(|| inside(pl, pr, plc, prc)));
+                        .unwrap_or_else(|| incircle(pl, pr, plc, prc))
+                        == Sign::Positive);
             if let (true, Some(b_ghost)) = (take_right, b) {
                 let next;
                 (base, next) = self.mesh.take_right(b_ghost, base, l);

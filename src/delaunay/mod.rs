@@ -6,13 +6,11 @@
 //! place; that is all later stages see.
 
 mod divide_conquer;
-mod filter;
 mod mesh;
 mod triangulation;
 mod validate;
 mod zorder;
 
-pub(crate) use filter::cocircular;
 pub use triangulation::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
 pub use validate::ValidationError;
 

@@ -1,12 +1,45 @@
-//! Exact geometric predicates.
+//! Exact geometric predicates: the public face of the crate's exact-arithmetic kernel.
 //!
-//! [`orient2d`] and [`incircle`] are Shewchuk's adaptive-precision predicates (through the
-//! `robust` crate): a fast floating-point evaluation with a proven error bound, refined only
-//! when the bound cannot decide. Their answers are named enums, never a raw `f64` whose sign
-//! has to be remembered. The [`exact`] module holds the predicates on constructed points
-//! (circumcenters) that the water-flow labeling needs.
+//! Every answer is the one exact arithmetic on the `f64` inputs gives: a floating-point
+//! filter with a proven error bound decides almost every call, and exact arithmetic the
+//! rest. Answers are signs or named enums, never a raw `f64` whose sign has to be
+//! remembered:
+//!
+//! * [`orient2d`] → [`Orientation`] and [`incircle`] → [`CirclePosition`] (Shewchuk's
+//!   sign convention: counterclockwise / inside is the positive determinant; both enums
+//!   convert from [`Sign`] with `From`);
+//! * on circumcenters of triangles with `f64` vertices, which the water-flow labeling
+//!   decides on: [`orient2d_circumcenter`] → [`Orientation`], [`dot_sign_circumcenters`] →
+//!   [`Sign`], [`compare_circumradius`] → [`Ordering`], [`circumcenter_in_convex_hull`] →
+//!   [`HullPosition`]; and the constructions [`circumcenter`] (`f64`, error proven per call)
+//!   and [`circumcenter_exact`] (the crate's one exact accessor, an [`ExactPoint`]).
+//!
+//! With the `predicate-stats` feature, `fallback_counts` reports per thread how often the
+//! circumcenter predicates left their fast filter.
+//!
+//! ```
+//! use std::cmp::Ordering;
+//! use wdm_crust::predicates::{circumcenter, compare_circumradius};
+//!
+//! // A right triangle: the circumcenter is the midpoint of the hypotenuse.
+//! assert_eq!(circumcenter([0.0, 0.0], [4.0, 0.0], [0.0, 2.0]), Some([2.0, 1.0]));
+//! // Congruent triangles (one translated and reflected) have equal circumradii.
+//! let t1 = [[0.0, 0.0], [3.0, 0.0], [1.0, 2.0]];
+//! let t2 = [[10.0, 5.0], [10.0, 8.0], [12.0, 6.0]];
+//! assert_eq!(compare_circumradius(t1, t2), Ordering::Equal);
+//! ```
 
-pub mod exact;
+use std::cmp::Ordering;
+
+use crate::kernel;
+#[cfg(feature = "predicate-stats")]
+pub use crate::kernel::stats::{
+    fallback_counts, reset_fallback_counts, FallbackCounts, PredicateCounts,
+};
+pub use crate::kernel::{
+    circumcenter, circumcenter_exact, circumcenter_in_convex_hull, dot_sign_circumcenters,
+    ExactPoint, HullPosition, Sign,
+};
 
 /// Turn direction of the point triple `a → b → c`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -30,9 +63,28 @@ pub enum CirclePosition {
     Outside,
 }
 
-#[inline]
-fn coord(p: [f64; 2]) -> robust::Coord<f64> {
-    robust::Coord { x: p[0], y: p[1] }
+impl From<Sign> for Orientation {
+    /// `Positive` (a positive determinant) is counterclockwise.
+    #[inline]
+    fn from(s: Sign) -> Orientation {
+        match s {
+            Sign::Positive => Orientation::CounterClockwise,
+            Sign::Negative => Orientation::Clockwise,
+            Sign::Zero => Orientation::Collinear,
+        }
+    }
+}
+
+impl From<Sign> for CirclePosition {
+    /// `Positive` (a positive determinant, for a counterclockwise circle) is inside.
+    #[inline]
+    fn from(s: Sign) -> CirclePosition {
+        match s {
+            Sign::Positive => CirclePosition::Inside,
+            Sign::Negative => CirclePosition::Outside,
+            Sign::Zero => CirclePosition::On,
+        }
+    }
 }
 
 /// Exact orientation of `a → b → c`.
@@ -44,14 +96,7 @@ fn coord(p: [f64; 2]) -> robust::Coord<f64> {
 /// ```
 #[inline]
 pub fn orient2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Orientation {
-    let det = robust::orient2d(coord(a), coord(b), coord(c));
-    if det > 0.0 {
-        Orientation::CounterClockwise
-    } else if det < 0.0 {
-        Orientation::Clockwise
-    } else {
-        Orientation::Collinear
-    }
+    kernel::orient(a, b, c).into()
 }
 
 /// Exact position of `d` relative to the circle through `a`, `b`, `c`, which must be given
@@ -70,14 +115,7 @@ pub fn orient2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Orientation {
 /// ```
 #[inline]
 pub fn incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> CirclePosition {
-    let det = robust::incircle(coord(a), coord(b), coord(c), coord(d));
-    if det > 0.0 {
-        CirclePosition::Inside
-    } else if det < 0.0 {
-        CirclePosition::Outside
-    } else {
-        CirclePosition::On
-    }
+    kernel::incircle(a, b, c, d).into()
 }
 
 /// Exact position of `d` relative to the circle through `a`, `b`, `c` in any orientation.
@@ -94,6 +132,41 @@ pub fn in_circumcircle(
         Orientation::Clockwise => Some(incircle(a, c, b, d)),
         Orientation::Collinear => None,
     }
+}
+
+/// Exact orientation of `(a, b, O)` where `O` is the circumcenter of `tri`: on which side of
+/// the directed line `a → b` the circumcenter lies.
+///
+/// `tri` may be given in either orientation. If `tri` is collinear (no circumcenter) the
+/// answer is unspecified. If `a == b` the answer is [`Orientation::Collinear`].
+///
+/// ```
+/// use wdm_crust::predicates::{orient2d_circumcenter, Orientation};
+/// // Right angle at (0, 0): the circumcenter (1, 1) is the midpoint of the hypotenuse.
+/// let tri = [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]];
+/// assert_eq!(orient2d_circumcenter([2.0, 0.0], [0.0, 2.0], tri), Orientation::Collinear);
+/// assert_eq!(orient2d_circumcenter([0.0, 0.0], [2.0, 0.0], tri), Orientation::CounterClockwise);
+/// ```
+#[inline]
+pub fn orient2d_circumcenter(a: [f64; 2], b: [f64; 2], tri: [[f64; 2]; 3]) -> Orientation {
+    kernel::orient_circumcenter(a, b, tri).into()
+}
+
+/// Exact comparison of the circumradii of `t1` and `t2` (`Greater` iff `t1`'s is larger).
+///
+/// Triangles may be given in either orientation; if either is collinear the answer is
+/// unspecified.
+///
+/// ```
+/// use std::cmp::Ordering;
+/// use wdm_crust::predicates::compare_circumradius;
+/// let small = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+/// let large = [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]];
+/// assert_eq!(compare_circumradius(small, large), Ordering::Less);
+/// ```
+#[inline]
+pub fn compare_circumradius(t1: [[f64; 2]; 3], t2: [[f64; 2]; 3]) -> Ordering {
+    kernel::compare_circumradius(t1, t2).into()
 }
 
 #[cfg(test)]

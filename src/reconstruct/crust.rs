@@ -37,7 +37,7 @@
 //! orientation and a dozen incircle tests per vertex on practical inputs, so near-linear work
 //! after the `O(n log n)` sort (10⁵ samples on a noisy curve: about 1–2 s). Every decision is
 //! exact: orientation and incircle tests on points that are samples or exact rational
-//! circumcenters (module `interval`), filtered by outward-rounded interval arithmetic (a
+//! circumcenters (the kernel's mixed predicates), filtered by running error bounds (a
 //! proven enclosure, see there) and otherwise decided by the sign of an integer determinant in
 //! homogeneous coordinates. Rounded circumcenters are never used as points. The result is a
 //! Delaunay triangulation of `S ∪ V` exactly, whatever the degeneracies; a sample–sample edge
@@ -45,13 +45,12 @@
 //! cocircular with it (exact incircle `≠ 0`), which is the Delaunay-graph condition above.
 
 mod insertion;
-pub(crate) mod interval;
 
 use crate::delaunay::Triangulation;
-use crate::predicates::CirclePosition;
+use crate::kernel::Sign;
 
 use self::insertion::Dt;
-use self::interval::MixedPoints;
+use crate::kernel::mixed::MixedPoints;
 
 /// Crust edges of the distinct points of `tri`, `[i, j]` with `i < j`, sorted.
 ///
@@ -96,7 +95,7 @@ pub fn crust_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
     dt.for_each_sample_edge(|a, b, c, across| {
         let strict = match across {
             None => true,
-            Some(d) => points.incircle(a, b, c, d) != CirclePosition::On,
+            Some(d) => points.incircle(a, b, c, d) != Sign::Zero,
         };
         if strict {
             edges.push([a.min(b), a.max(b)]);

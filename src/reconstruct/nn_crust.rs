@@ -14,8 +14,8 @@
 //!
 //! # Exactness and determinism
 //!
-//! Both tests are polynomials in the input coordinates, evaluated by outward-rounded interval
-//! arithmetic and, when the interval contains zero, exactly in [`BigRational`]:
+//! Both tests are polynomials in the input coordinates, decided exactly by the kernel
+//! (a floating-point filter with a proven bound, then exact arithmetic):
 //! * `|p − a|² − |p − b|² = (a − b)·((a − p) + (b − p))` (degree 2) compares two distances;
 //! * `(s − p)·(q − p)` (degree 2) is the half-plane test.
 //!
@@ -24,12 +24,11 @@
 
 use std::cmp::Ordering;
 
-use num_rational::BigRational;
-
 use crate::delaunay::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
 use crate::predicates::{incircle, CirclePosition};
 
-use super::crust::interval::{rational, rational_sign, Iv};
+use crate::kernel::metric::{distance_order, dot_sign};
+use crate::kernel::Sign;
 
 /// NN-crust edges of the distinct points of `tri`, `[i, j]` with `i < j`, sorted.
 ///
@@ -76,7 +75,7 @@ pub fn nn_crust_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
             &mut around
                 .iter()
                 .copied()
-                .filter(|&s| dot_sign(pp, points[s as usize], pq) == Ordering::Less),
+                .filter(|&s| dot_sign(pp, points[s as usize], pq) == Sign::Negative),
         );
         let p = p as u32;
         edges.push([p.min(q), p.max(q)]);
@@ -138,48 +137,21 @@ fn delaunay_graph(tri: &Triangulation) -> Adjacency {
 /// Orders `a` before `b` if it is strictly closer to `p`, or equally close and smaller in
 /// `(x, y)`; exact.
 fn closer(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Ordering {
-    distance_order(p, a, b).then_with(|| {
+    Ordering::from(distance_order(p, a, b)).then_with(|| {
         a[0].partial_cmp(&b[0])
             .unwrap_or(Ordering::Equal)
             .then(a[1].partial_cmp(&b[1]).unwrap_or(Ordering::Equal))
     })
 }
 
-/// The exact order of `|p − a|` and `|p − b|`.
-fn distance_order(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Ordering {
-    let i = Iv::point;
-    let term = |k: usize| {
-        let diff = i(a[k]).sub(i(b[k]));
-        let sum = i(a[k]).sub(i(p[k])).add(i(b[k]).sub(i(p[k])));
-        diff.mul(sum)
-    };
-    term(0).add(term(1)).sign().unwrap_or_else(|| {
-        let r = |k: usize| {
-            let (a, b, p) = (rational(a[k]), rational(b[k]), rational(p[k]));
-            (&a - &b) * ((&a - &p) + (&b - &p))
-        };
-        let value: BigRational = r(0) + r(1);
-        rational_sign(&value)
-    })
-}
-
-/// The exact sign of `(s − p)·(q − p)`.
-fn dot_sign(p: [f64; 2], s: [f64; 2], q: [f64; 2]) -> Ordering {
-    let i = Iv::point;
-    let term = |k: usize| i(s[k]).sub(i(p[k])).mul(i(q[k]).sub(i(p[k])));
-    term(0).add(term(1)).sign().unwrap_or_else(|| {
-        let r = |k: usize| {
-            let (s, q, p) = (rational(s[k]), rational(q[k]), rational(p[k]));
-            (&s - &p) * (&q - &p)
-        };
-        let value: BigRational = r(0) + r(1);
-        rational_sign(&value)
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_rational::BigRational;
+
+    fn rational(x: f64) -> BigRational {
+        BigRational::from_float(x).unwrap_or_default()
+    }
     use crate::triangulate;
 
     fn nn_crust_of(points: &[[f64; 2]]) -> Vec<[u32; 2]> {
@@ -312,17 +284,14 @@ mod tests {
             );
             &dx * &dx + &dy * &dy
         };
-        assert_eq!(distance_order(p, a, b), exact(a).cmp(&exact(b)));
-        assert_eq!(distance_order(p, a, a), Ordering::Equal);
+        assert_eq!(
+            Ordering::from(distance_order(p, a, b)),
+            exact(a).cmp(&exact(b))
+        );
+        assert_eq!(distance_order(p, a, a), Sign::Zero);
         // A right angle exactly: not a half neighbour.
-        assert_eq!(
-            dot_sign([0.0, 0.0], [0.0, 0.3], [0.7, 0.0]),
-            Ordering::Equal
-        );
-        assert_eq!(
-            dot_sign([0.1, 0.1], [0.1, 0.4], [0.7, 0.1]),
-            Ordering::Equal
-        );
+        assert_eq!(dot_sign([0.0, 0.0], [0.0, 0.3], [0.7, 0.0]), Sign::Zero);
+        assert_eq!(dot_sign([0.1, 0.1], [0.1, 0.4], [0.7, 0.1]), Sign::Zero);
     }
 
     /// Brute-force exact reference: the strict Delaunay graph from the interval of circle

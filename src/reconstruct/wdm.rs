@@ -9,7 +9,7 @@
 
 use std::cmp::Ordering;
 
-use crate::predicates::exact::{
+use crate::predicates::{
     circumcenter_in_convex_hull, compare_circumradius, dot_sign_circumcenters, HullPosition, Sign,
 };
 use crate::voronoi::{EdgeEnd, Voronoi};

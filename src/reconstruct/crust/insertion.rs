@@ -14,9 +14,9 @@
 //! cavity is star-shaped from `w`, every new triangle has an empty open circumdisk) applies.
 
 use crate::delaunay::{Triangulation, NO_TWIN};
-use crate::predicates::{CirclePosition, Orientation};
+use crate::kernel::Sign;
 
-use super::interval::MixedPoints;
+use crate::kernel::mixed::MixedPoints;
 
 /// The vertex at infinity of ghost triangles.
 const GHOST: u32 = u32::MAX;
@@ -118,15 +118,15 @@ impl<'p, 'a> Dt<'p, 'a> {
     fn conflicts(&self, t: u32, w: u32) -> bool {
         let [a, b, c] = self.v[t as usize];
         if c != GHOST {
-            return self.pts.incircle(a, b, c, w) == CirclePosition::Inside;
+            return self.pts.incircle(a, b, c, w) == Sign::Positive;
         }
         match self.pts.orient(a, b, w) {
-            Orientation::CounterClockwise => true,
-            Orientation::Clockwise => false,
-            Orientation::Collinear => {
+            Sign::Positive => true,
+            Sign::Negative => false,
+            Sign::Zero => {
                 let solid = self.nb[t as usize][2];
                 let [p, q, r] = self.v[solid as usize];
-                self.pts.incircle(p, q, r, w) == CirclePosition::Inside
+                self.pts.incircle(p, q, r, w) == Sign::Positive
             }
         }
     }
@@ -159,7 +159,7 @@ impl<'p, 'a> Dt<'p, 'a> {
                 }
                 let corners = self.v[t as usize];
                 let (a, b) = (corners[(k + 1) % 3], corners[(k + 2) % 3]);
-                if self.pts.orient(a, b, w) == Orientation::Clockwise {
+                if self.pts.orient(a, b, w) == Sign::Negative {
                     came_from = t;
                     t = next;
                     continue 'walk;

@@ -10,15 +10,7 @@
 //! leaves of every expression: the floating-point filter bounds its error in terms of them.
 
 use super::arith::Arith;
-
-/// The circumcenter of a triangle in homogeneous form relative to its first vertex `t0`:
-/// `O = t0 + (ux, uy) / d`.
-pub(super) struct Circ<T> {
-    /// `2 (bx·cy − by·cx)` with `b = t1 − t0`, `c = t2 − t0`: positive iff the triangle is CCW.
-    pub(super) d: T,
-    pub(super) ux: T,
-    pub(super) uy: T,
-}
+pub(super) use super::circumcenter::{circ, circ_half, Circ};
 
 /// A point in the number type `T`.
 pub(super) type Pt<T> = [T; 2];
@@ -30,35 +22,13 @@ pub(super) fn diff<T: Arith>(p: &Pt<T>, q: &Pt<T>) -> Pt<T> {
 }
 
 #[inline(always)]
-fn norm2<T: Arith>(v: &Pt<T>) -> T {
+pub(super) fn norm2<T: Arith>(v: &Pt<T>) -> T {
     v[0].mul(&v[0]).add(&v[1].mul(&v[1]))
 }
 
 #[inline(always)]
-fn cross<T: Arith>(v: &Pt<T>, w: &Pt<T>) -> T {
+pub(super) fn cross<T: Arith>(v: &Pt<T>, w: &Pt<T>) -> T {
     v[0].mul(&w[1]).sub(&v[1].mul(&w[0]))
-}
-
-/// `(bx·cy − by·cx, ux, uy)`: the circumcenter relative to `t0` is `u / (2·cross)`.
-#[inline(always)]
-fn circ_half<T: Arith>(t: &[Pt<T>; 3]) -> (T, T, T) {
-    let b = diff(&t[1], &t[0]);
-    let c = diff(&t[2], &t[0]);
-    let b2 = norm2(&b);
-    let c2 = norm2(&c);
-    let ux = c[1].mul(&b2).sub(&b[1].mul(&c2));
-    let uy = b[0].mul(&c2).sub(&c[0].mul(&b2));
-    (cross(&b, &c), ux, uy)
-}
-
-#[inline(always)]
-pub(super) fn circ<T: Arith>(t: &[Pt<T>; 3]) -> Circ<T> {
-    let (x, ux, uy) = circ_half(t);
-    Circ {
-        d: x.twice(),
-        ux,
-        uy,
-    }
 }
 
 /// `d·(O − p)` for the circumcenter `O = t0 + u/d` described by `c`.
@@ -129,4 +99,62 @@ pub(super) fn radius_terms<T: Arith>(t1: &[Pt<T>; 3], t2: &[Pt<T>; 3]) -> [T; 1]
     let (n1, xx1) = radius_parts(t1);
     let (n2, xx2) = radius_parts(t2);
     [n1.mul(&xx2).sub(&n2.mul(&xx1))]
+}
+
+// ---------------------------------------------------------------------------------------
+// Predicates on points in homogeneous coordinates `(X, Y, W)`, `W > 0`, the point
+// `(X/W, Y/W)`: input samples (`W = 1`) and circumcenters alike (the crust's mixed points).
+
+/// `(P, Q, R)` with `(P, Q) / R = p − o` and `R = W_p·W_o > 0`. With `W = 1` (the bounded
+/// stage's points) this is the plain difference: multiplying by an exact 1 is exact.
+#[inline(always)]
+fn translated<T: Arith>(p: &[T; 3], o: &[T; 3]) -> [T; 3] {
+    [
+        p[0].mul(&o[2]).sub(&o[0].mul(&p[2])),
+        p[1].mul(&o[2]).sub(&o[1].mul(&p[2])),
+        p[2].mul(&o[2]),
+    ]
+}
+
+/// `(b − a) × (c − a)` times the positive `R_b·R_c`: the orientation of `a → b → c`.
+#[inline(always)]
+pub(super) fn orient_homogeneous<T: Arith>(a: &[T; 3], b: &[T; 3], c: &[T; 3]) -> T {
+    let [pb, qb, _] = translated(b, a);
+    let [pc, qc, _] = translated(c, a);
+    pb.mul(&qc).sub(&qb.mul(&pc))
+}
+
+/// The in-circle determinant of `a, b, c, d` translated to `d`, each row `(x, y, x² + y²)`
+/// scaled by the positive `R²`: positive iff `d` is inside the circle through the
+/// counterclockwise `a, b, c`.
+#[inline(always)]
+pub(super) fn incircle_homogeneous<T: Arith>(a: &[T; 3], b: &[T; 3], c: &[T; 3], d: &[T; 3]) -> T {
+    // (x, y)/r is the point minus d: the row (x/r, y/r, (x² + y²)/r²) times r².
+    let row = |p: &[T; 3]| {
+        let [x, y, r] = translated(p, d);
+        ([x.mul(&r), y.mul(&r)], norm2(&[x, y]))
+    };
+    let [(a, la), (b, lb), (c, lc)] = [row(a), row(b), row(c)];
+    la.mul(&cross(&b, &c))
+        .add(&lb.mul(&cross(&c, &a)))
+        .add(&lc.mul(&cross(&a, &b)))
+}
+
+// ---------------------------------------------------------------------------------------
+// Metric comparisons of input points (the NN-crust).
+
+/// `|p − a|² − |p − b|² = (a − b)·((a − p) + (b − p))` (degree 2): the sign of the
+/// comparison of the distances from `p` to `a` and `b`.
+#[inline(always)]
+pub(super) fn distance_terms<T: Arith>(p: &Pt<T>, a: &Pt<T>, b: &Pt<T>) -> [T; 1] {
+    let (ab, ap, bp) = (diff(a, b), diff(a, p), diff(b, p));
+    let sum = [ap[0].add(&bp[0]), ap[1].add(&bp[1])];
+    [ab[0].mul(&sum[0]).add(&ab[1].mul(&sum[1]))]
+}
+
+/// `(s − p)·(q − p)` (degree 2).
+#[inline(always)]
+pub(super) fn dot_points_terms<T: Arith>(p: &Pt<T>, s: &Pt<T>, q: &Pt<T>) -> [T; 1] {
+    let (sp, qp) = (diff(s, p), diff(q, p));
+    [sp[0].mul(&qp[0]).add(&sp[1].mul(&qp[1]))]
 }

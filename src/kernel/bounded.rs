@@ -1,13 +1,7 @@
-//! The number types of the slower stages (the fast one, `filter::Sf`, lives beside its
-//! proof).
-//!
-//! Each predicate's polynomial is written once, generic over [`Arith`]. When the
-//! semi-static filter cannot decide, it is evaluated with [`Bounded`] (an `f64` value with a
-//! proven bound on its distance from the exact value) and, only when that bound cannot
-//! decide the sign either, again exactly: every finite `f64` is
-//! `m·2^e` with an integer `m`, so the inputs of one call, taken in units of the smallest
-//! `2^e` among them ([`lift_exact`]), are integers, and the (homogeneous) polynomials are
-//! evaluated in [`BigInt`] with no rational normalization at all.
+//! The running-error filter: [`Bounded`], an `f64` value with a proven bound on its distance
+//! from the exact value. Used where the semi-static filter has no precomputed constants
+//! (deep or mixed expressions) or could not decide; when its bound cannot decide a sign
+//! either, the caller evaluates exactly (`super::exact`).
 //!
 //! # The error bound of [`Bounded`]
 //!
@@ -31,14 +25,9 @@
 //! has the sign of `v`; if `v = e = 0`, the exact value is zero; otherwise the caller falls
 //! back to exact arithmetic.
 
-use num_bigint::{BigInt, BigUint, Sign as BigSign};
-use num_rational::BigRational;
-use num_traits::{ToPrimitive, Zero};
-
+use super::arith::{Arith, U};
 use super::Sign;
 
-/// Unit roundoff of `f64`: 2^-53.
-pub(super) const U: f64 = f64::EPSILON / 2.0;
 /// Smallest positive subnormal: 2^-1074.
 const ETA: f64 = f64::MIN_POSITIVE * f64::EPSILON;
 /// Below this magnitude of a product, Dekker's TwoProduct is not proven exact (underflow).
@@ -47,29 +36,6 @@ const TWO_PRODUCT_MIN: f64 = 1.2882297539194267e-271; // 2^-900
 const TWO_PRODUCT_MAX_FACTOR: f64 = 1.0463951242053392e298; // 2^990
 /// Above this magnitude of a sum, TwoSum is not used (no overflow risk below it).
 const TWO_SUM_MAX: f64 = 1.0715086071862673e301; // 2^1000
-
-/// Ring operations shared by the filter type and the exact type.
-pub(super) trait Arith: Sized {
-    /// `self + other`.
-    fn add(&self, other: &Self) -> Self;
-    /// `self − other`.
-    fn sub(&self, other: &Self) -> Self;
-    /// `self · other`.
-    fn mul(&self, other: &Self) -> Self;
-    /// `self − other` for two input coordinates: a leaf of the expression. The same as
-    /// [`Arith::sub`] except in the semi-static filter, which bounds errors relative to the
-    /// leaves.
-    #[inline(always)]
-    fn leaf_sub(&self, other: &Self) -> Self {
-        self.sub(other)
-    }
-    /// `2 · self`.
-    fn twice(&self) -> Self {
-        self.add(self)
-    }
-    /// The sign, if this representation can certify it.
-    fn sign(&self) -> Option<Sign>;
-}
 
 /// The smallest `f64` above `x`, for `x ≥ 0`; infinities and NaN are returned unchanged.
 #[inline]
@@ -210,6 +176,14 @@ impl Bounded {
         if !q.is_finite() {
             return None;
         }
+        // An exact quotient of exact operands stays exact (grid circumcenters): `q·b = a`
+        // with a zero TwoProduct error.
+        if self.e == 0.0 && other.e == 0.0 {
+            let p = q * other.v;
+            if p == self.v && two_product_error(q, other.v, p) == Some(0.0) {
+                return Some(Bounded { v: q, e: 0.0 });
+            }
+        }
         // |q − va/vb| ≤ u|q| + η, so |va/vb| ≤ |q| + u|q| + η.
         let rounding = add_up(mul_up(U, q.abs()), ETA);
         let quotient_bound = add_up(q.abs(), rounding);
@@ -235,6 +209,13 @@ impl Arith for Bounded {
 
     #[inline]
     fn mul(&self, other: &Self) -> Self {
+        // An exact 1 (the weight of a point in homogeneous coordinates) changes nothing.
+        if other.e == 0.0 && other.v == 1.0 {
+            return *self;
+        }
+        if self.e == 0.0 && self.v == 1.0 {
+            return *other;
+        }
         let (a, b) = (self.v, other.v);
         let v = a * b;
         let exact_error = if self.e == 0.0 && other.e == 0.0 {
@@ -274,186 +255,14 @@ impl Arith for Bounded {
     }
 }
 
-impl Arith for BigInt {
-    fn add(&self, other: &Self) -> Self {
-        self + other
-    }
-
-    fn sub(&self, other: &Self) -> Self {
-        self - other
-    }
-
-    fn mul(&self, other: &Self) -> Self {
-        self * other
-    }
-
-    fn twice(&self) -> Self {
-        self << 1u32
-    }
-
-    fn sign(&self) -> Option<Sign> {
-        Some(integer_sign(self))
-    }
-}
-
-/// Exact rationals, for the tests: an evaluation independent of [`lift_exact`].
-#[cfg(test)]
-impl Arith for BigRational {
-    fn add(&self, other: &Self) -> Self {
-        self + other
-    }
-
-    fn sub(&self, other: &Self) -> Self {
-        self - other
-    }
-
-    fn mul(&self, other: &Self) -> Self {
-        self * other
-    }
-
-    fn sign(&self) -> Option<Sign> {
-        Some(integer_sign(self.numer()))
-    }
-}
-
-/// The exact sign of an integer.
-pub(super) fn integer_sign(x: &BigInt) -> Sign {
-    match x.sign() {
-        BigSign::Minus => Sign::Negative,
-        BigSign::NoSign => Sign::Zero,
-        BigSign::Plus => Sign::Positive,
-    }
-}
-
 /// The points as exact filter values.
 pub(super) fn lift_filter<const N: usize>(points: [[f64; 2]; N]) -> [[Bounded; 2]; N] {
     points.map(|p| p.map(Bounded::from_f64))
 }
 
-/// `x = ±m·2^e` with an odd `m` (or `m = 0`); non-finite values give an unspecified result.
-fn decompose(x: f64) -> (bool, u64, i32) {
-    let bits = x.to_bits();
-    let negative = bits >> 63 == 1;
-    let biased = ((bits >> 52) & 0x7ff) as i32;
-    let fraction = bits & ((1u64 << 52) - 1);
-    let (m, e) = if biased == 0 {
-        (fraction, -1074)
-    } else {
-        (fraction | (1u64 << 52), biased - 1075)
-    };
-    if m == 0 {
-        return (negative, 0, 0);
-    }
-    let zeros = m.trailing_zeros();
-    (negative, m >> zeros, e + zeros as i32)
-}
-
-/// The points as integers in units of `2^shift`, the smallest power of two among their
-/// coordinates: `x = X · 2^shift` exactly. Non-finite coordinates become zero.
-pub(super) fn lift_exact<const N: usize>(points: [[f64; 2]; N]) -> ([[BigInt; 2]; N], i32) {
-    let parts = points.map(|p| {
-        p.map(|x| {
-            if x.is_finite() {
-                decompose(x)
-            } else {
-                (false, 0, 0)
-            }
-        })
-    });
-    let shift = parts
-        .iter()
-        .flatten()
-        .filter(|&&(_, m, _)| m != 0)
-        .map(|&(_, _, e)| e)
-        .min()
-        .unwrap_or(0);
-    let lifted = parts.map(|p| {
-        p.map(|(negative, m, e)| {
-            if m == 0 {
-                return BigInt::zero();
-            }
-            let magnitude = BigInt::from(m) << (e - shift).unsigned_abs();
-            if negative {
-                -magnitude
-            } else {
-                magnitude
-            }
-        })
-    });
-    (lifted, shift)
-}
-
-/// `2^k` for `k` in `-1074..=1023` (exactly representable).
-pub(super) fn pow2(k: i32) -> f64 {
-    if k >= -1022 {
-        f64::from_bits(((k + 1023) as u64) << 52)
-    } else {
-        f64::from_bits(1u64 << (k + 1074).max(0))
-    }
-}
-
-/// The unit in the last place of a finite `v`: the gap from `|v|` to the next larger `f64`.
-#[cfg(test)]
+/// The unit in the last place of a finite `v`: the gap from `|v|` to the next larger `f64`
+/// (a bound of the error of a correctly rounded `v`; infinite for infinite `v`).
 pub(super) fn ulp(v: f64) -> f64 {
     let a = v.abs();
     f64::from_bits(a.to_bits() + 1) - a
-}
-
-/// `x` rounded to the nearest `f64`, ties to even (infinite beyond the `f64` range).
-pub(super) fn rational_to_f64(x: &BigRational) -> f64 {
-    let negative = x.numer().sign() == BigSign::Minus;
-    ratio_to_f64(negative, x.numer().magnitude(), x.denom().magnitude(), 0)
-}
-
-/// `±(n / d)·2^e` (`d > 0`, not necessarily in lowest terms) rounded to the nearest `f64`,
-/// ties to even (infinite beyond the `f64` range).
-pub(super) fn ratio_to_f64(negative: bool, n: &BigUint, d: &BigUint, e: i64) -> f64 {
-    let signed = |m: f64| if negative { -m } else { m };
-    if n.is_zero() {
-        return 0.0;
-    }
-    if d.is_zero() {
-        return signed(f64::INFINITY); // unreachable for the callers: d > 0
-    }
-    // |x| lies in [2^(e0 − 1), 2^(e0 + 1)).
-    let e0 = n.bits() as i64 - d.bits() as i64 + e;
-    if e0 > 1025 {
-        return signed(f64::INFINITY);
-    }
-    if e0 < -1080 {
-        return signed(0.0);
-    }
-    // q = floor(|x| · 2^s) has 55 or 56 bits; `sticky` tells whether the floor dropped anything.
-    let s = 55 - e0;
-    let t = s + e;
-    let (num, den) = if t >= 0 {
-        (n << (t as usize), d.clone())
-    } else {
-        (n.clone(), d << ((-t) as usize))
-    };
-    let q = &num / &den;
-    let r = &num - &q * &den;
-    let Some(q) = q.to_u64() else {
-        return signed(f64::NAN); // unreachable: q < 2^56
-    };
-    let sticky = !r.is_zero();
-    let q_bits = 64 - i64::from(q.leading_zeros());
-    let exponent = q_bits - 1 - s; // floor(log2 |x|)
-    if exponent > 1023 {
-        return signed(f64::INFINITY);
-    }
-    // The result is a multiple of 2^(exponent − 52), or of 2^-1074 when subnormal.
-    let quantum = exponent.max(-1022) - 52;
-    let shift = quantum + s; // ≥ 2
-    if shift >= 60 {
-        return signed(0.0); // |x| < 2^-1076: below half the smallest subnormal
-    }
-    let kept = q >> shift;
-    let dropped = q & ((1u64 << shift) - 1);
-    let half = 1u64 << (shift - 1);
-    let round_up = dropped > half || (dropped == half && (sticky || kept & 1 == 1));
-    // The mantissa is at most 2^53 (exact as f64) and `quantum` lies in -1074..=971: the
-    // product is exact or overflows to infinity, as rounding to nearest requires.
-    let mantissa = kept + u64::from(round_up);
-    signed(mantissa as f64 * pow2(quantum as i32))
 }

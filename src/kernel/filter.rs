@@ -85,6 +85,8 @@
 //! | dot, general: `n_s · n_o`               | 18 | 6  | 596  | 64 | 19u   | 2^-800    |
 //! | radius: `n1·x2² − n2·x1²`               | 25 | 10 | 2284 | 48 | 26u   | 2^-670    |
 //! | circumcenter numerator `ux`, `uy`       | 7  | 3  | 6    | 64 | 8u    | 2^-1000   |
+//! | NN-crust distance `(a − b)·(a−p + b−p)` | 5  | 2  | 2    | 64 | 6u    | 2^-1069   |
+//! | NN-crust dot `(s − p)·(q − p)`          | 4  | 2  | 2    | 64 | 5u    | 2^-1070   |
 //!
 //! Inputs whose leaves exceed `2^H`, or are so small that the values sink towards `c0`, are
 //! rescaled by a power of two (exactly, which leaves every sign unchanged) and filtered again
@@ -92,8 +94,8 @@
 
 use super::arith::{Arith, U};
 use super::poly::{
-    circ, dot_terms, dot_terms_at_vertex, orient_from_circ, orient_from_offset, radius_terms,
-    scaled_offset, Circ,
+    circ, distance_terms, dot_points_terms, dot_terms, dot_terms_at_vertex, orient_from_circ,
+    orient_from_offset, radius_terms, scaled_offset, Circ,
 };
 use super::Sign;
 
@@ -225,6 +227,16 @@ pub(super) const RADIUS: Term = Term {
     c1: 26.0 * U,
     c0: 2.041281525984782e-202, // 2^-670
 };
+/// `(a − b)·((a − p) + (b − p))`, the NN-crust's distance comparison. (Its dot product
+/// `(s − p)·(q − p)` has the shape, and so the constants, of [`ORIENTATION`].)
+pub(super) const DISTANCE: Term = Term {
+    depth: 5,
+    degree: 2,
+    weight: 2.0,
+    h: 64,
+    c1: 6.0 * U,
+    c0: 1.6e-322, // 2^-1069
+};
 pub(super) const CIRC_U: Term = Term {
     depth: 7,
     degree: 3,
@@ -274,15 +286,6 @@ fn lift(t: &[[f64; 2]; 3]) -> [[Sf; 2]; 3] {
     t.map(|p| p.map(Sf::input))
 }
 
-#[inline(always)]
-fn sign_of(negative: bool) -> Sign {
-    if negative {
-        Sign::Negative
-    } else {
-        Sign::Positive
-    }
-}
-
 /// The circumcenter of one triangle in filter values, for repeated orientation tests.
 pub(super) struct CircFilter {
     t0: [f64; 2],
@@ -327,7 +330,7 @@ impl CircFilter {
         let spread = max(self.spread_a, spread2(b, a));
         let v = orient_from_offset(&self.n, &a2, &b.map(Sf::input));
         let sure = self.d_sure & (spread <= LEAF_MAX) & ORIENT.sure(v);
-        sure.then(|| sign_of((v.v < 0.0) ^ (self.c.d.v < 0.0)))
+        sure.then(|| Sign::of_nonzero((v.v < 0.0) ^ (self.c.d.v < 0.0)))
     }
 }
 
@@ -343,7 +346,7 @@ pub(super) fn orient(a: [f64; 2], b: [f64; 2], tri: &[[f64; 2]; 3]) -> Option<Si
         &b.map(Sf::input),
     );
     let sure = (spread <= LEAF_MAX) & D.sure(c.d) & ORIENT.sure(v);
-    sure.then(|| sign_of((v.v < 0.0) ^ (c.d.v < 0.0)))
+    sure.then(|| Sign::of_nonzero((v.v < 0.0) ^ (c.d.v < 0.0)))
 }
 
 /// The sign of `(O_o − p)·(O_s − p)`, if certified; `s` and `o` have `p` first when it is a
@@ -371,7 +374,7 @@ pub(super) fn dot(p: [f64; 2], s: &[[f64; 2]; 3], o: &[[f64; 2]; 3]) -> Option<S
         }
         [ds, d_o, v]
     };
-    Some(sign_of((v.v < 0.0) ^ (xs.v < 0.0) ^ (xo.v < 0.0)))
+    Some(Sign::of_nonzero((v.v < 0.0) ^ (xs.v < 0.0) ^ (xo.v < 0.0)))
 }
 
 /// The sign of `R1 − R2`, if certified.
@@ -381,7 +384,25 @@ pub(super) fn radius(t1: &[[f64; 2]; 3], t2: &[[f64; 2]; 3]) -> Option<Sign> {
     let spread = max(max(spread3(t1), spread3(t2)), max(third(t1), third(t2)));
     let [v] = radius_terms(&lift(t1), &lift(t2));
     let sure = (spread <= LEAF_MAX_RADIUS) & RADIUS.sure(v);
-    sure.then(|| sign_of(v.v < 0.0))
+    sure.then(|| Sign::of_nonzero(v.v < 0.0))
+}
+
+/// The sign of `|p − a|² − |p − b|²`, if certified.
+#[inline]
+pub(super) fn distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Option<Sign> {
+    let spread = max(max(spread2(a, b), spread2(a, p)), spread2(b, p));
+    let [v] = distance_terms(&p.map(Sf::input), &a.map(Sf::input), &b.map(Sf::input));
+    let sure = (spread <= LEAF_MAX) & DISTANCE.sure(v);
+    sure.then(|| Sign::of_nonzero(v.v < 0.0))
+}
+
+/// The sign of `(s − p)·(q − p)`, if certified.
+#[inline]
+pub(super) fn dot_points(p: [f64; 2], s: [f64; 2], q: [f64; 2]) -> Option<Sign> {
+    let spread = max(spread2(s, p), spread2(q, p));
+    let [v] = dot_points_terms(&p.map(Sf::input), &s.map(Sf::input), &q.map(Sf::input));
+    let sure = (spread <= LEAF_MAX) & ORIENTATION.sure(v);
+    sure.then(|| Sign::of_nonzero(v.v < 0.0))
 }
 
 /// `2^-20`: the largest relative uncertainty of the denominator `d` accepted.

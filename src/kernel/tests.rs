@@ -1,14 +1,40 @@
 //! Unit tests of the filter internals and known answers; the property tests against an
 //! independent rational reference live in `tests/predicates_exact.rs`.
 
-use super::arith::{lift_exact, lift_filter, pow2, rational_to_f64, ulp, Arith, Bounded, U};
+use super::arith::{Arith, U};
+use super::basic::orient;
+use super::bounded::{lift_filter, ulp, Bounded};
+use super::circumcenter::{
+    circumcenter, circumcenter_exact, circumcenter_rounded, fast_circumcenter, ExactPoint,
+};
+use super::derived::{
+    circumcenter_in_convex_hull, compare_circumradius as compare_radius, dot_sign_circumcenters,
+    hull_position, orient_circumcenter, rotate_to, HullPosition,
+};
+use super::exact::{integer_sign, lift_exact, rational_to_f64};
 use super::filter::{self, Sf, Term};
-use super::poly::{circ, dot_terms, dot_terms_at_vertex, orient_terms, radius_terms};
-use super::*;
+use super::poly::{
+    circ, distance_terms, dot_points_terms, dot_terms, dot_terms_at_vertex, orient_terms,
+    radius_terms,
+};
+use super::scale::{normalize, pow2, rescale, scale};
+use super::Sign;
+use crate::predicates::{orient2d, Orientation};
 use num_bigint::BigInt;
-use num_traits::{Pow, Signed, ToPrimitive};
+use num_rational::BigRational;
+use num_traits::{Pow, Signed, ToPrimitive, Zero};
 use proptest::prelude::*;
+use std::cmp::Ordering;
 use Orientation::{Clockwise, Collinear, CounterClockwise};
+
+/// The public views of the kernel's signs, as the known answers are written.
+fn orient2d_circumcenter(a: [f64; 2], b: [f64; 2], tri: [[f64; 2]; 3]) -> Orientation {
+    orient_circumcenter(a, b, tri).into()
+}
+
+fn compare_circumradius(t1: [[f64; 2]; 3], t2: [[f64; 2]; 3]) -> Ordering {
+    compare_radius(t1, t2).into()
+}
 
 fn rat(x: f64) -> BigRational {
     BigRational::from_float(x).unwrap()
@@ -290,7 +316,7 @@ fn hull_search_matches_brute_force_exhaustively() {
             for qx in -3..=11 {
                 for qy in -3..=11 {
                     let q = [qx as f64 / 2.0, qy as f64 / 2.0];
-                    let got = hull_position(&hull, |a, b| Some(orient2d(a, b, q)));
+                    let got = hull_position(&hull, |a, b| Some(orient(a, b, q)));
                     assert_eq!(got, brute_force_hull(&hull, q), "hull {hull:?}, q {q:?}");
                     checked += 1;
                 }
@@ -520,7 +546,7 @@ fn circumcenter_stages_are_accurate() {
 /// Whether each coordinate of `got` is within 256 ulps of its larger magnitude of `exact`.
 fn within_ulps(got: [f64; 2], exact: &ExactPoint) -> bool {
     let tolerance = rat(256.0 * ulp(got[0].abs().max(got[1].abs())));
-    (rat(got[0]) - &exact.x).abs() <= tolerance && (rat(got[1]) - &exact.y).abs() <= tolerance
+    (rat(got[0]) - exact.x()).abs() <= tolerance && (rat(got[1]) - exact.y()).abs() <= tolerance
 }
 
 // ----------------------------------------------------------------------------------------
@@ -650,6 +676,10 @@ fn filter_constants_match_the_expressions() {
     check_term("dot at vertex", v, &filter::DOT_AT_VERTEX, filter::LEAF_MAX);
     let [v] = radius_terms(&t, &t);
     check_term("radius", v, &filter::RADIUS, filter::LEAF_MAX_RADIUS);
+    let [v] = distance_terms(&i, &i, &i);
+    check_term("nn distance", v, &filter::DISTANCE, filter::LEAF_MAX);
+    let [v] = dot_points_terms(&i, &i, &i);
+    check_term("nn dot", v, &filter::ORIENTATION, filter::LEAF_MAX);
     // The rescaled retry brings the leaves into range.
     assert!(filter::LEAF_RANGE.1 <= filter::ORIENT.h);
     assert!(filter::LEAF_RANGE_RADIUS.1 <= filter::RADIUS.h);
@@ -1000,14 +1030,14 @@ fn one_ulp_off_degenerate_configurations() {
                 }
                 assert_eq!(
                     orient2d_circumcenter(tri[0], tri[1], t),
-                    orientation_of(want)
+                    Orientation::from(want)
                 );
                 // p is (nearly) the circumcenter: the dot product of the two radius
                 // vectors from a vertex, to O(t) and to O(tri) = p, is (nearly) |p − t0|².
                 let got = dot_sign_circumcenters(t[0], t, tri);
                 let o = [rat(p[0]), rat(p[1])];
                 let (tx, ty) = (rat(t[0][0]), rat(t[0][1]));
-                let v = (&exact.x - &tx) * (&o[0] - &tx) + (&exact.y - &ty) * (&o[1] - &ty);
+                let v = (exact.x() - &tx) * (&o[0] - &tx) + (exact.y() - &ty) * (&o[1] - &ty);
                 assert_eq!(got, exact_sign(&v));
             }
         }
@@ -1018,7 +1048,7 @@ fn one_ulp_off_degenerate_configurations() {
 /// Exact orientation of `(a, b, o)` for a rational `o`.
 fn exact_orient(a: [f64; 2], b: [f64; 2], o: &ExactPoint) -> Sign {
     let (ax, ay) = (rat(a[0]), rat(a[1]));
-    exact_sign(&((rat(b[0]) - &ax) * (&o.y - &ay) - (rat(b[1]) - &ay) * (&o.x - &ax)))
+    exact_sign(&((rat(b[0]) - &ax) * (o.y() - &ay) - (rat(b[1]) - &ay) * (o.x() - &ax)))
 }
 
 #[test]
@@ -1039,5 +1069,94 @@ fn rescale_brings_the_spread_into_range() {
         let (s, k) = rescale(pts, filter::LEAF_RANGE).unwrap();
         assert_eq!(k, -100);
         assert_eq!(s[1][0] - s[0][0], 1.0);
+    }
+}
+
+// ----------------------------------------------------------------------------------------
+// The NN-crust's metric tests and the crust's mixed predicates against rationals.
+
+type RPt = [BigRational; 2];
+
+fn r_orient(a: &RPt, b: &RPt, c: &RPt) -> Sign {
+    exact_sign(&((&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0])))
+}
+
+/// The in-circle determinant by cofactors of the 4 × 4 lifted matrix, translated to `d`.
+fn r_incircle(a: &RPt, b: &RPt, c: &RPt, d: &RPt) -> Sign {
+    let row = |p: &RPt| {
+        let (x, y) = (&p[0] - &d[0], &p[1] - &d[1]);
+        let lift = &x * &x + &y * &y;
+        [x, y, lift]
+    };
+    let [ra, rb, rc] = [row(a), row(b), row(c)];
+    let minor = |p: &[BigRational; 3], q: &[BigRational; 3], i: usize, j: usize| {
+        &p[i] * &q[j] - &p[j] * &q[i]
+    };
+    let det = &ra[0] * minor(&rb, &rc, 1, 2) - &ra[1] * minor(&rb, &rc, 0, 2)
+        + &ra[2] * minor(&rb, &rc, 0, 1);
+    exact_sign(&det)
+}
+
+fn r_dist2(p: &RPt, q: &RPt) -> BigRational {
+    let (dx, dy) = (&q[0] - &p[0], &q[1] - &p[1]);
+    &dx * &dx + &dy * &dy
+}
+
+fn check_metric_and_mixed(pts: [[f64; 2]; 8]) -> Result<(), TestCaseError> {
+    use super::metric::{distance_order, dot_sign};
+    use super::mixed::MixedPoints;
+    let r = lift_rational(pts);
+    let [p, a, b] = [0, 1, 2].map(|i| pts[i]);
+    let want = exact_sign(&(r_dist2(&r[0], &r[1]) - r_dist2(&r[0], &r[2])));
+    prop_assert_eq!(distance_order(p, a, b), want);
+    let dot = (&r[1][0] - &r[0][0]) * (&r[2][0] - &r[0][0])
+        + (&r[1][1] - &r[0][1]) * (&r[2][1] - &r[0][1]);
+    prop_assert_eq!(dot_sign(p, a, b), exact_sign(&dot));
+    // Samples 0..5 and the circumcenters of two triangles of them (indices 5 and 6).
+    let samples = &pts[..5];
+    let tris = [[pts[5], pts[6], pts[7]], [pts[0], pts[1], pts[2]]];
+    let Some(centers) = tris
+        .iter()
+        .map(|t| circumcenter_exact(t[0], t[1], t[2]))
+        .collect::<Option<Vec<_>>>()
+    else {
+        return Ok(());
+    };
+    let mut all: Vec<RPt> = r[..5].to_vec();
+    all.extend(centers.iter().map(|o| [o.x().clone(), o.y().clone()]));
+    let mp = MixedPoints::new(samples, tris.to_vec());
+    let quads = [
+        [0, 1, 5, 6],
+        [5, 6, 2, 3],
+        [0, 5, 1, 6],
+        [6, 0, 5, 4],
+        [1, 2, 3, 5],
+    ];
+    for [i, j, k, l] in quads {
+        let (ri, rj, rk, rl) = (&all[i], &all[j], &all[k], &all[l]);
+        let [i, j, k, l] = [i, j, k, l].map(|x| x as u32);
+        let o = r_orient(ri, rj, rk);
+        prop_assert_eq!(mp.orient(i, j, k), o);
+        match o {
+            Sign::Positive => prop_assert_eq!(mp.incircle(i, j, k, l), r_incircle(ri, rj, rk, rl)),
+            Sign::Negative => prop_assert_eq!(mp.incircle(i, k, j, l), r_incircle(ri, rk, rj, rl)),
+            Sign::Zero => {}
+        }
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// On adversarial input (lattice points on circles, right angles, shared circumcenters)
+    /// and on random input, the metric and mixed predicates give the rational answers.
+    #[test]
+    fn metric_and_mixed_predicates_are_exact(
+        seed in any::<u64>(),
+        random in prop::array::uniform8(prop::array::uniform2(coordinate())),
+    ) {
+        check_metric_and_mixed(adversarial_points(seed))?;
+        check_metric_and_mixed(random)?;
     }
 }

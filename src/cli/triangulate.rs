@@ -67,7 +67,7 @@ pub fn run(args: &TriangulateArgs) -> Result<(), CliError> {
     timings.phase("triangulate", || {
         format!(
             "{} triangles, {} duplicates",
-            tri.triangles().len(),
+            tri.triangle_count(),
             tri.duplicates().len()
         )
     });

@@ -79,7 +79,7 @@ pub fn run(args: &VoronoiArgs) -> Result<(), CliError> {
     timings.begin(|| format!("triangulating {} points", points.len()));
     let tri = wdm_crust::triangulate(&points).map_err(|e| input.library_error(&e))?;
     timings.phase("triangulate", || {
-        format!("{} triangles", tri.triangles().len())
+        format!("{} triangles", tri.triangle_count())
     });
 
     timings.begin(|| "building the Voronoi diagram".to_string());

@@ -48,8 +48,8 @@ pub struct VoronoiEdge {
 
 /// The Voronoi diagram of the distinct points of a triangulation.
 ///
-/// Memory: 4 bytes per point, plus, only when some neighbouring triangles are cocircular,
-/// the merged faces (about 24 bytes per triangle), plus, once
+/// Memory: 4 bytes per distinct point, plus, only when some neighbouring triangles are
+/// cocircular, the merged faces (about 24 bytes per triangle), plus, once
 /// [`vertex_positions`](Voronoi::vertex_positions) is first called, 16 bytes per vertex.
 /// The labeler decides everything on the exact circumcenters of triangles and never needs
 /// the rounded positions of all vertices.

@@ -19,8 +19,8 @@ pub const NO_TWIN: u32 = u32::MAX;
 /// public method is an index into the caller's slice; internally the points are stored
 /// once each, in a locality order (see the module docs), and translated on the way out.
 ///
-/// Memory: 24 bytes per distinct point and 4 per input point, 12 per triangle, 12 per
-/// triangle for the twins.
+/// Memory: 20 bytes per distinct point (coordinates, caller index), 4 per input point (its
+/// local index), 8 per duplicate, 24 per triangle (corners and twins), 4 per hull point.
 #[derive(Debug, Clone)]
 pub struct Triangulation {
     /// Coordinates of the distinct points, by local index.

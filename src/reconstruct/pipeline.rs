@@ -7,7 +7,7 @@ use super::peel::{hole_edges, parity_inside, peel, Peeling};
 use super::result::{MedialAxis, Reconstruction};
 use super::wdm::{self, Label};
 use super::{crust, nn_crust};
-use crate::delaunay::triangulate;
+use crate::delaunay::{triangulate, Triangulation};
 use crate::error::Error;
 
 /// WDM_CRUST and WDM_MAT of `points` with the default [`Options`].
@@ -76,8 +76,8 @@ pub fn reconstruct_observed(
     };
     let triangulation = triangulate(points)?;
     lap(Phase::Triangulate);
-    // Everything up to the end runs on the triangulation's local indices (its locality
-    // order); the edges are translated to the caller's indices once, before assembly.
+    // Everything runs on the triangulation's local indices (its locality order); the
+    // curves and edges come out in the caller's indices.
     if options.algorithm() != Algorithm::Wdm {
         let edges = if triangulation.is_degenerate() {
             chain_edges(&triangulation)
@@ -86,8 +86,8 @@ pub fn reconstruct_observed(
         } else {
             nn_crust::nn_crust_edges_local(&triangulation)
         };
+        let curves = assemble(&triangulation, &edges);
         let edges = triangulation.to_input_edges(edges);
-        let curves = curves::assemble(points.len(), &edges, points);
         let rec = Reconstruction {
             algorithm: options.algorithm(),
             triangulation,
@@ -123,8 +123,8 @@ pub fn reconstruct_observed(
             first_pass.extend_from_slice(&edges[..first_pass_len]);
             first_pass.sort_unstable();
         }
+        let curves = assemble(&triangulation, &edges);
         let edges = triangulation.to_input_edges(edges);
-        let curves = curves::assemble(points.len(), &edges, points);
         let holes = if holes_possible {
             hole_edges(&vor, &curves, &first_pass)
         } else {
@@ -164,6 +164,12 @@ pub fn reconstruct_observed(
     };
     lap(Phase::Extract);
     Ok(rec)
+}
+
+/// The curves of distinct local `edges`, in caller indices (see
+/// [`curves::assemble_named`]).
+fn assemble(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<curves::Curve> {
+    curves::assemble_named(tri.points.len(), edges, &tri.points, |p| tri.input_index(p))
 }
 
 #[cfg(test)]

@@ -285,6 +285,7 @@ impl<'a> Voronoi<'a> {
         self.merged.is_some()
     }
 
+    #[inline]
     fn boundary_of(&self, v: u32) -> FaceBoundary<'_> {
         if let Some(m) = &self.merged {
             let row = &m.boundary
@@ -310,6 +311,7 @@ impl<'a> Voronoi<'a> {
     }
 
     /// [`vertex_sites`](Self::vertex_sites) in local indices.
+    #[inline]
     pub(crate) fn vertex_sites_local(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
         self.boundary_of(v).map(|e| self.tri.org(e as usize))
     }
@@ -320,6 +322,7 @@ impl<'a> Voronoi<'a> {
     }
 
     /// [`vertex_edges`](Self::vertex_edges) with the sites in local indices.
+    #[inline]
     pub(crate) fn vertex_edges_local(&self, v: u32) -> impl Iterator<Item = VoronoiEdge> + '_ {
         self.boundary_of(v).map(|e| self.edge_local(e))
     }
@@ -333,6 +336,7 @@ impl<'a> Voronoi<'a> {
         }
     }
 
+    #[inline]
     fn edge_local(&self, e: u32) -> VoronoiEdge {
         let twin = self.tri.halfedges()[e as usize];
         VoronoiEdge {
@@ -397,6 +401,7 @@ impl<'a> Voronoi<'a> {
     }
 
     /// [`is_cell_bounded`](Self::is_cell_bounded) of local point `p`.
+    #[inline]
     pub(crate) fn is_cell_bounded_local(&self, p: u32) -> bool {
         let e = self.out_halfedge[p as usize];
         e != NO_TWIN && self.tri.halfedges()[e as usize] != NO_TWIN
@@ -419,6 +424,7 @@ impl<'a> Voronoi<'a> {
     }
 
     /// [`cell`](Self::cell) of local point `p`.
+    #[inline]
     pub(crate) fn cell_local(&self, p: u32) -> CellVertices<'_, 'a> {
         let start = self.out_halfedge[p as usize];
         let mut first = start;
@@ -472,6 +478,7 @@ impl<'a> Voronoi<'a> {
     }
 
     /// The half-edge out of the same point, one triangle counterclockwise; `None` past the hull.
+    #[inline]
     fn rotate_counterclockwise(&self, e: u32) -> Option<u32> {
         let incoming = prev_in_triangle(e as usize);
         let twin = self.tri.halfedges()[incoming];
@@ -479,6 +486,7 @@ impl<'a> Voronoi<'a> {
     }
 
     /// The half-edge out of the same point, one triangle clockwise; `None` past the hull.
+    #[inline]
     fn rotate_clockwise(&self, e: u32) -> Option<u32> {
         let twin = self.tri.halfedges()[e as usize];
         (twin != NO_TWIN).then(|| next_in_triangle(twin as usize) as u32)
@@ -513,6 +521,7 @@ pub struct CellVertices<'v, 'a> {
 impl Iterator for CellVertices<'_, '_> {
     type Item = u32;
 
+    #[inline]
     fn next(&mut self) -> Option<u32> {
         while let Some(e) = self.next {
             let v = self.voronoi.vertex_of_halfedge(e);

@@ -28,7 +28,7 @@ fn main() {
         "points" => println!("{} points", std::hint::black_box(&points).len()),
         "triangulate" => {
             let tri = wdm_crust::triangulate(&points).expect("valid points");
-            println!("{} triangles", tri.triangles().len());
+            println!("{} triangles", tri.triangle_count());
         }
         "voronoi" => {
             let tri = wdm_crust::triangulate(&points).expect("valid points");

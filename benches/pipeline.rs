@@ -15,10 +15,9 @@ fn bench_phases(c: &mut Criterion) {
         group.sample_size(if n >= 100_000 { 10 } else { 30 });
         group.throughput(Throughput::Elements(n as u64));
         let points = curve_points(n, &mut Rng::new(7));
-        // `reconstruct` runs its phases on points renamed for locality (the order in which
-        // the triangles first use them). Feeding the phase benches the points in that order
-        // gives the very triangulation and dual the pipeline works on.
-        let local = wdm_crust::triangulate(&locality_order(&points)).expect("valid points");
+        // The triangulation keeps its points in locality order: the phases below see what
+        // `reconstruct` sees.
+        let local = wdm_crust::triangulate(&points).expect("valid points");
         let vor = local.voronoi();
         group.bench_with_input(BenchmarkId::new("triangulate", n), &points, |b, p| {
             b.iter(|| wdm_crust::triangulate(p).expect("valid points"))
@@ -34,20 +33,6 @@ fn bench_phases(c: &mut Criterion) {
         });
     }
     group.finish();
-}
-
-/// The points renumbered in the order the triangles of their triangulation first use them.
-fn locality_order(points: &[[f64; 2]]) -> Vec<[f64; 2]> {
-    let tri = wdm_crust::triangulate(points).expect("valid points");
-    let mut seen = vec![false; points.len()];
-    let mut ordered = Vec::with_capacity(points.len());
-    for &p in tri.triangles().iter().flatten() {
-        if !std::mem::replace(&mut seen[p as usize], true) {
-            ordered.push(points[p as usize]);
-        }
-    }
-    ordered.extend((0..points.len()).filter(|&p| !seen[p]).map(|p| points[p]));
-    ordered
 }
 
 /// Batches of 1024 predicate calls: on random points (the floating-point filter decides)

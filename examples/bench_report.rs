@@ -119,8 +119,8 @@ fn triangulation_tables(results: &Results) {
 }
 
 /// The phases of `reconstruct` on curve samples; `extract` is what `reconstruct` spends
-/// beyond the three measured phases (crust edges, peeling check, medial axis, curves and the
-/// renaming).
+/// beyond the three measured phases (crust edges, peeling check, medial axis, the translation
+/// of the edges to caller indices and the curves).
 fn pipeline_rows(results: &Results) -> Vec<(u64, [f64; 5])> {
     sizes(results, "pipeline")
         .into_iter()

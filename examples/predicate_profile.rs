@@ -159,12 +159,12 @@ fn main() {
         .map(|v| vor.vertex_triangle(v))
         .collect();
     let mut dot_cases = Vec::new();
-    for p in 0..tri.points().len() as u32 {
+    for p in 0..tri.point_count() as u32 {
         if !vor.is_cell_bounded(p) {
             continue;
         }
         let cell: Vec<u32> = vor.cell(p).collect();
-        let point = tri.points()[p as usize];
+        let point = tri.point(p);
         let source = vor.vertex_triangle(cell[0]);
         for &v in &cell[1..] {
             dot_cases.push((point, source, vor.vertex_triangle(v)));
@@ -174,11 +174,7 @@ fn main() {
         .windows(2)
         .map(|w| (w[1][0], w[1][1], w[0]))
         .collect();
-    let hull: Vec<P> = tri
-        .hull()
-        .iter()
-        .map(|&i| tri.points()[i as usize])
-        .collect();
+    let hull: Vec<P> = tri.hull().into_iter().map(|i| tri.point(i)).collect();
     let ray_tris: Vec<T> = (0..vor.vertex_count() as u32)
         .filter(|&v| vor.has_ray(v))
         .map(|v| vor.vertex_triangle(v))

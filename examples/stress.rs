@@ -63,7 +63,7 @@ fn main() {
             "triangulate: {:.2}s, {} distinct, {} triangles, hull {}",
             t.elapsed().as_secs_f64(),
             tri.distinct_point_count(),
-            tri.triangles().len(),
+            tri.triangle_count(),
             tri.hull().len()
         );
         if stage("voronoi") {

@@ -45,8 +45,8 @@ pub struct VoronoiEdge {
 
 /// The Voronoi diagram of the distinct points of a triangulation.
 ///
-/// Memory: 4 bytes per point, plus, only when some neighbouring triangles are cocircular,
-/// the merged faces (about 24 bytes per triangle), plus, once
+/// Memory: 4 bytes per distinct point, plus, only when some neighbouring triangles are
+/// cocircular, the merged faces (about 24 bytes per triangle), plus, once
 /// [`vertex_positions`](Voronoi::vertex_positions) is first called, 16 bytes per vertex.
 /// The labeler decides everything on the exact circumcenters of triangles and never needs
 /// the rounded positions of all vertices.
@@ -56,8 +56,8 @@ pub struct Voronoi<'a> {
     vertex_count: usize,
     /// The f64 circumcenters of all vertices, computed on first use.
     positions: std::sync::OnceLock<Vec<[f64; 2]>>,
-    /// One half-edge out of every distinct point (the outgoing hull edge for hull points);
-    /// `NO_TWIN` for duplicates and in degenerate input.
+    /// One half-edge out of every local point (the outgoing hull edge for hull points);
+    /// `NO_TWIN` in degenerate input.
     out_halfedge: Vec<u32>,
     /// `None` when no two neighbouring triangles share their circumcircle (the common case
     /// for real-valued input): then vertex `v` is triangle `v` and its face is that triangle.
@@ -133,9 +133,9 @@ impl<'a> Voronoi<'a> {
     /// One pass over the triangles finds the outgoing half-edge of every point and the
     /// cocircular neighbours; the faces are merged only if there are any.
     fn new(tri: &'a Triangulation) -> Self {
-        let triangles = tri.triangles();
+        let triangles = &tri.triangles;
         let halfedges = tri.halfedges();
-        let points = tri.points();
+        let points = &tri.points;
         let mut out_halfedge = vec![NO_TWIN; points.len()];
         let mut cocircular_pairs: Vec<[u32; 2]> = Vec::new();
         for (t, corners) in triangles.iter().enumerate() {
@@ -148,8 +148,7 @@ impl<'a> Voronoi<'a> {
                     *out = e as u32;
                 }
                 if twin != NO_TWIN && twin as usize > e {
-                    let opposite =
-                        points[tri.halfedge_origin(prev_in_triangle(twin as usize)) as usize];
+                    let opposite = points[tri.org(prev_in_triangle(twin as usize)) as usize];
                     if incircle(a, b, c, opposite) == Sign::Zero {
                         cocircular_pairs.push([t as u32, twin / 3]);
                     }
@@ -215,12 +214,14 @@ impl<'a> Voronoi<'a> {
     /// lexicographically smallest corner; a merged face gives its three lexicographically
     /// smallest sites (distinct points on one circle: never collinear), counterclockwise.
     fn canonical_triangle(&self, v: u32) -> [[f64; 2]; 3] {
-        let points = self.tri.points();
+        let points = &self.tri.points;
         let mut t = if self.degree(v) == 3 {
             self.vertex_triangle(v)
         } else {
-            let mut sites: Vec<[f64; 2]> =
-                self.vertex_sites(v).map(|p| points[p as usize]).collect();
+            let mut sites: Vec<[f64; 2]> = self
+                .vertex_sites_local(v)
+                .map(|p| points[p as usize])
+                .collect();
             sites.sort_unstable_by(|p, q| lexicographic(*p, *q));
             let (a, mut b, mut c) = (sites[0], sites[1], sites[2]);
             if orient2d(a, b, c) == Orientation::Clockwise {
@@ -273,6 +274,7 @@ impl<'a> Voronoi<'a> {
         self.merged.is_some()
     }
 
+    #[inline]
     fn boundary_of(&self, v: u32) -> FaceBoundary<'_> {
         if let Some(m) = &self.merged {
             let row = &m.boundary
@@ -297,13 +299,34 @@ impl<'a> Voronoi<'a> {
             .map(|e| self.tri.halfedge_origin(e as usize))
     }
 
+    /// [`vertex_sites`](Self::vertex_sites) in local indices.
+    #[inline]
+    pub(crate) fn vertex_sites_local(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
+        self.boundary_of(v).map(|e| self.tri.org(e as usize))
+    }
+
     /// The Voronoi edges at `v`, counterclockwise around its face.
     pub fn vertex_edges(&self, v: u32) -> impl Iterator<Item = VoronoiEdge> + '_ {
         self.boundary_of(v).map(|e| self.edge(e))
     }
 
+    /// [`vertex_edges`](Self::vertex_edges) with the sites in local indices.
+    #[inline]
+    pub(crate) fn vertex_edges_local(&self, v: u32) -> impl Iterator<Item = VoronoiEdge> + '_ {
+        self.boundary_of(v).map(|e| self.edge_local(e))
+    }
+
     /// The Voronoi edge dual to the boundary half-edge `e`, seen from the face of `e`.
     pub fn edge(&self, e: u32) -> VoronoiEdge {
+        let edge = self.edge_local(e);
+        VoronoiEdge {
+            sites: edge.sites.map(|p| self.tri.input_index(p)),
+            ..edge
+        }
+    }
+
+    #[inline]
+    fn edge_local(&self, e: u32) -> VoronoiEdge {
         let twin = self.tri.halfedges()[e as usize];
         VoronoiEdge {
             halfedge: e,
@@ -313,10 +336,7 @@ impl<'a> Voronoi<'a> {
             } else {
                 EdgeEnd::Vertex(self.vertex_of_halfedge(twin))
             },
-            sites: [
-                self.tri.halfedge_origin(e as usize),
-                self.tri.halfedge_destination(e as usize),
-            ],
+            sites: [self.tri.org(e as usize), self.tri.dest(e as usize)],
         }
     }
 
@@ -358,14 +378,20 @@ impl<'a> Voronoi<'a> {
 
     /// Outward normal of the hull half-edge `e` (interior on its left).
     pub fn ray_direction(&self, e: u32) -> [f64; 2] {
-        let a = self.tri.points()[self.tri.halfedge_origin(e as usize) as usize];
-        let b = self.tri.points()[self.tri.halfedge_destination(e as usize) as usize];
+        let a = self.tri.points[self.tri.org(e as usize) as usize];
+        let b = self.tri.points[self.tri.dest(e as usize) as usize];
         [b[1] - a[1], a[0] - b[0]]
     }
 
     /// Is the cell of point `p` bounded (is `p` strictly inside the convex hull)?
     /// False for hull points, duplicates and degenerate input.
     pub fn is_cell_bounded(&self, p: u32) -> bool {
+        !self.tri.is_duplicate(p) && self.is_cell_bounded_local(self.tri.local_index(p))
+    }
+
+    /// [`is_cell_bounded`](Self::is_cell_bounded) of local point `p`.
+    #[inline]
+    pub(crate) fn is_cell_bounded_local(&self, p: u32) -> bool {
         let e = self.out_halfedge[p as usize];
         e != NO_TWIN && self.tri.halfedges()[e as usize] != NO_TWIN
     }
@@ -375,6 +401,20 @@ impl<'a> Voronoi<'a> {
     /// the one carrying the ray of the incoming hull edge. Empty for a duplicate (its cell is
     /// its original's: ask for that one) and for degenerate input.
     pub fn cell(&self, p: u32) -> CellVertices<'_, 'a> {
+        if self.tri.is_duplicate(p) {
+            return CellVertices {
+                voronoi: self,
+                first: NO_TWIN,
+                next: None,
+                last_vertex: None,
+            };
+        }
+        self.cell_local(self.tri.local_index(p))
+    }
+
+    /// [`cell`](Self::cell) of local point `p`.
+    #[inline]
+    pub(crate) fn cell_local(&self, p: u32) -> CellVertices<'_, 'a> {
         let start = self.out_halfedge[p as usize];
         let mut first = start;
         if start != NO_TWIN && self.tri.halfedges()[start as usize] != NO_TWIN {
@@ -396,12 +436,12 @@ impl<'a> Voronoi<'a> {
         }
     }
 
-    /// Is `[a, b]` an edge of the triangulation? Walks the triangles around `a`: O(degree).
+    /// Is `[a, b]` (local indices) an edge of the triangulation? Walks the triangles around `a`: O(degree).
     pub(crate) fn is_delaunay_edge(&self, a: u32, b: u32) -> bool {
         self.delaunay_halfedge(a, b).is_some()
     }
 
-    /// The half-edge from `a` to `b`, or from `b` to `a` when `a → b` is a hull edge seen
+    /// The half-edge from local point `a` to `b`, or from `b` to `a` when `a → b` is a hull edge seen
     /// from outside; `None` when `[a, b]` is no edge of the triangulation. O(degree of `a`).
     pub(crate) fn delaunay_halfedge(&self, a: u32, b: u32) -> Option<u32> {
         let start = self.out_halfedge[a as usize];
@@ -410,13 +450,13 @@ impl<'a> Voronoi<'a> {
         }
         let mut e = start;
         loop {
-            if self.tri.halfedge_destination(e as usize) == b {
+            if self.tri.dest(e as usize) == b {
                 return Some(e);
             }
             // The incoming half-edge of this triangle ends at `a`; on the hull it is the
             // only way to meet the last neighbour clockwise.
             let incoming = prev_in_triangle(e as usize) as u32;
-            if self.tri.halfedge_origin(incoming as usize) == b {
+            if self.tri.org(incoming as usize) == b {
                 return Some(incoming);
             }
             match self.rotate_counterclockwise(e) {
@@ -427,6 +467,7 @@ impl<'a> Voronoi<'a> {
     }
 
     /// The half-edge out of the same point, one triangle counterclockwise; `None` past the hull.
+    #[inline]
     fn rotate_counterclockwise(&self, e: u32) -> Option<u32> {
         let incoming = prev_in_triangle(e as usize);
         let twin = self.tri.halfedges()[incoming];
@@ -434,6 +475,7 @@ impl<'a> Voronoi<'a> {
     }
 
     /// The half-edge out of the same point, one triangle clockwise; `None` past the hull.
+    #[inline]
     fn rotate_clockwise(&self, e: u32) -> Option<u32> {
         let twin = self.tri.halfedges()[e as usize];
         (twin != NO_TWIN).then(|| next_in_triangle(twin as usize) as u32)
@@ -443,7 +485,8 @@ impl<'a> Voronoi<'a> {
     /// their perpendicular bisectors. Empty otherwise.
     pub fn collinear_bisectors(&self) -> Vec<[u32; 2]> {
         if self.tri.is_degenerate() {
-            self.tri.hull().windows(2).map(|w| [w[0], w[1]]).collect()
+            let hull = self.tri.hull();
+            hull.windows(2).map(|w| [w[0], w[1]]).collect()
         } else {
             Vec::new()
         }
@@ -467,6 +510,7 @@ pub struct CellVertices<'v, 'a> {
 impl Iterator for CellVertices<'_, '_> {
     type Item = u32;
 
+    #[inline]
     fn next(&mut self) -> Option<u32> {
         while let Some(e) = self.next {
             let v = self.voronoi.vertex_of_halfedge(e);
@@ -486,7 +530,7 @@ impl Iterator for CellVertices<'_, '_> {
 impl MergedFaces {
     /// Merges the faces joined by `cocircular_pairs` of triangles.
     fn new(tri: &Triangulation, cocircular_pairs: &[[u32; 2]]) -> MergedFaces {
-        let vertex_of_triangle = union_cocircular(tri.triangles().len(), cocircular_pairs);
+        let vertex_of_triangle = union_cocircular(tri.triangle_count(), cocircular_pairs);
         let vertex_count = vertex_of_triangle.iter().map(|&v| v + 1).max().unwrap_or(0) as usize;
         let mut first_triangle = vec![u32::MAX; vertex_count];
         for (t, &v) in vertex_of_triangle.iter().enumerate() {
@@ -585,17 +629,14 @@ fn merged_boundaries(
 /// starts at the smallest half-edge id: the triangle arrays do not depend on the order of the
 /// input points, so neither does the cycle (a start chosen by point index would).
 fn order_face_cycle(tri: &Triangulation, row: &mut [u32]) {
-    let mut by_origin: Vec<(u32, u32)> = row
-        .iter()
-        .map(|&e| (tri.halfedge_origin(e as usize), e))
-        .collect();
+    let mut by_origin: Vec<(u32, u32)> = row.iter().map(|&e| (tri.org(e as usize), e)).collect();
     by_origin.sort_unstable();
     let Some(mut e) = row.iter().copied().min() else {
         return;
     };
     for slot in row.iter_mut() {
         *slot = e;
-        let dest = tri.halfedge_destination(e as usize);
+        let dest = tri.dest(e as usize);
         if let Ok(i) = by_origin.binary_search_by_key(&dest, |&(o, _)| o) {
             e = by_origin[i].1;
         }
@@ -631,10 +672,12 @@ mod tests {
                     [a.min(b), a.max(b)]
                 })
                 .collect();
-            for a in 0..n as u32 {
-                for b in 0..n as u32 {
+            let kept = |a: u32| !tri.is_duplicate(a);
+            for a in (0..n as u32).filter(|&a| kept(a)) {
+                for b in (0..n as u32).filter(|&b| kept(b)) {
+                    let l = |i| tri.local_index(i);
                     assert_eq!(
-                        vor.is_delaunay_edge(a, b),
+                        vor.is_delaunay_edge(l(a), l(b)),
                         edges.contains(&[a.min(b), a.max(b)]),
                         "round {round}: {a}-{b}"
                     );

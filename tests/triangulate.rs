@@ -14,12 +14,11 @@ fn checked(points: &[[f64; 2]]) -> Triangulation {
 
 /// Brute force: no distinct point lies strictly inside any triangle's circumcircle.
 fn assert_empty_circles(tri: &Triangulation) {
-    let pts = tri.points();
-    for t in 0..tri.triangles().len() {
+    for t in 0..tri.triangle_count() {
         let [a, b, c] = tri.triangle_points(t);
-        for (i, &p) in pts.iter().enumerate() {
+        for i in 0..tri.point_count() {
             assert_ne!(
-                in_circumcircle(a, b, c, p),
+                in_circumcircle(a, b, c, tri.point(i as u32)),
                 Some(CirclePosition::Inside),
                 "point {i} inside circle of triangle {t}"
             );
@@ -31,8 +30,8 @@ fn assert_empty_circles(tri: &Triangulation) {
 fn canonical(tri: &Triangulation) -> Vec<[u32; 3]> {
     let mut v: Vec<[u32; 3]> = tri
         .triangles()
-        .iter()
-        .map(|&[a, b, c]| {
+        .into_iter()
+        .map(|[a, b, c]| {
             if a < b && a < c {
                 [a, b, c]
             } else if b < c {

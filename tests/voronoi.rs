@@ -21,24 +21,24 @@ fn squared_distance(c: &ExactPoint, p: [f64; 2]) -> BigRational {
 /// Every structural and metric relation of the dual, checked exactly.
 fn check_dual(vor: &Voronoi<'_>) {
     let tri = vor.triangulation();
-    let n = tri.points().len();
+    let n = tri.point_count();
     let mut degree_sum = 0;
     for v in 0..vor.vertex_count() as u32 {
         let centre = vor.vertex_exact(v);
         let sites: Vec<u32> = vor.vertex_sites(v).collect();
         assert!(sites.len() >= 3, "vertex {v} has {} sites", sites.len());
-        let r2 = squared_distance(&centre, tri.points()[sites[0] as usize]);
+        let r2 = squared_distance(&centre, tri.point(sites[0]));
         for &p in &sites {
             assert_eq!(
-                squared_distance(&centre, tri.points()[p as usize]),
+                squared_distance(&centre, tri.point(p)),
                 r2,
                 "vertex {v} not equidistant"
             );
         }
         // No point strictly inside the circle: it is a Delaunay face.
-        for (i, &p) in tri.points().iter().enumerate() {
+        for i in 0..n as u32 {
             assert!(
-                squared_distance(&centre, p) >= r2,
+                squared_distance(&centre, tri.point(i)) >= r2,
                 "point {i} inside circle of vertex {v}"
             );
         }

@@ -65,7 +65,7 @@ pub fn run(args: &TriangulateArgs) -> Result<(), CliError> {
     let tri = triangulate_timed(&input, &points, &mut timings, |tri| {
         format!(
             "{} triangles, {} duplicates",
-            tri.triangles().len(),
+            tri.triangle_count(),
             tri.duplicates().len()
         )
     })?;

@@ -77,7 +77,7 @@ pub fn run(args: &VoronoiArgs) -> Result<(), CliError> {
     let points = input.read_points_timed(&mut timings)?;
 
     let tri = triangulate_timed(&input, &points, &mut timings, |tri| {
-        format!("{} triangles", tri.triangles().len())
+        format!("{} triangles", tri.triangle_count())
     })?;
 
     timings.begin(|| "building the Voronoi diagram".to_string());

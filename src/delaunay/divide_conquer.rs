@@ -27,7 +27,8 @@ use crate::kernel::static_filter::{Lifted, StaticFilter};
 use crate::kernel::{incircle, orient, Sign};
 use crate::predicates::{orient2d, Orientation};
 
-/// Triangulates validated points (finite, inside the exact envelope).
+/// Triangulates validated points (finite, inside the exact envelope). The result keeps the
+/// points in the order the construction leaves them in (Z order, see the module docs).
 pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
     if points.is_empty() {
         return Triangulation {
@@ -35,6 +36,8 @@ pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
             triangles: Vec::new(),
             halfedges: Vec::new(),
             hull: Vec::new(),
+            input_of: Vec::new(),
+            local_of: Vec::new(),
             duplicates: Vec::new(),
         };
     }
@@ -58,35 +61,47 @@ pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
         let start = extremes.min_x;
         let collinear = (0..mesh.tri.len() as u32).all(|t| mesh.is_ghost(t));
         if collinear {
-            hull = collinear_chain(&pts, |v| grid.index(items[v as usize]));
+            hull = collinear_chain(&pts);
         } else {
             let g = if mesh.tri[start.ghost as usize][1] == start.v {
                 start.ghost
             } else {
                 mesh.ring_next(start.ghost)
             };
-            drop(pts);
-            let done = mesh.finish(g, |v| grid.index(items[v as usize]), NO_TWIN);
+            let done = mesh.finish(g, NO_TWIN);
             (triangles, halfedges, hull) = (done.triangles, done.halfedges, done.hull);
         }
     } else {
-        hull = items.iter().map(|&item| grid.index(item)).collect();
+        hull = vec![0];
     }
-    drop(items); // before the copy of the points: the peak is the construction's
+    // The construction reorders points inside ranges (re-keyed clusters): the final order
+    // is the one the items are in now.
+    let input_of: Vec<u32> = items.iter().map(|&item| grid.index(item)).collect();
+    drop(items);
+    let mut local_of = vec![0u32; points.len()];
+    for (local, &input) in input_of.iter().enumerate() {
+        local_of[input as usize] = local as u32;
+    }
+    for &[duplicate, kept] in &ordered.duplicates {
+        local_of[duplicate as usize] = local_of[kept as usize];
+    }
+    pts.shrink_to_fit();
     Triangulation {
-        points: points.to_vec(),
+        points: pts,
         triangles,
         halfedges,
         hull,
+        input_of,
+        local_of,
         duplicates: ordered.duplicates,
     }
 }
 
-/// The input indices of collinear points in lexicographic order (their order along the line).
-fn collinear_chain(pts: &[[f64; 2]], name: impl Fn(u32) -> u32) -> Vec<u32> {
+/// Collinear points in lexicographic order (their order along the line).
+fn collinear_chain(pts: &[[f64; 2]]) -> Vec<u32> {
     let mut order: Vec<u32> = (0..pts.len() as u32).collect();
     order.sort_unstable_by(|&a, &b| lexicographic(pts[a as usize], pts[b as usize]));
-    order.iter().map(|&v| name(v)).collect()
+    order
 }
 
 /// Cut direction of a merge.

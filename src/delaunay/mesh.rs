@@ -234,16 +234,17 @@ impl Mesh {
 
     /// Finishes the triangulation: the hull counterclockwise from the ghost `g` of the hull
     /// edge out of its first point (`g = [·, first]`), and the triangles and twins without the
-    /// ghosts ([`NO_TWIN`](super::NO_TWIN) on the hull), every vertex `v` renamed `name(v)`.
+    /// ghosts ([`NO_TWIN`](super::NO_TWIN) on the hull). Vertices keep their construction
+    /// indices, which are the local indices of the finished triangulation.
     ///
     /// The real triangles in the last slots move into the ghosts' slots below them, so only as
-    /// many triangles move as there are hull edges; then one pass renames the vertices.
-    pub fn finish(mut self, g: u32, name: impl Fn(u32) -> u32, no_twin: u32) -> Finished {
+    /// many triangles move as there are hull edges.
+    pub fn finish(mut self, g: u32, no_twin: u32) -> Finished {
         let mut hull = Vec::new();
         let mut ghosts = Vec::new();
         let mut h = g;
         loop {
-            hull.push(name(self.tri[h as usize][1]));
+            hull.push(self.tri[h as usize][1]);
             ghosts.push(h);
             let hull_edge = self.twin[(3 * h) as usize];
             self.twin[hull_edge as usize] = no_twin;
@@ -275,9 +276,6 @@ impl Mesh {
         }
         self.tri.truncate(real);
         self.twin.truncate(3 * real);
-        for t in &mut self.tri {
-            *t = t.map(&name);
-        }
         self.tri.shrink_to_fit();
         self.twin.shrink_to_fit();
         Finished {
@@ -363,9 +361,9 @@ mod tests {
             m2.link(3 * k, 9 + k);
         }
         assert_glued(&m2);
-        let done = m2.finish(0, |v| v + 7, u32::MAX);
-        assert_eq!(done.triangles, vec![[7, 8, 9]]);
+        let done = m2.finish(0, u32::MAX);
+        assert_eq!(done.triangles, vec![[0, 1, 2]]);
         assert_eq!(done.halfedges, vec![u32::MAX; 3]);
-        assert_eq!(done.hull, vec![7, 8, 9]);
+        assert_eq!(done.hull, vec![0, 1, 2]);
     }
 }

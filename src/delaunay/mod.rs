@@ -4,6 +4,13 @@
 //! The construction store (`mesh`: triangles plus ghost triangles on the hull) exists only
 //! while the triangulation is built and turns into the compact, flat [`Triangulation`] in
 //! place; that is all later stages see.
+//!
+//! The points are renamed once, on the way in: the Z order (distinct points only,
+//! duplicates merged into their first occurrence) is the construction's and also the
+//! locality order every later pass wants, so the [`Triangulation`] keeps its topology in
+//! those *local* indices together with the translation from and to the caller's indices.
+//! The crate works on local indices throughout; the public API translates at the boundary,
+//! and a reconstruction translates its edges once, at the end.
 
 mod divide_conquer;
 mod mesh;

@@ -68,18 +68,21 @@ impl Triangulation {
     /// Together these make it a Delaunay triangulation of the distinct points: consistently
     /// oriented triangles glued along twins whose boundary is the convex hull cover it once,
     /// and local Delaunayhood everywhere implies the global empty-circle property.
+    ///
+    /// Also checks the translation to the caller's indices: local and caller indices map to
+    /// each other, and every caller point is either kept or an exact duplicate of an earlier
+    /// kept point. Point indices in errors are the caller's.
     pub fn validate(&self) -> Result<(), ValidationError> {
+        self.check_translation()?;
         let n = self.points.len();
-        let duplicate_of = self.check_duplicates()?;
-        let distinct = n - self.duplicates.len();
         if self.triangles.is_empty() {
-            return self.check_degenerate(&duplicate_of, distinct);
+            return self.check_degenerate();
         }
         let mut used = vec![false; n];
         for (t, tri) in self.triangles.iter().enumerate() {
             for &v in tri {
                 let v = v as usize;
-                if v >= n || duplicate_of[v].is_some() {
+                if v >= n {
                     return Err(ValidationError::BadVertex { triangle: t });
                 }
                 used[v] = true;
@@ -89,12 +92,14 @@ impl Triangulation {
                 return Err(ValidationError::NotCounterClockwise { triangle: t });
             }
         }
-        if let Some(point) = (0..n).find(|&i| !used[i] && duplicate_of[i].is_none()) {
-            return Err(ValidationError::PointUnaccounted { point });
+        if let Some(p) = (0..n).find(|&p| !used[p]) {
+            return Err(ValidationError::PointUnaccounted {
+                point: self.input_of[p] as usize,
+            });
         }
         self.check_twins()?;
         self.check_hull()?;
-        let expected = 2 * distinct - 2 - self.hull.len();
+        let expected = 2 * n - 2 - self.hull.len();
         if self.triangles.len() != expected {
             return Err(ValidationError::WrongTriangleCount {
                 found: self.triangles.len(),
@@ -104,45 +109,43 @@ impl Triangulation {
         self.check_locally_delaunay()
     }
 
-    /// Every duplicate pair names equal coordinates and an earlier kept point.
-    fn check_duplicates(&self) -> Result<Vec<Option<u32>>, ValidationError> {
-        let n = self.points.len();
-        let mut duplicate_of = vec![None; n];
-        for &[dup, kept] in &self.duplicates {
-            let (d, k) = (dup as usize, kept as usize);
-            let ok = d < n
-                && k < d
-                && self.points[d][0] == self.points[k][0]
-                && self.points[d][1] == self.points[k][1]
-                && duplicate_of[d].is_none();
-            if !ok {
-                return Err(ValidationError::PointUnaccounted { point: d.min(n) });
+    /// Local and caller indices map to each other; every duplicate pair names an earlier
+    /// kept point (hence equal coordinates), sorted by duplicate; every caller point is kept
+    /// or a duplicate.
+    fn check_translation(&self) -> Result<(), ValidationError> {
+        let (n, distinct) = (self.local_of.len(), self.points.len());
+        let unaccounted = |point: usize| Err(ValidationError::PointUnaccounted { point });
+        if self.input_of.len() != distinct {
+            return unaccounted(n.min(self.input_of.len()));
+        }
+        for (p, &i) in self.input_of.iter().enumerate() {
+            if i as usize >= n || self.local_of[i as usize] as usize != p {
+                return unaccounted(i as usize);
             }
-            duplicate_of[d] = Some(kept);
         }
-        if let Some(&[_, kept]) = self
-            .duplicates
-            .iter()
-            .find(|&&[_, kept]| duplicate_of[kept as usize].is_some())
-        {
-            return Err(ValidationError::PointUnaccounted {
-                point: kept as usize,
-            });
+        let mut previous = None;
+        for &[dup, kept] in &self.duplicates {
+            let ok = (dup as usize) < n
+                && kept < dup
+                && previous < Some(dup)
+                && self.local_of[dup as usize] == self.local_of[kept as usize]
+                && !self.is_duplicate(kept)
+                && self.is_duplicate(dup);
+            if !ok {
+                return unaccounted((dup as usize).min(n));
+            }
+            previous = Some(dup);
         }
-        Ok(duplicate_of)
+        if distinct + self.duplicates.len() != n {
+            return unaccounted(n);
+        }
+        Ok(())
     }
 
     /// No triangles: all distinct points must be collinear and listed along the line.
-    fn check_degenerate(
-        &self,
-        duplicate_of: &[Option<u32>],
-        distinct: usize,
-    ) -> Result<(), ValidationError> {
-        if self.hull.len() != distinct
-            || self
-                .hull
-                .iter()
-                .any(|&v| v as usize >= self.points.len() || duplicate_of[v as usize].is_some())
+    fn check_degenerate(&self) -> Result<(), ValidationError> {
+        if self.hull.len() != self.points.len()
+            || self.hull.iter().any(|&v| v as usize >= self.points.len())
         {
             return Err(ValidationError::HullMismatch(
                 "degenerate hull must list every distinct point once".into(),
@@ -167,7 +170,9 @@ impl Triangulation {
         let mut seen = vec![false; self.points.len()];
         for &v in &self.hull {
             if std::mem::replace(&mut seen[v as usize], true) {
-                return Err(ValidationError::PointUnaccounted { point: v as usize });
+                return Err(ValidationError::PointUnaccounted {
+                    point: self.input_of[v as usize] as usize,
+                });
             }
         }
         Ok(())
@@ -187,8 +192,8 @@ impl Triangulation {
             let ok = t < self.halfedges.len()
                 && t != e
                 && self.halfedges[t] as usize == e
-                && self.halfedge_origin(t) == self.halfedge_destination(e)
-                && self.halfedge_destination(t) == self.halfedge_origin(e);
+                && self.org(t) == self.dest(e)
+                && self.dest(t) == self.org(e);
             if !ok {
                 return Err(ValidationError::TwinMismatch { halfedge: e });
             }
@@ -203,7 +208,7 @@ impl Triangulation {
         let h = self.hull.len();
         let mut boundary: Vec<(u32, u32)> = (0..self.halfedges.len())
             .filter(|&e| self.halfedges[e] == NO_TWIN)
-            .map(|e| (self.halfedge_origin(e), self.halfedge_destination(e)))
+            .map(|e| (self.org(e), self.dest(e)))
             .collect();
         boundary.sort_unstable();
         let mut expected: Vec<(u32, u32)> = (0..h)
@@ -239,8 +244,7 @@ impl Triangulation {
                 continue;
             }
             let t = twin as usize;
-            let opposite =
-                self.points[self.halfedge_origin(next_in_triangle(next_in_triangle(t))) as usize];
+            let opposite = self.points[self.org(next_in_triangle(next_in_triangle(t))) as usize];
             let [a, b, c] = self.triangle_points(e / 3);
             if incircle(a, b, c, opposite) == CirclePosition::Inside {
                 return Err(ValidationError::NotLocallyDelaunay { halfedge: e });
@@ -285,7 +289,8 @@ mod tests {
         let mut tri = triangulate(&[[0.0, 0.0], [3.0, -1.0], [6.0, 0.0], [3.0, 1.0]]).unwrap();
         tri.validate().unwrap();
         // Rebuild with the other diagonal: (0, 2) is the long one and fails incircle.
-        tri.triangles = vec![[0, 1, 2], [0, 2, 3]];
+        let l = |i| tri.local_index(i);
+        tri.triangles = vec![[l(0), l(1), l(2)], [l(0), l(2), l(3)]];
         tri.halfedges = vec![NO_TWIN, NO_TWIN, 3, 2, NO_TWIN, NO_TWIN];
         assert_eq!(
             tri.validate(),
@@ -296,8 +301,9 @@ mod tests {
     #[test]
     fn the_checker_catches_a_missing_point_and_a_wrong_hull() {
         let mut tri = square_with_centre();
-        tri.duplicates.clear();
         tri.points.push([9.0, 9.0]);
+        tri.input_of.push(5);
+        tri.local_of.push(5);
         assert_eq!(
             tri.validate(),
             Err(ValidationError::PointUnaccounted { point: 5 })

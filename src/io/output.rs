@@ -84,9 +84,19 @@ const BUFFER_BYTES: usize = 1 << 16;
 #[derive(Serialize)]
 struct TriangulationJson<'a> {
     points: usize,
-    triangles: &'a [[u32; 3]],
-    hull: &'a [u32],
+    triangles: Triangles<'a>,
+    hull: Vec<u32>,
     duplicates: &'a [[u32; 2]],
+}
+
+/// Serializes the triangles (caller indices) one at a time, without a copy of them all.
+struct Triangles<'a>(&'a Triangulation);
+
+impl Serialize for Triangles<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let tri = self.0;
+        serializer.collect_seq((0..tri.triangle_count()).map(|t| tri.triangle(t)))
+    }
 }
 
 /// Writes `tri` as the contract's JSON object, followed by a newline (see the
@@ -107,8 +117,8 @@ struct TriangulationJson<'a> {
 pub fn write_triangulation_json<W: Write>(tri: &Triangulation, out: W) -> io::Result<()> {
     let mut out = BufWriter::with_capacity(BUFFER_BYTES, out);
     let json = TriangulationJson {
-        points: tri.points().len(),
-        triangles: tri.triangles(),
+        points: tri.point_count(),
+        triangles: Triangles(tri),
         hull: tri.hull(),
         duplicates: tri.duplicates(),
     };
@@ -140,15 +150,15 @@ pub fn write_triangulation_text<W: Write>(tri: &Triangulation, out: W) -> io::Re
     writeln!(
         out,
         "# wdm-crust triangulation: {} points, {} triangles, {} hull points, {} duplicates",
-        tri.points().len(),
-        tri.triangles().len(),
+        tri.point_count(),
+        tri.triangle_count(),
         tri.hull().len(),
         tri.duplicates().len()
     )?;
     let mut line = IndexLine::default();
     if !tri.hull().is_empty() {
         out.write_all(b"# hull")?;
-        for &i in tri.hull() {
+        for i in tri.hull() {
             line.clear();
             line.push(i);
             out.write_all(line.as_bytes())?;
@@ -163,9 +173,9 @@ pub fn write_triangulation_text<W: Write>(tri: &Triangulation, out: W) -> io::Re
         out.write_all(line.as_bytes())?;
         out.write_all(b"\n")?;
     }
-    for triangle in tri.triangles() {
+    for t in 0..tri.triangle_count() {
         line.clear();
-        for &i in triangle {
+        for i in tri.triangle(t) {
             line.push(i);
         }
         line.end();
@@ -188,7 +198,7 @@ struct Cells<'v, 'a>(&'v Voronoi<'a>);
 
 impl Serialize for Cells<'_, '_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        let n = self.0.triangulation().points().len();
+        let n = self.0.triangulation().point_count();
         let mut seq = serializer.serialize_seq(Some(n))?;
         let mut cell = Vec::new();
         for p in 0..n as u32 {
@@ -256,7 +266,7 @@ pub fn write_voronoi_text<W: Write>(vor: &Voronoi<'_>, out: W) -> io::Result<()>
     writeln!(
         out,
         "# wdm-crust voronoi: {} points, {} vertices, {} edges, {} rays",
-        tri.points().len(),
+        tri.point_count(),
         vor.vertex_count(),
         edges.len(),
         vor.rays().count()
@@ -285,7 +295,7 @@ pub fn write_voronoi_text<W: Write>(vor: &Voronoi<'_>, out: W) -> io::Result<()>
     for (_, v, [dx, dy]) in vor.rays() {
         writeln!(out, "r {v} {dx:?} {dy:?}")?;
     }
-    for p in 0..tri.points().len() as u32 {
+    for p in 0..tri.point_count() as u32 {
         line.clear();
         line.push(p);
         for v in vor.cell(p) {
@@ -332,7 +342,7 @@ pub fn write_reconstruction_json<W: Write>(rec: &Reconstruction, out: W) -> io::
     let mut out = BufWriter::with_capacity(BUFFER_BYTES, out);
     let json = ReconstructionJson {
         algorithm: rec.algorithm().name(),
-        points: rec.triangulation().points().len(),
+        points: rec.triangulation().point_count(),
         edges: rec.edges(),
         curves: rec.curves(),
         medial_axis: rec.medial_axis(),

@@ -91,10 +91,14 @@ pub fn write_reconstruction_svg<W: Write>(
 ) -> io::Result<()> {
     let mut out = BufWriter::with_capacity(1 << 16, out);
     let tri = rec.triangulation();
-    let points = tri.points();
+    // The caller's points, duplicates included: everything drawn is in caller indices.
+    let points: Vec<[f64; 2]> = (0..tri.point_count() as u32)
+        .map(|i| tri.point(i))
+        .collect();
+    let points = &points[..];
     let untouched = rec.untouched_points();
-    let style = Style::new(rec);
-    let legend = legend_items(rec, options, &untouched);
+    let style = Style::new(rec, points);
+    let legend = legend_items(rec, options, &untouched, points);
     let frame = Frame::new(points, &legend);
     let mut w = SvgWriter {
         out: &mut out,
@@ -255,8 +259,7 @@ struct Style {
 }
 
 impl Style {
-    fn new(rec: &Reconstruction) -> Self {
-        let points = rec.triangulation().points();
+    fn new(rec: &Reconstruction, points: &[[f64; 2]]) -> Self {
         let (min, max) = bounding_box(points);
         let extent = (max[0] - min[0]).max(max[1] - min[1]);
         let length = |&[a, b]: &[u32; 2]| {
@@ -578,10 +581,15 @@ impl Legend {
 }
 
 /// The legend entries for what is drawn, with counts.
-fn legend_items(rec: &Reconstruction, options: &SvgOptions, untouched: &[u32]) -> Legend {
+fn legend_items(
+    rec: &Reconstruction,
+    options: &SvgOptions,
+    untouched: &[u32],
+    points: &[[f64; 2]],
+) -> Legend {
     let tri = rec.triangulation();
-    let n = tri.points().len();
-    let style = Style::new(rec);
+    let n = tri.point_count();
+    let style = Style::new(rec, points);
     let name = match rec.algorithm() {
         Algorithm::Wdm => "WDM_CRUST",
         Algorithm::Crust => "Crust",

@@ -65,9 +65,14 @@ use crate::kernel::mixed::MixedPoints;
 /// # Ok::<(), wdm_crust::Error>(())
 /// ```
 pub fn crust_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
+    tri.to_input_edges(crust_edges_local(tri))
+}
+
+/// [`crust_edges`] in local indices.
+pub(crate) fn crust_edges_local(tri: &Triangulation) -> Vec<[u32; 2]> {
     if tri.is_degenerate() {
         let mut chain: Vec<[u32; 2]> = tri
-            .hull()
+            .hull
             .windows(2)
             .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
             .collect();
@@ -75,15 +80,15 @@ pub fn crust_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
         return chain;
     }
     let vor = tri.voronoi();
-    let n = tri.points().len();
+    let n = tri.points.len();
     let m = vor.vertex_count();
     let triangles = (0..m as u32).map(|v| vor.vertex_triangle(v)).collect();
-    let points = MixedPoints::new(tri.points(), triangles);
+    let points = MixedPoints::new(&tri.points, triangles);
     let mut dt = Dt::new(tri, &points, n + m);
     let order = hilbert_order(vor.vertex_positions());
     let mut near = order
         .first()
-        .and_then(|&v| vor.vertex_sites(v).next())
+        .and_then(|&v| vor.vertex_sites_local(v).next())
         .unwrap_or(0);
     for v in order {
         let w = (n + v as usize) as u32;

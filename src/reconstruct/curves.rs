@@ -12,10 +12,32 @@ pub struct Curve {
     pub points: Vec<u32>,
 }
 
-/// Splits the edge graph into maximal paths between points of degree ≠ 2 (open chains) and
-/// cycles of degree-2 points (closed loops). Every edge is in exactly one curve.
-pub fn assemble(point_count: usize, edges: &[[u32; 2]], points: &[[f64; 2]]) -> Vec<Curve> {
-    let adjacency = Adjacency::new(point_count, edges);
+/// Splits the edge graph of distinct `edges` over points `0..point_count` into maximal paths
+/// between points of degree ≠ 2 (open chains) and cycles of degree-2 points (closed loops),
+/// given in the names `name(p)`. Every edge is in exactly one curve.
+///
+/// The result depends only on the edge set and the names (not on the order of `edges` nor
+/// on the indices): open chains first, sorted by their first two points, each starting at
+/// its smaller end (a chain from a junction back to itself runs towards its smaller
+/// neighbour first); then closed loops by their smallest point, each starting there,
+/// towards its smaller neighbour, reversed if that runs clockwise. That is the order in
+/// which scanning the names upwards finds them.
+///
+/// The walks run over the edges' own indices: in the pipeline those are the
+/// triangulation's local ones, so they stay local in memory while the result is in the
+/// caller's indices.
+pub(crate) fn assemble_named(
+    point_count: usize,
+    edges: &[[u32; 2]],
+    points: &[[f64; 2]],
+    name: impl Fn(u32) -> u32,
+) -> Vec<Curve> {
+    let mut adjacency = Adjacency::new(point_count, edges);
+    // Each row by the names of the neighbours: the order of the walks out of a point.
+    for p in 0..point_count {
+        let (lo, hi) = (adjacency.start[p] as usize, adjacency.start[p + 1] as usize);
+        adjacency.entries[lo..hi].sort_unstable_by_key(|&(_, q)| name(q));
+    }
     let mut used = vec![false; edges.len()];
     let mut curves = Vec::new();
     // Open chains: start at every end or junction, along every unused edge.
@@ -27,12 +49,19 @@ pub fn assemble(point_count: usize, edges: &[[u32; 2]], points: &[[f64; 2]]) -> 
             if used[first_edge as usize] {
                 continue;
             }
-            let chain = walk(&adjacency, &mut used, start, first_edge, |p| {
+            let mut chain = walk(&adjacency, &mut used, start, first_edge, |p| {
                 adjacency.degree(p) != 2
             });
+            // From the smaller end; a chain from a junction back to itself towards its
+            // smaller neighbour first.
+            let (first, last) = (name(chain[0]), name(chain[chain.len() - 1]));
+            let k = chain.len();
+            if last < first || (last == first && k > 2 && name(chain[1]) > name(chain[k - 2])) {
+                chain.reverse();
+            }
             curves.push(Curve {
                 closed: false,
-                points: chain,
+                points: chain.into_iter().map(&name).collect(),
             });
         }
     }
@@ -45,56 +74,26 @@ pub fn assemble(point_count: usize, edges: &[[u32; 2]], points: &[[f64; 2]]) -> 
         {
             let mut cycle = walk(&adjacency, &mut used, start, first_edge, |p| p == start);
             cycle.pop(); // the walk ends back at the start
-            orient_counterclockwise(&mut cycle, points);
+            orient_counterclockwise(&mut cycle, points, &name);
             curves.push(Curve {
                 closed: true,
-                points: cycle,
+                points: cycle.into_iter().map(&name).collect(),
             });
         }
     }
-    curves
-}
-
-/// The curves of [`assemble`] on renamed points, renamed back by `name` (new → old index):
-/// the same list, curve for curve and point for point, that [`assemble`] gives on the old
-/// indices, with the same order of curves.
-///
-/// That order, which `assemble` produces by scanning start points upwards, is: open chains
-/// first, sorted by their first two points, each starting at its smaller end (a chain from a
-/// junction back to itself runs towards its smaller neighbour first); then closed loops by
-/// their smallest point, each starting there, counterclockwise.
-pub fn rename(curves: Vec<Curve>, name: &[u32], points: &[[f64; 2]]) -> Vec<Curve> {
-    let mut curves: Vec<Curve> = curves
-        .into_iter()
-        .map(|mut curve| {
-            for p in &mut curve.points {
-                *p = name[*p as usize];
-            }
-            let c = &mut curve.points;
-            if curve.closed {
-                // Redo what `assemble` does from its walk, in the same order of summation:
-                // start at the smallest point, towards its smaller neighbour, then orient.
-                if let Some(min_at) = (0..c.len()).min_by_key(|&i| c[i]) {
-                    c.rotate_left(min_at);
-                }
-                if c.len() > 2 && c[1] > c[c.len() - 1] {
-                    c[1..].reverse();
-                }
-                orient_counterclockwise(c, points);
-            } else if let (Some(&first), Some(&last)) = (c.first(), c.last()) {
-                if last < first || (last == first && c.len() > 2 && c[1] > c[c.len() - 2]) {
-                    c.reverse();
-                }
-            }
-            curve
-        })
-        .collect();
+    // Stable, and already sorted when the names are the indices.
     curves.sort_by(|a, b| {
         a.closed
             .cmp(&b.closed)
             .then_with(|| a.points.iter().take(2).cmp(b.points.iter().take(2)))
     });
     curves
+}
+
+/// [`assemble_named`] with the indices as names.
+#[cfg(test)]
+pub fn assemble(point_count: usize, edges: &[[u32; 2]], points: &[[f64; 2]]) -> Vec<Curve> {
+    assemble_named(point_count, edges, points, |p| p)
 }
 
 /// Points with at least one edge and a degree other than 2: curve ends and junctions.
@@ -153,10 +152,20 @@ fn walk(
     chain
 }
 
-/// Reverses a loop if its signed area is negative, then rotates it to start at its smallest
-/// index. (Presentation only: no decision depends on it.)
-fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]]) {
+/// Puts a loop in its canonical form by names: from its smallest name towards the smaller
+/// neighbour, reversed if its signed area is negative (summed in that order, so the result
+/// does not depend on where the walk started), then from its smallest name again.
+fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]], name: impl Fn(u32) -> u32) {
     let n = cycle.len();
+    let start_at_smallest = |cycle: &mut [u32]| {
+        if let Some(min_at) = (0..n).min_by_key(|&i| name(cycle[i])) {
+            cycle.rotate_left(min_at);
+        }
+    };
+    start_at_smallest(cycle);
+    if n > 2 && name(cycle[1]) > name(cycle[n - 1]) {
+        cycle[1..].reverse();
+    }
     let mut twice_area = 0.0;
     for i in 0..n {
         let a = points[cycle[i] as usize];
@@ -165,9 +174,7 @@ fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]]) {
     }
     if twice_area < 0.0 {
         cycle.reverse();
-    }
-    if let Some(min_at) = (0..n).min_by_key(|&i| cycle[i]) {
-        cycle.rotate_left(min_at);
+        start_at_smallest(cycle);
     }
 }
 
@@ -260,7 +267,7 @@ mod tests {
     }
 
     #[test]
-    fn renaming_back_gives_the_curves_of_the_old_names() {
+    fn curves_come_in_the_canonical_order() {
         use wdm_crust_testkit::Rng;
         let mut rng = Rng::new(17);
         for round in 0..300 {
@@ -284,32 +291,47 @@ mod tests {
             }
             edges.sort_unstable();
             edges.dedup();
-            let expected = assemble(n, &edges, &points);
-
-            let order = rng.permutation(n); // new index of old point i
-            let new_of_old: Vec<u32> = order.iter().map(|&k| k as u32).collect();
-            let mut old_of_new = vec![0u32; n];
-            for (old, &new) in new_of_old.iter().enumerate() {
-                old_of_new[new as usize] = old as u32;
+            let curves = assemble(n, &edges, &points);
+            // Walking over other indices and naming the points gives what assembling on the
+            // names gives.
+            let name: Vec<u32> = rng.permutation(n).iter().map(|&k| k as u32).collect();
+            let mut named_points = vec![[0.0; 2]; n];
+            for (p, &q) in name.iter().enumerate() {
+                named_points[q as usize] = points[p];
             }
-            let mut renamed_points = vec![[0.0; 2]; n];
-            for (old, &new) in new_of_old.iter().enumerate() {
-                renamed_points[new as usize] = points[old];
-            }
-            let mut renamed_edges: Vec<[u32; 2]> = edges
+            let mut named_edges: Vec<[u32; 2]> = edges
                 .iter()
                 .map(|&[a, b]| {
-                    let (a, b) = (new_of_old[a as usize], new_of_old[b as usize]);
+                    let (a, b) = (name[a as usize], name[b as usize]);
                     [a.min(b), a.max(b)]
                 })
                 .collect();
-            renamed_edges.sort_unstable();
-            let local = assemble(n, &renamed_edges, &renamed_points);
+            named_edges.sort_unstable();
+            let mut shuffled = edges.clone();
+            rng.shuffle(&mut shuffled);
             assert_eq!(
-                rename(local, &old_of_new, &points),
-                expected,
+                assemble_named(n, &shuffled, &points, |p| name[p as usize]),
+                assemble(n, &named_edges, &named_points),
                 "round {round}"
             );
+            let key = |c: &Curve| {
+                (
+                    c.closed,
+                    c.points.iter().take(2).copied().collect::<Vec<_>>(),
+                )
+            };
+            assert!(
+                curves.windows(2).all(|w| key(&w[0]) <= key(&w[1])),
+                "round {round}: order"
+            );
+            for c in &curves {
+                let (first, last) = (c.points[0], c.points[c.points.len() - 1]);
+                if c.closed {
+                    assert_eq!(Some(&first), c.points.iter().min(), "round {round}");
+                } else {
+                    assert!(first <= last, "round {round}: chain from its smaller end");
+                }
+            }
         }
     }
 

@@ -28,12 +28,12 @@ impl EdgeClass {
     }
 }
 
-/// Delaunay edges dual to branch edges, each once, unsorted. A ray's far end is the root
+/// Delaunay edges dual to branch edges, each once, unsorted, in local indices. A ray's far end is the root
 /// vertex, always outer.
 pub(super) fn wdm_crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
     let mut edges = Vec::new();
     for v in 0..vor.vertex_count() as u32 {
-        for edge in vor.vertex_edges(v) {
+        for edge in vor.vertex_edges_local(v) {
             let far = match edge.to {
                 EdgeEnd::Vertex(u) if u < v => continue, // each finite edge once
                 EdgeEnd::Vertex(u) => labels[u as usize],
@@ -69,9 +69,9 @@ pub(super) fn medial_axis(vor: &Voronoi<'_>, labels: &[Label]) -> MedialAxis {
     axis
 }
 
-/// Collinear or tiny input: the chain along the line is the reconstruction.
+/// Collinear or tiny input: the chain along the line is the reconstruction (local indices).
 pub(super) fn chain_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
-    tri.hull()
+    tri.hull
         .windows(2)
         .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
         .collect()

@@ -49,16 +49,21 @@ use crate::kernel::Sign;
 /// # Ok::<(), wdm_crust::Error>(())
 /// ```
 pub fn nn_crust_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
+    tri.to_input_edges(nn_crust_edges_local(tri))
+}
+
+/// [`nn_crust_edges`] in local indices.
+pub(crate) fn nn_crust_edges_local(tri: &Triangulation) -> Vec<[u32; 2]> {
     if tri.is_degenerate() {
         let mut chain: Vec<[u32; 2]> = tri
-            .hull()
+            .hull
             .windows(2)
             .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
             .collect();
         chain.sort_unstable();
         return chain;
     }
-    let points = tri.points();
+    let points = &tri.points;
     let neighbours = delaunay_graph(tri);
     let mut edges = Vec::new();
     for p in 0..points.len() {
@@ -96,11 +101,11 @@ struct Adjacency {
 
 /// The neighbours of every point along edges with a dual Voronoi edge.
 fn delaunay_graph(tri: &Triangulation) -> Adjacency {
-    let points = tri.points();
+    let points = &tri.points;
     let halfedges = tri.halfedges();
     let mut pairs: Vec<(u32, u32)> = Vec::with_capacity(halfedges.len() + tri.hull().len());
     for (e, &twin) in halfedges.iter().enumerate() {
-        let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
+        let (a, b) = (tri.org(e), tri.dest(e));
         if twin == NO_TWIN {
             pairs.push((a, b));
             pairs.push((b, a));
@@ -111,14 +116,14 @@ fn delaunay_graph(tri: &Triangulation) -> Adjacency {
         if (twin as usize) < e {
             continue;
         }
-        let c = tri.halfedge_origin(prev_in_triangle(e));
-        let d = tri.halfedge_origin(prev_in_triangle(twin as usize));
+        let c = tri.org(prev_in_triangle(e));
+        let d = tri.org(prev_in_triangle(twin as usize));
         let at = |i: u32| points[i as usize];
         if incircle(at(a), at(b), at(c), at(d)) != CirclePosition::On {
             pairs.push((a, b));
             pairs.push((b, a));
         }
-        debug_assert_eq!(tri.halfedge_origin(next_in_triangle(e)), b);
+        debug_assert_eq!(tri.org(next_in_triangle(e)), b);
     }
     pairs.sort_unstable();
     let mut start = vec![0usize; points.len() + 1];

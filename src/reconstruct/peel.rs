@@ -1,5 +1,6 @@
 //! Peeling: nested curves (holes) by further passes on the points the crust left untouched,
-//! and which inner Voronoi vertices those holes take away from the medial axis.
+//! and which inner Voronoi vertices those holes take away from the medial axis. All point
+//! indices here are local to the full triangulation, except the curves' (see [`hole_edges`]).
 
 use super::curves::{Adjacency, Curve};
 use super::extract::wdm_crust_edges;
@@ -8,16 +9,13 @@ use super::wdm;
 use crate::delaunay::{triangulate, Triangulation};
 use crate::voronoi::{EdgeEnd, Voronoi};
 
-/// Distinct points without an edge.
-pub(super) fn untouched(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<u32> {
-    let n = tri.points().len();
+/// Points without an edge (local indices: duplicates are not points here).
+fn untouched(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<u32> {
+    let n = tri.points.len();
     let mut touched = vec![false; n];
     for &[a, b] in edges {
         touched[a as usize] = true;
         touched[b as usize] = true;
-    }
-    for &[dup, _] in tri.duplicates() {
-        touched[dup as usize] = true;
     }
     (0..n as u32).filter(|&p| !touched[p as usize]).collect()
 }
@@ -32,7 +30,7 @@ pub(super) fn untouched(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<u32> {
 /// across the curve already found.
 pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Options) -> Peeling {
     let tri = full.triangulation();
-    let points = tri.points();
+    let points = &tri.points;
     let mut budget = options.peeling_budget().saturating_mul(points.len());
     let mut extra = 0;
     loop {
@@ -56,11 +54,13 @@ pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
             return Peeling::done(extra);
         }
         let vor = sub.voronoi();
-        let flow = wdm::label_vertices(&vor, options.label_rule());
+        let flow = wdm::label_vertices_local(&vor, options.label_rule());
+        // `sub`'s caller indices are positions in `rest`.
         let found: Vec<[u32; 2]> = wdm_crust_edges(&vor, &flow.labels)
             .iter()
             .map(|&[a, b]| {
-                let (a, b) = (rest[a as usize], rest[b as usize]);
+                let at = |p: u32| rest[sub.input_index(p) as usize];
+                let (a, b) = (at(a), at(b));
                 [a.min(b), a.max(b)]
             })
             .filter(|&[a, b]| full.is_delaunay_edge(a, b))
@@ -100,18 +100,24 @@ impl Peeling {
 /// the result depend on the search order, hence on the input order (a fuzz finding). A
 /// loop through an edge without a dual (inside a merged cocircular face) cannot separate
 /// that face's vertex and is not counted either.
+///
+/// The curves are the final ones, in caller indices; `first_pass` (sorted) and the result
+/// are in local indices.
 pub(super) fn hole_edges(
     vor: &Voronoi<'_>,
     curves: &[Curve],
     first_pass: &[[u32; 2]],
 ) -> Vec<[u32; 2]> {
+    let tri = vor.triangulation();
     let mut holes = Vec::new();
     for curve in curves.iter().filter(|c| c.closed) {
+        let local = |i: &u32| tri.local_index(*i);
         let loop_edges = curve
             .points
             .iter()
-            .zip(curve.points.iter().cycle().skip(1))
-            .map(|(&a, &b)| [a.min(b), a.max(b)]);
+            .map(local)
+            .zip(curve.points.iter().cycle().skip(1).map(local))
+            .map(|(a, b)| [a.min(b), a.max(b)]);
         let is_hole = loop_edges.clone().all(|[a, b]| {
             first_pass.binary_search(&[a, b]).is_err()
                 && vor.delaunay_halfedge(a, b).is_some_and(|e| vor.has_dual(e))
@@ -130,11 +136,11 @@ pub(super) fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> 
     let tri = vor.triangulation();
     // Crust neighbours of every point (two for most): a lookup touches one short row
     // instead of a binary search over all edges.
-    let crust = Adjacency::new(tri.points().len(), edges);
+    let crust = Adjacency::new(tri.points.len(), edges);
     let is_crust = |e: u32| {
-        let b = tri.halfedge_destination(e as usize);
+        let b = tri.dest(e as usize);
         crust
-            .neighbours(tri.halfedge_origin(e as usize))
+            .neighbours(tri.org(e as usize))
             .iter()
             .any(|&(_, q)| q == b)
     };
@@ -150,7 +156,7 @@ pub(super) fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> 
         }
     }
     while let Some(v) = queue.pop_front() {
-        for edge in vor.vertex_edges(v) {
+        for edge in vor.vertex_edges_local(v) {
             if let EdgeEnd::Vertex(u) = edge.to {
                 if !seen[u as usize] {
                     seen[u as usize] = true;

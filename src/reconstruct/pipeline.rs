@@ -74,38 +74,37 @@ pub fn reconstruct_observed(
         on_phase(phase, clock.elapsed());
         clock = std::time::Instant::now();
     };
-    let mut triangulation = triangulate(points)?;
+    let triangulation = triangulate(points)?;
     lap(Phase::Triangulate);
+    // Everything runs on the triangulation's local indices (its locality order); the
+    // curves and edges come out in the caller's indices.
     if options.algorithm() != Algorithm::Wdm {
         let edges = if triangulation.is_degenerate() {
             chain_edges(&triangulation)
         } else if options.algorithm() == Algorithm::Crust {
-            crust::crust_edges(&triangulation)
+            crust::crust_edges_local(&triangulation)
         } else {
-            nn_crust::nn_crust_edges(&triangulation)
+            nn_crust::nn_crust_edges_local(&triangulation)
         };
-        let axis = MedialAxis::default();
-        let rec = finish(
-            options.algorithm(),
+        let curves = assemble(&triangulation, &edges);
+        let edges = triangulation.to_input_edges(edges);
+        let rec = Reconstruction {
+            algorithm: options.algorithm(),
             triangulation,
-            Vec::new(),
+            labels: Vec::new(),
             edges,
-            axis,
-            1,
-        );
+            curves,
+            medial_axis: MedialAxis::default(),
+            passes: 1,
+            budget_exhausted: false,
+        };
         lap(Phase::Extract);
         return Ok(rec);
     }
-    // Everything after the triangulation runs on points renamed for locality (see
-    // `Triangulation::locality_renaming`; 1.5–2× faster on shuffled input) and is renamed
-    // back at the end. Triangle and half-edge ids, hence Voronoi vertex ids and labels, do
-    // not change.
-    let renaming = triangulation.locality_renaming();
-    triangulation.rename_points(&renaming.new_of_old);
-    let (labels, mut edges, medial_axis, peeling, local_curves) = {
+    let (labels, edges, curves, medial_axis, peeling) = {
         let vor = triangulation.voronoi();
         lap(Phase::Voronoi);
-        let flow = wdm::label_vertices(&vor, options.label_rule());
+        let flow = wdm::label_vertices_local(&vor, options.label_rule());
         lap(Phase::Label);
         let mut edges = if triangulation.is_degenerate() {
             chain_edges(&triangulation)
@@ -124,9 +123,8 @@ pub fn reconstruct_observed(
             first_pass.extend_from_slice(&edges[..first_pass_len]);
             first_pass.sort_unstable();
         }
-        edges.sort_unstable();
-        edges.dedup();
-        let curves = curves::assemble(points.len(), &edges, triangulation.points());
+        let curves = assemble(&triangulation, &edges);
+        let edges = triangulation.to_input_edges(edges);
         let holes = if holes_possible {
             hole_edges(&vor, &curves, &first_pass)
         } else {
@@ -152,16 +150,8 @@ pub fn reconstruct_observed(
                 .collect();
             medial_axis(&vor, &combined)
         };
-        (flow.labels, edges, axis, peeling, curves)
+        (flow.labels, edges, curves, axis, peeling)
     };
-    let old = &renaming.old_of_new;
-    triangulation.rename_points(old);
-    for edge in &mut edges {
-        let [a, b] = edge.map(|p| old[p as usize]);
-        *edge = [a.min(b), a.max(b)];
-    }
-    edges.sort_unstable();
-    let curves = curves::rename(local_curves, old, points);
     let rec = Reconstruction {
         algorithm: options.algorithm(),
         triangulation,
@@ -176,45 +166,52 @@ pub fn reconstruct_observed(
     Ok(rec)
 }
 
-/// Sorts the edges and assembles the curves.
-fn finish(
-    algorithm: Algorithm,
-    triangulation: Triangulation,
-    labels: Vec<Label>,
-    mut edges: Vec<[u32; 2]>,
-    medial_axis: MedialAxis,
-    passes: usize,
-) -> Reconstruction {
-    edges.sort_unstable();
-    edges.dedup();
-    let points = triangulation.points();
-    let curves = curves::assemble(points.len(), &edges, points);
-    Reconstruction {
-        algorithm,
-        triangulation,
-        labels,
-        edges,
-        curves,
-        medial_axis,
-        passes,
-        budget_exhausted: false,
-    }
+/// The curves of distinct local `edges`, in caller indices (see
+/// [`curves::assemble_named`]).
+fn assemble(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<curves::Curve> {
+    curves::assemble_named(tri.points.len(), edges, &tri.points, |p| tri.input_index(p))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::reconstruct::extract::EdgeClass;
+    use crate::voronoi::{EdgeEnd, Voronoi};
+    use std::collections::BTreeSet;
     use wdm_crust_testkit::Rng;
 
-    /// The pipeline runs on renamed points; its result must be what the same steps give on
-    /// the caller's indices directly.
+    /// WDM_CRUST edges off the public view of the dual (caller indices).
+    fn public_crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
+        let mut edges = Vec::new();
+        for v in 0..vor.vertex_count() as u32 {
+            for edge in vor.vertex_edges(v) {
+                let far = match edge.to {
+                    EdgeEnd::Vertex(u) => labels[u as usize],
+                    EdgeEnd::Infinity => Label::Outer,
+                };
+                if EdgeClass::of(labels[v as usize], far) == EdgeClass::Branch {
+                    let [a, b] = edge.sites;
+                    edges.push([a.min(b), a.max(b)]);
+                }
+            }
+        }
+        edges.sort_unstable();
+        edges.dedup();
+        edges
+    }
+
+    /// The pipeline runs on local indices and translates once; its result must be what the
+    /// same steps give through the public API alone, on the caller's indices: peeling
+    /// included, redone here on caller indices (sub-triangulations of the untouched points,
+    /// their crust mapped back through the subset, kept where it is a Delaunay edge).
     #[test]
-    fn renamed_pipeline_equals_the_direct_one() {
+    fn the_pipeline_equals_its_steps_on_caller_indices() {
         let mut rng = Rng::new(3);
         let mut peeled = 0;
         for round in 0..40 {
             let n = 20 + rng.below(400);
-            // Two nested noisy loops (so peeling runs) plus a few scattered points, shuffled.
+            // Two nested noisy loops (so peeling runs) plus a few scattered points and
+            // duplicates, shuffled.
             let mut points: Vec<[f64; 2]> = (0..n)
                 .map(|i| {
                     let t = i as f64 / n as f64 * std::f64::consts::TAU;
@@ -223,6 +220,10 @@ mod tests {
                 })
                 .collect();
             points.extend((0..rng.below(5)).map(|_| [rng.range(-1.5, 1.5), rng.f64()]));
+            for _ in 0..rng.below(4) {
+                let p = points[rng.below(points.len())];
+                points.push(p);
+            }
             rng.shuffle(&mut points);
             for peeling in [false, true] {
                 let options = Options::new().with_peeling(peeling);
@@ -232,14 +233,48 @@ mod tests {
                 let vor = tri.voronoi();
                 let flow = wdm::label_vertices(&vor, options.label_rule());
                 assert_eq!(rec.labels(), &flow.labels[..], "round {round}");
-                let mut edges = wdm_crust_edges(&vor, &flow.labels);
-                let passes = 1 + if peeling {
-                    peel(&vor, &mut edges, &options).extra_passes
-                } else {
-                    0
-                };
-                edges.sort_unstable();
-                edges.dedup();
+                let mut edges = public_crust_edges(&vor, &flow.labels);
+                let mut passes = 1;
+                let delaunay: BTreeSet<[u32; 2]> = (0..tri.halfedges().len())
+                    .map(|e| {
+                        let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
+                        [a.min(b), a.max(b)]
+                    })
+                    .collect();
+                loop {
+                    if !peeling {
+                        break;
+                    }
+                    let touched: BTreeSet<u32> = edges.iter().flatten().copied().collect();
+                    let rest: Vec<u32> = (0..points.len() as u32)
+                        .filter(|&i| !touched.contains(&i) && !tri.is_duplicate(i))
+                        .collect();
+                    if rest.len() < 3 {
+                        break;
+                    }
+                    let subset: Vec<[f64; 2]> = rest.iter().map(|&i| tri.point(i)).collect();
+                    let sub = triangulate(&subset).unwrap();
+                    if sub.is_degenerate() {
+                        break;
+                    }
+                    let sub_vor = sub.voronoi();
+                    let sub_flow = wdm::label_vertices(&sub_vor, options.label_rule());
+                    let found: Vec<[u32; 2]> = public_crust_edges(&sub_vor, &sub_flow.labels)
+                        .iter()
+                        .map(|&[a, b]| {
+                            let (a, b) = (rest[a as usize], rest[b as usize]);
+                            [a.min(b), a.max(b)]
+                        })
+                        .filter(|e| delaunay.contains(e))
+                        .collect();
+                    if found.is_empty() {
+                        break;
+                    }
+                    edges.extend(found);
+                    edges.sort_unstable();
+                    edges.dedup();
+                    passes += 1;
+                }
                 assert_eq!(rec.passes(), passes, "round {round}");
                 peeled += usize::from(passes > 1);
                 assert_eq!(rec.edges(), &edges[..], "round {round}");
@@ -247,6 +282,10 @@ mod tests {
                 assert_eq!(rec.curves(), &curves[..], "round {round}");
                 assert_eq!(rec.triangulation().triangles(), tri.triangles());
                 assert_eq!(rec.triangulation().hull(), tri.hull());
+                let untouched: Vec<u32> = (0..points.len() as u32)
+                    .filter(|&i| !tri.is_duplicate(i) && !edges.iter().flatten().any(|&p| p == i))
+                    .collect();
+                assert_eq!(rec.untouched_points(), untouched, "round {round}");
                 if passes == 1 {
                     let axis = medial_axis(&vor, &flow.labels);
                     assert_eq!(rec.medial_axis(), &axis, "round {round}");

@@ -71,12 +71,20 @@ impl Reconstruction {
     /// Distinct points with a degree other than 0 or 2 in the reconstruction: curve ends and
     /// junctions.
     pub fn irregular_points(&self) -> Vec<u32> {
-        curves::irregular_points(self.triangulation.points().len(), &self.edges)
+        curves::irregular_points(self.triangulation.point_count(), &self.edges)
     }
 
     /// Distinct points that no reconstructed edge touches.
     pub fn untouched_points(&self) -> Vec<u32> {
-        super::peel::untouched(&self.triangulation, &self.edges)
+        let tri = &self.triangulation;
+        let mut touched = vec![false; tri.point_count()];
+        for &[a, b] in &self.edges {
+            touched[a as usize] = true;
+            touched[b as usize] = true;
+        }
+        (0..tri.point_count() as u32)
+            .filter(|&i| !touched[i as usize] && !tri.is_duplicate(i))
+            .collect()
     }
 
     /// How many passes ran (more than one when peeling found nested curves).

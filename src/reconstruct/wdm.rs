@@ -54,13 +54,26 @@ pub struct WaterFlow {
 
 /// Runs the water flow on `vor` and labels every vertex.
 pub fn label_vertices(vor: &Voronoi<'_>, rule: LabelRule) -> WaterFlow {
+    let mut flow = label_vertices_local(vor, rule);
+    let tri = vor.triangulation();
+    flow.sources = (0..tri.point_count() as u32)
+        .map(|i| {
+            let local = flow.sources[tri.local_index(i) as usize];
+            local.filter(|_| !tri.is_duplicate(i))
+        })
+        .collect();
+    flow
+}
+
+/// [`label_vertices`] with `sources` indexed by local point.
+pub(crate) fn label_vertices_local(vor: &Voronoi<'_>, rule: LabelRule) -> WaterFlow {
     let tri = vor.triangulation();
     let vertex_count = vor.vertex_count();
     let complement = rule == LabelRule::Complement;
     // In the complement convention "activated" means "marked outer": all start unmarked.
     let mut activated = vec![!complement; vertex_count];
     let mut visited = vec![false; vertex_count];
-    let mut sources: Vec<Option<u32>> = vec![None; tri.points().len()];
+    let mut sources: Vec<Option<u32>> = vec![None; tri.points.len()];
 
     for inlet in inlets(vor, &mut activated, complement) {
         if complement {
@@ -77,15 +90,15 @@ pub fn label_vertices(vor: &Voronoi<'_>, rule: LabelRule) -> WaterFlow {
                 continue;
             }
             visited[v as usize] = true;
-            for p in vor.vertex_sites(v) {
-                if vor.is_cell_bounded(p) && sources[p as usize].is_none() {
+            for p in vor.vertex_sites_local(v) {
+                if vor.is_cell_bounded_local(p) && sources[p as usize].is_none() {
                     sources[p as usize] = Some(v);
                     transition(vor, p, v, &mut activated, complement);
                 }
             }
             // Pushed in reverse so the neighbours are taken counterclockwise.
             let before = stack.len();
-            for edge in vor.vertex_edges(v) {
+            for edge in vor.vertex_edges_local(v) {
                 if let EdgeEnd::Vertex(u) = edge.to {
                     if activated[u as usize] && !visited[u as usize] {
                         stack.push(u);
@@ -121,11 +134,7 @@ pub fn label_vertices(vor: &Voronoi<'_>, rule: LabelRule) -> WaterFlow {
 /// depend on the input order). FVVs inside the closed hull are deactivated.
 fn inlets(vor: &Voronoi<'_>, activated: &mut [bool], complement: bool) -> Vec<u32> {
     let tri = vor.triangulation();
-    let hull: Vec<[f64; 2]> = tri
-        .hull()
-        .iter()
-        .map(|&i| tri.points()[i as usize])
-        .collect();
+    let hull: Vec<[f64; 2]> = tri.hull.iter().map(|&i| tri.points[i as usize]).collect();
     let mut list: Vec<(u32, [f64; 2])> = Vec::new();
     for v in 0..vor.vertex_count() as u32 {
         if !vor.has_ray(v) {
@@ -133,8 +142,8 @@ fn inlets(vor: &Voronoi<'_>, activated: &mut [bool], complement: bool) -> Vec<u3
         }
         if circumcenter_in_convex_hull(&hull, vor.vertex_triangle(v)) == HullPosition::Outside {
             let smallest_site = vor
-                .vertex_sites(v)
-                .map(|p| tri.points()[p as usize])
+                .vertex_sites_local(v)
+                .map(|p| tri.points[p as usize])
                 .min_by(|a, b| lexicographic(*a, *b))
                 .unwrap_or([0.0; 2]);
             list.push((v, smallest_site));
@@ -159,9 +168,9 @@ fn lexicographic(a: [f64; 2], b: [f64; 2]) -> Ordering {
 /// of `L` are deactivated (or, in the complement convention, vertices strictly on the
 /// source's side are marked outer).
 fn transition(vor: &Voronoi<'_>, p: u32, source: u32, activated: &mut [bool], complement: bool) {
-    let point = vor.triangulation().points()[p as usize];
+    let point = vor.triangulation().points[p as usize];
     let source_triangle = vor.vertex_triangle(source);
-    for v in vor.cell(p) {
+    for v in vor.cell_local(p) {
         if v == source {
             continue;
         }

@@ -53,19 +53,19 @@ impl<'p, 'a> Dt<'p, 'a> {
     /// The triangulation `tri` (non-degenerate) with ghost triangles, over `pts`, which must
     /// hold `tri`'s points as its samples.
     pub(super) fn new(tri: &Triangulation, pts: &'p MixedPoints<'a>, vertex_count: usize) -> Self {
-        let solid = tri.triangles().len();
+        let solid = tri.triangle_count();
         let halfedges = tri.halfedges();
-        let mut v: Vec<[u32; 3]> = tri.triangles().to_vec();
+        let mut v: Vec<[u32; 3]> = tri.triangles.clone();
         let mut nb = vec![[NONE; 3]; solid];
         // Ghost of the hull edge starting at each hull vertex.
-        let mut ghost_from = vec![NONE; tri.points().len()];
+        let mut ghost_from = vec![NONE; tri.points.len()];
         for (e, &twin) in halfedges.iter().enumerate() {
             let (t, j) = (e / 3, e % 3);
             let k = (j + 2) % 3; // corner opposite half-edge e = (v[j], v[j+1])
             if twin != NO_TWIN {
                 nb[t][k] = twin / 3;
             } else {
-                let (x, y) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
+                let (x, y) = (tri.org(e), tri.dest(e));
                 let g = v.len() as u32;
                 v.push([y, x, GHOST]);
                 nb.push([NONE, NONE, t as u32]);

@@ -164,6 +164,9 @@ pub fn exact_hull(points: &[[f64; 2]], keep_collinear: bool) -> Option<Vec<[f64;
         .iter()
         .copied()
         .filter(|&p| expected_error(&[p]).is_none())
+        // -0.0 as +0.0: `total_cmp` puts -0.0 before +0.0, which is not the order of the
+        // real values the monotone chain needs (a fuzz finding: a "hull" that was no hull).
+        .map(|p| [p[0] + 0.0, p[1] + 0.0])
         .collect();
     pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
     pts.dedup_by(|a, b| a[0] == b[0] && a[1] == b[1]);

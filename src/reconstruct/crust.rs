@@ -46,6 +46,7 @@
 
 mod insertion;
 
+use super::extract::chain_edges;
 use crate::delaunay::Triangulation;
 use crate::kernel::Sign;
 
@@ -71,11 +72,7 @@ pub fn crust_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
 /// [`crust_edges`] in local indices.
 pub(crate) fn crust_edges_local(tri: &Triangulation) -> Vec<[u32; 2]> {
     if tri.is_degenerate() {
-        let mut chain: Vec<[u32; 2]> = tri
-            .hull
-            .windows(2)
-            .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
-            .collect();
+        let mut chain = chain_edges(tri);
         chain.sort_unstable();
         return chain;
     }

@@ -70,7 +70,7 @@ pub(super) fn medial_axis(vor: &Voronoi<'_>, labels: &[Label]) -> MedialAxis {
 }
 
 /// Collinear or tiny input: the chain along the line is the reconstruction (local indices).
-pub(super) fn chain_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
+pub(crate) fn chain_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
     tri.hull
         .windows(2)
         .map(|w| [w[0].min(w[1]), w[0].max(w[1])])

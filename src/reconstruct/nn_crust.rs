@@ -24,6 +24,7 @@
 
 use std::cmp::Ordering;
 
+use super::extract::chain_edges;
 use crate::delaunay::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
 use crate::predicates::{incircle, CirclePosition};
 
@@ -55,11 +56,7 @@ pub fn nn_crust_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
 /// [`nn_crust_edges`] in local indices.
 pub(crate) fn nn_crust_edges_local(tri: &Triangulation) -> Vec<[u32; 2]> {
     if tri.is_degenerate() {
-        let mut chain: Vec<[u32; 2]> = tri
-            .hull
-            .windows(2)
-            .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
-            .collect();
+        let mut chain = chain_edges(tri);
         chain.sort_unstable();
         return chain;
     }

@@ -49,7 +49,17 @@ pub(super) fn wdm_crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 
 }
 
 /// Finite Voronoi edges with both ends inner, with the used vertices renumbered.
-pub(super) fn medial_axis(vor: &Voronoi<'_>, labels: &[Label]) -> MedialAxis {
+///
+/// A Voronoi edge whose dual is in `later_pass_crust` (sorted, local indices) is left out:
+/// the axis never crosses a curve. (First-pass crust edges are inner–outer, never on the
+/// axis; the curves peeling adds, such as the gills of a mushroom inside its cap, cut
+/// through what the first pass called inside.)
+pub(super) fn medial_axis(
+    vor: &Voronoi<'_>,
+    labels: &[Label],
+    later_pass_crust: &[[u32; 2]],
+) -> MedialAxis {
+    let tri = vor.triangulation();
     let mut index = vec![u32::MAX; vor.vertex_count()];
     let mut axis = MedialAxis::default();
     let mut renumber = |v: u32, axis: &mut MedialAxis| {
@@ -59,8 +69,18 @@ pub(super) fn medial_axis(vor: &Voronoi<'_>, labels: &[Label]) -> MedialAxis {
         }
         index[v as usize]
     };
-    for (_, a, b) in vor.finite_edges() {
-        if labels[a as usize] == Label::Inner && labels[b as usize] == Label::Inner {
+    let crosses_a_curve = |e: u32| {
+        let (p, q) = (tri.org(e as usize), tri.dest(e as usize));
+        !later_pass_crust.is_empty()
+            && later_pass_crust
+                .binary_search(&[p.min(q), p.max(q)])
+                .is_ok()
+    };
+    for (e, a, b) in vor.finite_edges() {
+        if labels[a as usize] == Label::Inner
+            && labels[b as usize] == Label::Inner
+            && !crosses_a_curve(e)
+        {
             let (ia, ib) = (renumber(a, &mut axis), renumber(b, &mut axis));
             axis.edges.push([ia.min(ib), ia.max(ib)]);
         }

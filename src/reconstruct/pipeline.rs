@@ -118,10 +118,12 @@ pub fn reconstruct_observed(
             Peeling::done(0)
         };
         let holes_possible = peeling.extra_passes > 0;
-        let mut first_pass = Vec::new();
+        let (mut first_pass, mut later_pass) = (Vec::new(), Vec::new());
         if holes_possible {
             first_pass.extend_from_slice(&edges[..first_pass_len]);
             first_pass.sort_unstable();
+            later_pass.extend_from_slice(&edges[first_pass_len..]);
+            later_pass.sort_unstable();
         }
         let curves = assemble(&triangulation, &edges);
         let edges = triangulation.to_input_edges(edges);
@@ -131,7 +133,7 @@ pub fn reconstruct_observed(
             Vec::new()
         };
         let axis = if holes.is_empty() {
-            medial_axis(&vor, &flow.labels)
+            medial_axis(&vor, &flow.labels, &later_pass)
         } else {
             // A vertex is inside the shape when it is inner in the first pass and not
             // inside a hole: an even number of hole loops separate it from infinity.
@@ -148,7 +150,7 @@ pub fn reconstruct_observed(
                     }
                 })
                 .collect();
-            medial_axis(&vor, &combined)
+            medial_axis(&vor, &combined, &later_pass)
         };
         (flow.labels, edges, curves, axis, peeling)
     };
@@ -287,7 +289,7 @@ mod tests {
                     .collect();
                 assert_eq!(rec.untouched_points(), untouched, "round {round}");
                 if passes == 1 {
-                    let axis = medial_axis(&vor, &flow.labels);
+                    let axis = medial_axis(&vor, &flow.labels, &[]);
                     assert_eq!(rec.medial_axis(), &axis, "round {round}");
                 }
             }

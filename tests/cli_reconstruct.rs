@@ -100,12 +100,12 @@ fn check_json(json: &str, points: &[[f64; 2]], options: &Options) {
         .keys()
         .map(String::as_str)
         .collect();
-    assert_eq!(keys.len(), 5, "{keys:?}");
+    assert_eq!(keys.len(), 6, "{keys:?}");
     // The contract's key order (serde_json's map sorts them, so look at the text).
     let at = |key: &str| json.find(&format!("\"{key}\":")).unwrap();
     assert!(json.starts_with("{\"algorithm\":"));
     assert!(at("points") < at("edges") && at("edges") < at("curves"));
-    assert!(at("curves") < at("medial_axis"));
+    assert!(at("curves") < at("medial_axis") && at("medial_axis") < at("unassigned"));
     let rec = wdm_crust::reconstruct_with(points, options).unwrap();
     assert_eq!(value["algorithm"], options.algorithm().name());
     assert_eq!(value["points"].as_u64().unwrap() as usize, points.len());
@@ -119,6 +119,8 @@ fn check_json(json: &str, points: &[[f64; 2]], options: &Options) {
         let curve_points: Vec<u32> = serde_json::from_value(json["points"].clone()).unwrap();
         assert_eq!(curve_points, curve.points);
     }
+    let unassigned: Vec<u32> = serde_json::from_value(value["unassigned"].clone()).unwrap();
+    assert_eq!(unassigned, rec.unassigned());
     let axis = &value["medial_axis"];
     assert_eq!(axis.as_object().unwrap().len(), 2);
     let axis_edges: Vec<[u32; 2]> = serde_json::from_value(axis["edges"].clone()).unwrap();
@@ -401,7 +403,7 @@ fn degenerate_inputs_succeed_in_every_format() {
     let run = run_in(d, &["reconstruct"], b"");
     assert_eq!(
         run.stdout,
-        "{\"algorithm\":\"wdm\",\"points\":0,\"edges\":[],\"curves\":[],\"medial_axis\":{\"vertices\":[],\"edges\":[]}}\n"
+        "{\"algorithm\":\"wdm\",\"points\":0,\"edges\":[],\"curves\":[],\"medial_axis\":{\"vertices\":[],\"edges\":[]},\"unassigned\":[]}\n"
     );
 }
 

@@ -7,7 +7,7 @@ use clap::{Args, ValueEnum};
 use wdm_crust::io::{
     write_reconstruction_json, write_reconstruction_svg, write_reconstruction_text, SvgOptions,
 };
-use wdm_crust::reconstruct::{Algorithm, Options, Phase};
+use wdm_crust::reconstruct::{Algorithm, MedialAxisMode, Options, Phase};
 
 use super::input::Input;
 use super::output::Output;
@@ -25,12 +25,14 @@ Examples:
 JSON output (one line):
   {\"algorithm\": \"wdm\", \"points\": N, \"edges\": [[i, j], ...],
    \"curves\": [{\"closed\": true, \"points\": [i, j, ...]}, ...],
-   \"medial_axis\": {\"vertices\": [[x, y], ...], \"edges\": [[a, b], ...]}}
+   \"medial_axis\": {\"vertices\": [[x, y], ...], \"edges\": [[a, b], ...]},
+   \"unassigned\": [i, ...]}
   edges are the reconstructed point pairs, i < j, sorted; curves chain them into closed
   loops (counterclockwise, each point once, starting at the smallest index) and open chains
   (from an end or a junction to the next one); the medial axis is the Voronoi edges between
   two inner Voronoi vertices, over its own vertex list (WDM only: empty for crust and
-  nn-crust).
+  nn-crust), pruned of noise branches unless --medial-axis raw; unassigned lists the points
+  on no curve (outliers, leftovers of noise), sorted, duplicates not listed.
 
 Text output: one reconstructed edge `i j` per line, nothing else.
 
@@ -41,7 +43,7 @@ gets SVG and anything else JSON.";
 /// Output formats of `reconstruct`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ReconstructFormat {
-    /// `{"algorithm", "points", "edges", "curves", "medial_axis"}` on one line.
+    /// `{"algorithm", "points", "edges", "curves", "medial_axis", "unassigned"}` on one line.
     Json,
     /// A picture: points, curves, medial axis, legend.
     Svg,
@@ -66,6 +68,24 @@ impl From<AlgorithmArg> for Algorithm {
             AlgorithmArg::Wdm => Algorithm::Wdm,
             AlgorithmArg::Crust => Algorithm::Crust,
             AlgorithmArg::NnCrust => Algorithm::NnCrust,
+        }
+    }
+}
+
+/// Which medial axis to return.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MedialAxisArg {
+    /// WDM_MAT without the spurious branches noise grows (the documented pruning rule).
+    Pruned,
+    /// The paper's WDM_MAT: every finite Voronoi edge between two inner vertices.
+    Raw,
+}
+
+impl From<MedialAxisArg> for MedialAxisMode {
+    fn from(arg: MedialAxisArg) -> Self {
+        match arg {
+            MedialAxisArg::Pruned => MedialAxisMode::Pruned,
+            MedialAxisArg::Raw => MedialAxisMode::Raw,
         }
     }
 }
@@ -115,6 +135,11 @@ pub struct ReconstructArgs {
     #[arg(long, value_name = "N", default_value_t = Options::default().peeling_budget())]
     peeling_budget: usize,
 
+    /// WDM: the medial axis returned: `pruned` (spurious branches removed) or `raw` (the
+    /// paper's WDM_MAT).
+    #[arg(long, value_enum, default_value_t = MedialAxisArg::Pruned)]
+    medial_axis: MedialAxisArg,
+
     /// SVG underlays, comma-separated: delaunay, voronoi, labels.
     #[arg(long, value_enum, value_delimiter = ',', value_name = "LAYERS")]
     show: Vec<Layer>,
@@ -155,7 +180,8 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
     let options = Options::new()
         .with_algorithm(args.algorithm.into())
         .with_peeling(!args.no_peeling)
-        .with_peeling_budget(args.peeling_budget);
+        .with_peeling_budget(args.peeling_budget)
+        .with_medial_axis(args.medial_axis.into());
     let n = points.len();
     timings.begin(|| format!("triangulating {n} points"));
     // The library reports each phase as it ends; the next one begins right then.

@@ -58,10 +58,10 @@
 //! # Reconstruction, JSON
 //!
 //! `{"algorithm":"wdm","points":N,"edges":[[i,j],...],"curves":[{"closed":true,"points":[...]},...],
-//! "medial_axis":{"vertices":[[x,y],...],"edges":[[a,b],...]}}` on one line: the fields of
-//! [`Reconstruction`] (`edges` with `i < j`, sorted; `curves` as in
-//! [`Curve`]; the medial axis as in
-//! [`MedialAxis`], empty for the baseline algorithms).
+//! "medial_axis":{"vertices":[[x,y],...],"edges":[[a,b],...]},"unassigned":[i,...]}` on one
+//! line: the fields of [`Reconstruction`] (`edges` with `i < j`, sorted; `curves` as in
+//! [`Curve`]; the medial axis as in [`MedialAxis`], empty for the baseline algorithms;
+//! `unassigned` as in [`Reconstruction::unassigned`]).
 //!
 //! # Reconstruction, text
 //!
@@ -316,6 +316,7 @@ struct ReconstructionJson<'a> {
     edges: &'a [[u32; 2]],
     curves: &'a [Curve],
     medial_axis: &'a MedialAxis,
+    unassigned: &'a [u32],
 }
 
 /// Writes `rec` as the contract's JSON object, followed by a newline (see the
@@ -346,6 +347,7 @@ pub fn write_reconstruction_json<W: Write>(rec: &Reconstruction, out: W) -> io::
         edges: rec.edges(),
         curves: rec.curves(),
         medial_axis: rec.medial_axis(),
+        unassigned: rec.unassigned(),
     };
     serde_json::to_writer(&mut out, &json)?;
     out.write_all(b"\n")?;

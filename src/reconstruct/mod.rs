@@ -23,7 +23,7 @@ pub mod wdm;
 
 pub use curves::Curve;
 pub use extract::EdgeClass;
-pub use options::{Algorithm, Options};
+pub use options::{Algorithm, MedialAxisMode, Options};
 pub use pipeline::{reconstruct, reconstruct_observed, reconstruct_with, Phase};
 pub use result::{MedialAxis, Reconstruction};
 pub use wdm::{Label, LabelRule, WaterFlow};

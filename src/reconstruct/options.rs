@@ -28,6 +28,28 @@ impl Algorithm {
     }
 }
 
+/// Which medial axis a WDM reconstruction returns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[non_exhaustive]
+pub enum MedialAxisMode {
+    /// WDM_MAT with the spurious branches that noise grows removed (see the `medial_axis`
+    /// module docs for the rule); the default.
+    #[default]
+    Pruned,
+    /// The paper's WDM_MAT: every finite Voronoi edge between two inner vertices.
+    Raw,
+}
+
+impl MedialAxisMode {
+    /// The name used on the command line (`--medial-axis pruned|raw`).
+    pub fn name(self) -> &'static str {
+        match self {
+            MedialAxisMode::Pruned => "pruned",
+            MedialAxisMode::Raw => "raw",
+        }
+    }
+}
+
 /// Reconstruction options, set through `with_*` methods so that new ones can come without
 /// breaking callers.
 ///
@@ -43,6 +65,7 @@ pub struct Options {
     peeling: bool,
     label_rule: LabelRule,
     peeling_budget: usize,
+    medial_axis: MedialAxisMode,
 }
 
 impl Default for Options {
@@ -52,6 +75,7 @@ impl Default for Options {
             peeling: true,
             label_rule: LabelRule::WaterReached,
             peeling_budget: 4,
+            medial_axis: MedialAxisMode::Pruned,
         }
     }
 }
@@ -95,6 +119,12 @@ impl Options {
         self
     }
 
+    /// The medial axis returned (default [`MedialAxisMode::Pruned`]); WDM only.
+    pub fn with_medial_axis(mut self, medial_axis: MedialAxisMode) -> Self {
+        self.medial_axis = medial_axis;
+        self
+    }
+
     /// See [`with_algorithm`](Self::with_algorithm).
     pub fn algorithm(&self) -> Algorithm {
         self.algorithm
@@ -113,5 +143,10 @@ impl Options {
     /// See [`with_peeling_budget`](Self::with_peeling_budget).
     pub fn peeling_budget(&self) -> usize {
         self.peeling_budget
+    }
+
+    /// See [`with_medial_axis`](Self::with_medial_axis).
+    pub fn medial_axis(&self) -> MedialAxisMode {
+        self.medial_axis
     }
 }

@@ -88,16 +88,18 @@ pub fn reconstruct_observed(
         };
         let curves = assemble(&triangulation, &edges);
         let edges = triangulation.to_input_edges(edges);
-        let rec = Reconstruction {
+        let mut rec = Reconstruction {
             algorithm: options.algorithm(),
             triangulation,
             labels: Vec::new(),
             edges,
             curves,
             medial_axis: MedialAxis::default(),
+            unassigned: Vec::new(),
             passes: 1,
             budget_exhausted: false,
         };
+        rec.unassigned = rec.untouched_points();
         lap(Phase::Extract);
         return Ok(rec);
     }
@@ -154,16 +156,18 @@ pub fn reconstruct_observed(
         };
         (flow.labels, edges, curves, axis, peeling)
     };
-    let rec = Reconstruction {
+    let mut rec = Reconstruction {
         algorithm: options.algorithm(),
         triangulation,
         labels,
         edges,
         curves,
         medial_axis,
+        unassigned: Vec::new(),
         passes: 1 + peeling.extra_passes,
         budget_exhausted: peeling.budget_exhausted,
     };
+    rec.unassigned = rec.untouched_points();
     lap(Phase::Extract);
     Ok(rec)
 }

@@ -25,6 +25,7 @@ pub struct Reconstruction {
     pub(super) edges: Vec<[u32; 2]>,
     pub(super) curves: Vec<Curve>,
     pub(super) medial_axis: MedialAxis,
+    pub(super) unassigned: Vec<u32>,
     pub(super) passes: usize,
     pub(super) budget_exhausted: bool,
 }
@@ -85,6 +86,12 @@ impl Reconstruction {
         (0..tri.point_count() as u32)
             .filter(|&i| !touched[i as usize] && !tri.is_duplicate(i))
             .collect()
+    }
+
+    /// Distinct points on no reconstructed curve (outliers, leftovers of noise), sorted, in
+    /// the caller's indices; duplicates are not listed (they follow the point they repeat).
+    pub fn unassigned(&self) -> &[u32] {
+        &self.unassigned
     }
 
     /// How many passes ran (more than one when peeling found nested curves).

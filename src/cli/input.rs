@@ -65,9 +65,22 @@ impl Input {
         timings.progress_if(self.file_size().is_some_and(|bytes| bytes > PROGRESS_BYTES));
         timings.begin(|| format!("reading {}", self.name()));
         let points = self.read_points()?;
+        if points.is_empty() {
+            // Not an error (an empty set is a valid point set), but rarely what was meant.
+            eprintln!("{}", self.empty_note());
+        }
         timings.phase("parse", || format!("{} points", points.len()));
         timings.progress_if(points.len() > PROGRESS_POINTS);
         Ok(points)
+    }
+
+    /// The one-line note for an input without points.
+    fn empty_note(&self) -> String {
+        format!(
+            "wdm-crust: note: {}: no points (the input is empty, or only comments, blank lines \
+             or a header); the result is empty",
+            self.name()
+        )
     }
 
     /// `<file>:<line>: <problem>`; exit 2, except for a failing read (exit 1).

@@ -20,6 +20,7 @@ Examples:
   wdm-crust reconstruct points.txt -o curves.json
   wdm-crust reconstruct points.txt --format svg -o picture.svg
   wdm-crust reconstruct points.txt -o picture.svg --show delaunay,labels
+  wdm-crust reconstruct scan-pixels.txt -o picture.svg --y-down
   wdm-crust reconstruct points.txt --algorithm nn-crust --format text
 
 JSON output (one line):
@@ -36,9 +37,11 @@ JSON output (one line):
 
 Text output: one reconstructed edge `i j` per line, nothing else.
 
-SVG output: the points, the curves (closed red, open purple), the medial axis (green) and a
-legend, y axis up; --show adds faint underlays. Without --format, an OUTPUT ending in .svg
-gets SVG and anything else JSON.";
+SVG output: the points, the curves (closed red, open purple), the medial axis (green), the
+unassigned points (grey rings) and a legend, y axis up (--y-down: down, for image
+coordinates); --show adds faint underlays. The picture is in pixels whatever the data's
+units, so it renders at any extent. Without --format, an OUTPUT ending in .svg gets SVG and
+anything else JSON.";
 
 /// Output formats of `reconstruct`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -143,6 +146,12 @@ pub struct ReconstructArgs {
     /// SVG underlays, comma-separated: delaunay, voronoi, labels.
     #[arg(long, value_enum, value_delimiter = ',', value_name = "LAYERS")]
     show: Vec<Layer>,
+
+    /// The data is in image coordinates (y grows downwards, as pixel positions of a scan):
+    /// the SVG is drawn the right way up. JSON and text output are unchanged (coordinates
+    /// stay the input's).
+    #[arg(long)]
+    y_down: bool,
 }
 
 impl ReconstructArgs {
@@ -221,6 +230,7 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
     svg.delaunay = args.show.contains(&Layer::Delaunay);
     svg.voronoi = args.show.contains(&Layer::Voronoi);
     svg.labels = args.show.contains(&Layer::Labels);
+    svg.y_down = args.y_down;
     write_timed(&output, &mut timings, |out| match format {
         ReconstructFormat::Json => write_reconstruction_json(&rec, out),
         ReconstructFormat::Text => write_reconstruction_text(&rec, out),

@@ -2,19 +2,36 @@
 //!
 //! # Formats
 //!
-//! * **Plain text** ([`InputFormat::Text`]): one point per line, `x` and `y` separated by white
-//!   space and/or one comma; further columns are ignored (`x y z`, `x<TAB>y<TAB>1`).
-//! * **CSV** ([`InputFormat::Csv`]): the same lines, after an optional header line such as
-//!   `x,y` (any first line whose fields are all words rather than numbers). Fields may be
-//!   quoted (`"1.5","2"`).
+//! * **Plain text** ([`InputFormat::Text`]): one point per line, `x` and `y` in the first two
+//!   columns; further columns are ignored (`x y z`, `x<TAB>y<TAB>1`, `x,y,label`). A line with
+//!   a comma is split at its commas (white space around a field is trimmed); a line without one
+//!   at runs of white space. Plain text has no header: a first line of column names makes
+//!   detected content CSV, and is an error ([`ParseErrorKind::HeaderInText`]) when plain text
+//!   is asked for explicitly.
+//! * **CSV** ([`InputFormat::Csv`]): the same rows, after an optional header line of column
+//!   names on the first line that is not a comment or blank (a line with no number and at
+//!   least one word, such as `x,y`, `id,x,y`, `",x,y"` or `X Y`). A header selects the
+//!   coordinates by name: the columns called `x` and `y`, compared without regard to case,
+//!   quotes and white space around them; a header without both is an error naming the columns
+//!   it has. Fields may be quoted (`"1.5","2"`, `"a, b",1,2`).
 //! * **Triangle `.node` / Dey `.gtn`** ([`InputFormat::Node`]): a header line `N 2 A B`
 //!   (point count, dimension 2, attribute count, boundary-marker flag 0 or 1), then `N` lines
-//!   `index x y [attributes] [marker]`. The indices must run consecutively from 0 or from 1, and
-//!   the number of point lines must be `N`.
+//!   `index x y [attributes] [marker]` of exactly `3 + A + B` fields. The indices must run
+//!   consecutively from 0 or from 1.
 //!
 //! In every format blank lines are skipped, `#` starts a comment that runs to the end of the
 //! line, and `\n`, `\r\n` and lone `\r` all end a line. A point's index is its position among
 //! the points read, counting from 0, whatever the format.
+//!
+//! # Read right or refused
+//!
+//! Text and CSV rows must all have as many columns as the header (or, without one, as the
+//! first row): a decimal comma, a thousands separator or a missing value shifts the columns of
+//! its row, and is refused instead of read as a different point. A decimal comma inside a
+//! line, `0,5 1,5`, makes a field with white space inside (`5 1`), which is not a number;
+//! `0,5;1,5` makes a field with a semicolon. What no rule can catch is a file whose every
+//! value has a decimal comma and no white space (`0,5,1,5` on every line reads as four
+//! columns); such files must be converted first.
 //!
 //! # Detection
 //!
@@ -22,20 +39,28 @@
 //! `.csv` to [`InputFormat::Csv`]; everything else is detected from the content by
 //! [`detect_format`] (which [`read_points`] does on the fly when given no format): a first line
 //! of four integers `N 2 A B` followed by a matching `index x y ...` line is a `.node` header; a
-//! first line of words is a CSV header; anything else is plain text.
+//! first line of column names is a CSV header; anything else is plain text.
 //!
 //! # Errors
 //!
 //! Every problem is a [`ParseError`] carrying the 1-based number of the offending line: a
-//! token that is not a number, a line with only one number, NaN or infinity, a coordinate
-//! outside the exact envelope ([`crate::error::check_coordinate`]), binary data, a `.node`
-//! header that does not match its points, or an I/O error.
+//! token that is not a number, a line with only one number, a row with the wrong number of
+//! columns, a header without `x` and `y`, NaN or infinity, a coordinate outside the exact
+//! envelope ([`crate::error::check_coordinate`]), binary data, a `.node` header that does not
+//! match its points, or an I/O error.
 
 use std::fmt;
 use std::fs::File;
 use std::io::{self, BufRead, BufReader};
 use std::path::Path;
 
+mod columns;
+mod fields;
+mod node;
+
+use self::columns::{looks_like_header, Columns};
+use self::fields::is_blank_char;
+use self::node::{node_header_candidate, parse_node_header, NodeHeader, NodeState};
 use super::lines::LineReader;
 use crate::error::{check_coordinate, Error as CoordinateError};
 
@@ -43,10 +68,11 @@ use crate::error::{check_coordinate, Error as CoordinateError};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum InputFormat {
-    /// One point per line: two numbers separated by white space and/or one comma, further
-    /// columns ignored. No header line.
+    /// One point per line: x and y in the first two columns, separated by commas or white
+    /// space, further columns ignored. No header line.
     Text,
-    /// Like [`InputFormat::Text`], after an optional header line of column names (`x,y`).
+    /// Like [`InputFormat::Text`], after an optional header line of column names that selects
+    /// the columns named `x` and `y` (`x,y`, `id,x,y`).
     Csv,
     /// Triangle `.node` or Dey `.gtn`: a header `N 2 A B`, then `index x y [attributes] [marker]`.
     Node,
@@ -142,6 +168,42 @@ pub enum ParseErrorKind {
         /// Number of fields found.
         found: usize,
     },
+    /// A `.node` point line has three or more fields, but not the `3 + A + B` its header asks for.
+    NodeFieldCount {
+        /// Number of fields found.
+        found: u64,
+        /// Attributes per point, from the header.
+        attributes: u64,
+        /// Boundary markers per point (0 or 1), from the header.
+        markers: u64,
+    },
+    /// A text or CSV row has a different number of columns than the header or the first row.
+    ColumnCount {
+        /// Columns in this row.
+        found: usize,
+        /// Columns in the header or the first row.
+        expected: usize,
+        /// The line of the header or the first row.
+        line: usize,
+        /// Whether `line` is a header (column names) rather than the first row.
+        header: bool,
+    },
+    /// A CSV header (a first line of column names) without a column named `x` and one named
+    /// `y`.
+    HeaderWithoutXY {
+        /// The column names found (the first few, shortened).
+        columns: Vec<String>,
+        /// How many more names the header has.
+        more: usize,
+    },
+    /// A CSV header names two columns `x` (or two `y`).
+    DuplicateColumn {
+        /// The name repeated.
+        name: String,
+    },
+    /// The first line is a header of column names, but the format is plain text, which has
+    /// none (read it as [`InputFormat::Csv`], or let the format be detected).
+    HeaderInText,
     /// A `.node` point index is not the expected one.
     NodeIndex {
         /// The index token as found.
@@ -179,7 +241,8 @@ impl fmt::Display for ParseErrorKind {
             ),
             ParseErrorKind::NotANumber { axis, token } => write!(
                 f,
-                "{axis} coordinate {token:?} is not a number (expected `x y`, `x,y` or `x y z...`)"
+                "{axis} coordinate {token:?} is not a number ({})",
+                not_a_number_hint(token)
             ),
             ParseErrorKind::EmptyField { axis } => {
                 write!(f, "empty field where the {axis} coordinate should be")
@@ -209,6 +272,50 @@ impl fmt::Display for ParseErrorKind {
                 f,
                 "a .node point line needs `index x y`, found {found} field{}",
                 if *found == 1 { "" } else { "s" }
+            ),
+            ParseErrorKind::NodeFieldCount {
+                found,
+                attributes,
+                markers,
+            } => write!(
+                f,
+                "{found} fields, but the .node header asks for 3 + {attributes} + {markers} \
+                 (index, x, y, {attributes} attribute{}, {markers} boundary marker{})",
+                if *attributes == 1 { "" } else { "s" },
+                if *markers == 1 { "" } else { "s" }
+            ),
+            ParseErrorKind::ColumnCount {
+                found,
+                expected,
+                line,
+                header,
+            } => write!(
+                f,
+                "{found} column{}, but {} on line {line} has {expected}; every row must have \
+                 the same number of columns (a decimal comma, a thousands separator or a \
+                 missing value would shift them)",
+                if *found == 1 { "" } else { "s" },
+                if *header { "the header" } else { "the first row" }
+            ),
+            ParseErrorKind::HeaderWithoutXY { columns, more } => {
+                f.write_str("the header line names the columns ")?;
+                for (i, name) in columns.iter().enumerate() {
+                    write!(f, "{}{name:?}", if i == 0 { "" } else { ", " })?;
+                }
+                if *more > 0 {
+                    write!(f, " and {more} more")?;
+                }
+                f.write_str(
+                    " but no `x` and `y`: name the coordinate columns x and y (any case), \
+                     or remove the header line",
+                )
+            }
+            ParseErrorKind::DuplicateColumn { name } => write!(
+                f,
+                "the header line names two columns {name:?}; the coordinates must be unambiguous"
+            ),
+            ParseErrorKind::HeaderInText => f.write_str(
+                "a header line of column names, but plain text has none; read the file as CSV",
             ),
             ParseErrorKind::NodeIndex {
                 token,
@@ -298,7 +405,7 @@ pub fn format_from_path(path: &Path) -> Option<InputFormat> {
 ///
 /// A first line of four integers `N 2 A B` followed by a line `index x y ...` with the
 /// matching number of fields and index 0 or 1 is [`InputFormat::Node`] (so is `0 2 A B`
-/// alone); a first line made only of words (`x,y`, `"x","y"`, `X Y`) or with a comma is
+/// alone); a first line of column names (`x,y`, `"x","y"`, `id x y`) or with a comma is
 /// [`InputFormat::Csv`]; anything else is [`InputFormat::Text`]. Blank lines and `#` comments
 /// are skipped, and the content need not be valid UTF-8 (only the lines looked at are decoded).
 ///
@@ -353,12 +460,20 @@ pub fn read_points_from_path(path: &Path) -> Result<Vec<[f64; 2]>, ParseError> {
 /// The first problem found, with its 1-based line number (see the [module docs](self)).
 ///
 /// ```
-/// let text = "# x y\n1.5 2\r\n-3,4e2\r5\t6\t0.8\n";
+/// let text = "# x y\n1.5 2 0.1\r\n-3,4e2,0.2\r5\t6\t0.8\n";
 /// let points = wdm_crust::io::read_points(text.as_bytes(), None)?;
 /// assert_eq!(points, vec![[1.5, 2.0], [-3.0, 400.0], [5.0, 6.0]]);
 ///
+/// // A header selects the columns by name.
+/// let csv = "id,X,Y\n7,1.5,2\n8,-3,400\n";
+/// let points = wdm_crust::io::read_points(csv.as_bytes(), None)?;
+/// assert_eq!(points, vec![[1.5, 2.0], [-3.0, 400.0]]);
+///
 /// let err = wdm_crust::io::read_points("1 2\n3 four\n".as_bytes(), None).unwrap_err();
 /// assert_eq!(err.line, Some(2));
+/// // Decimal commas are refused, not read as other points.
+/// let err = wdm_crust::io::read_points("0,5 1,5\n".as_bytes(), None).unwrap_err();
+/// assert!(err.to_string().contains("decimal comma"));
 /// # Ok::<(), wdm_crust::io::ParseError>(())
 /// ```
 pub fn read_points<R: BufRead>(
@@ -375,28 +490,32 @@ pub fn read_points<R: BufRead>(
         }
         let at = |kind| ParseError::at(line_number, kind);
         state = match state {
-            State::Start => match format {
-                Some(InputFormat::Node) => {
-                    let header = parse_node_header(line).map_err(at)?;
-                    points.reserve(header.count.min(1 << 20) as usize);
-                    State::Node(NodeState::new(header, line_number))
-                }
-                Some(InputFormat::Csv) if looks_like_header(line) => State::Delimited,
-                Some(_) => {
-                    points.push(parse_delimited(line).map_err(at)?);
-                    State::Delimited
-                }
-                None => {
-                    if let Some(header) = node_header_candidate(line) {
-                        State::PendingNode(header, line_number)
-                    } else {
-                        if !looks_like_header(line) {
-                            points.push(parse_delimited(line).map_err(at)?);
-                        }
-                        State::Delimited
+            State::Start => {
+                let node_header = match format {
+                    Some(InputFormat::Node) => Some(parse_node_header(line).map_err(at)?),
+                    None => node_header_candidate(line),
+                    Some(_) => None,
+                };
+                match (node_header, format) {
+                    (Some(header), Some(_)) => {
+                        points.reserve(header.count.min(1 << 20) as usize);
+                        State::Node(NodeState::new(header, line_number))
+                    }
+                    (Some(header), None) => State::PendingNode(header, line_number),
+                    (None, Some(InputFormat::Text)) if looks_like_header(line) => {
+                        return Err(at(ParseErrorKind::HeaderInText));
+                    }
+                    (None, _) if looks_like_header(line) => {
+                        State::Rows(Some(Columns::from_header(line, line_number).map_err(at)?))
+                    }
+                    (None, _) => {
+                        let mut columns = None;
+                        points
+                            .push(Columns::parse_row(&mut columns, line, line_number).map_err(at)?);
+                        State::Rows(columns)
                     }
                 }
-            },
+            }
             State::PendingNode(header, header_line) => {
                 if header.confirmed_by(line) {
                     points.reserve(header.count.min(1 << 20) as usize);
@@ -404,15 +523,16 @@ pub fn read_points<R: BufRead>(
                     points.push(node.parse_point(line).map_err(at)?);
                     State::Node(node)
                 } else {
-                    // Not a .node file after all: the first line was a point with extra columns.
+                    // Not a .node file after all: the first line was a row of four numbers.
                     points.push(header.as_point());
-                    points.push(parse_delimited(line).map_err(at)?);
-                    State::Delimited
+                    let mut columns = Some(Columns::first_row(4, header_line));
+                    points.push(Columns::parse_row(&mut columns, line, line_number).map_err(at)?);
+                    State::Rows(columns)
                 }
             }
-            State::Delimited => {
-                points.push(parse_delimited(line).map_err(at)?);
-                State::Delimited
+            State::Rows(mut columns) => {
+                points.push(Columns::parse_row(&mut columns, line, line_number).map_err(at)?);
+                State::Rows(columns)
             }
             State::Node(mut node) => {
                 points.push(node.parse_point(line).map_err(at)?);
@@ -442,109 +562,10 @@ enum State {
     Start,
     /// The first line could be a `.node` header (on the given line); the next line decides.
     PendingNode(NodeHeader, usize),
-    /// Text or CSV point lines.
-    Delimited,
+    /// Text or CSV rows; `None` until the first row (or the header) fixes the columns.
+    Rows(Option<Columns>),
     /// `.node` point lines.
     Node(NodeState),
-}
-
-/// A `.node` header `N 2 A B`.
-#[derive(Debug, Clone, Copy)]
-struct NodeHeader {
-    count: u64,
-    attributes: u64,
-    markers: u64,
-}
-
-impl NodeHeader {
-    /// Whether `line` is the first point line of a file with this header: exactly
-    /// `3 + A + B` fields, an index of 0 or 1, and numeric coordinates.
-    fn confirmed_by(&self, line: &str) -> bool {
-        let mut fields = Fields::new(line);
-        let (Some(Ok(index)), Some(Ok(x)), Some(Ok(y))) =
-            (fields.next(), fields.next(), fields.next())
-        else {
-            return false;
-        };
-        let rest = fields.count() as u64;
-        (index == "0" || index == "1")
-            && x.parse::<f64>().is_ok()
-            && y.parse::<f64>().is_ok()
-            && Some(rest) == self.attributes.checked_add(self.markers)
-    }
-
-    /// The header line read as a point of plain text: `(N, 2)`.
-    fn as_point(&self) -> [f64; 2] {
-        [self.count as f64, 2.0]
-    }
-}
-
-/// Progress through the point lines of a `.node` file.
-struct NodeState {
-    header: NodeHeader,
-    header_line: usize,
-    /// Point lines read so far.
-    seen: u64,
-    /// Index of the first point (0 or 1), once read.
-    base: Option<u64>,
-}
-
-impl NodeState {
-    fn new(header: NodeHeader, header_line: usize) -> Self {
-        NodeState {
-            header,
-            header_line,
-            seen: 0,
-            base: None,
-        }
-    }
-
-    /// Parses `index x y [attributes] [marker]`, checking the index and the count.
-    fn parse_point(&mut self, line: &str) -> Result<[f64; 2], ParseErrorKind> {
-        if self.seen == self.header.count {
-            return Err(ParseErrorKind::NodeTooManyPoints {
-                declared: self.header.count,
-            });
-        }
-        let mut fields = Fields::new(line);
-        let mut tokens = [""; 3];
-        for (found, slot) in tokens.iter_mut().enumerate() {
-            match fields.next() {
-                Some(Ok(token)) => *slot = token,
-                Some(Err(())) if found > 0 && fields.pos < line.len() => {
-                    let axis = if found == 1 { Axis::X } else { Axis::Y };
-                    return Err(ParseErrorKind::EmptyField { axis });
-                }
-                _ => return Err(ParseErrorKind::NodeFields { found }),
-            }
-        }
-        let [index_token, x_token, y_token] = tokens;
-        let index = index_token.parse::<u64>().ok();
-        match (self.base, index) {
-            (None, Some(base @ (0 | 1))) => self.base = Some(base),
-            (None, _) => {
-                return Err(ParseErrorKind::NodeIndex {
-                    token: shorten(index_token),
-                    expected: None,
-                })
-            }
-            (Some(base), index) => {
-                let expected = base + self.seen;
-                if index != Some(expected) {
-                    return Err(ParseErrorKind::NodeIndex {
-                        token: shorten(index_token),
-                        expected: Some(expected),
-                    });
-                }
-            }
-        }
-        let point = [
-            parse_coordinate(x_token, Axis::X)?,
-            parse_coordinate(y_token, Axis::Y)?,
-        ];
-        self.seen += 1;
-        Ok(point)
-    }
 }
 
 /// The line before any `#` comment, without surrounding white space.
@@ -556,176 +577,9 @@ fn strip_comment(line: &str) -> &str {
     line.trim_matches(is_blank_char)
 }
 
-/// White space between fields (line ends never reach the tokenizer).
-#[inline]
-fn is_blank_char(c: char) -> bool {
-    matches!(c, ' ' | '\t' | '\x0b' | '\x0c')
-}
-
-#[inline]
-fn is_blank(b: u8) -> bool {
-    matches!(b, b' ' | b'\t' | b'\x0b' | b'\x0c')
-}
-
-/// The fields of a trimmed line: separated by white space and/or one comma, optionally
-/// quoted with `"`. An empty field (`1,,2`, `,1`, `1,`) is `Err(())`.
-struct Fields<'a> {
-    line: &'a str,
-    pos: usize,
-    first: bool,
-}
-
-impl<'a> Fields<'a> {
-    fn new(line: &'a str) -> Self {
-        Fields {
-            line,
-            pos: 0,
-            first: true,
-        }
-    }
-}
-
-impl<'a> Iterator for Fields<'a> {
-    type Item = Result<&'a str, ()>;
-
-    fn next(&mut self) -> Option<Self::Item> {
-        let bytes = self.line.as_bytes();
-        let n = bytes.len();
-        let mut p = self.pos;
-        while p < n && is_blank(bytes[p]) {
-            p += 1;
-        }
-        let mut comma = false;
-        if !self.first && p < n && bytes[p] == b',' {
-            comma = true;
-            p += 1;
-            while p < n && is_blank(bytes[p]) {
-                p += 1;
-            }
-        }
-        self.first = false;
-        if p == n {
-            self.pos = n;
-            return if comma { Some(Err(())) } else { None };
-        }
-        if bytes[p] == b',' {
-            self.pos = p;
-            return Some(Err(()));
-        }
-        if bytes[p] == b'"' {
-            if let Some(len) = self.line[p + 1..].find('"') {
-                let end = p + 1 + len;
-                let after = end + 1;
-                if after == n || is_blank(bytes[after]) || bytes[after] == b',' {
-                    self.pos = after;
-                    return Some(Ok(&self.line[p + 1..end]));
-                }
-            }
-        }
-        let start = p;
-        while p < n && !is_blank(bytes[p]) && bytes[p] != b',' {
-            p += 1;
-        }
-        self.pos = p;
-        Some(Ok(&self.line[start..p]))
-    }
-}
-
-/// Whether a line is a header of column names: every field a word that starts with a letter
-/// or `_` and is not a number (`nan`, `inf` and `infinity` are numbers).
-fn looks_like_header(line: &str) -> bool {
-    Fields::new(line).all(|field| match field {
-        Ok(word) => {
-            word.starts_with(|c: char| c.is_alphabetic() || c == '_')
-                && word.parse::<f64>().is_err()
-        }
-        Err(()) => false,
-    })
-}
-
-/// A line of exactly four unsigned integers `N 2 A B` with `B` 0 or 1: possibly a `.node` header.
-fn node_header_candidate(line: &str) -> Option<NodeHeader> {
-    let mut fields = line.split(is_blank_char).filter(|f| !f.is_empty());
-    let mut number = || fields.next()?.parse::<u64>().ok();
-    let (count, dimension, attributes, markers) = (number()?, number()?, number()?, number()?);
-    if fields.next().is_some() || dimension != 2 || markers > 1 {
-        return None;
-    }
-    Some(NodeHeader {
-        count,
-        attributes,
-        markers,
-    })
-}
-
-/// Parses a `.node` header strictly, saying what is wrong.
-fn parse_node_header(line: &str) -> Result<NodeHeader, ParseErrorKind> {
-    let fields: Vec<&str> = line
-        .split(is_blank_char)
-        .filter(|f| !f.is_empty())
-        .collect();
-    let bad = |reason: String| ParseErrorKind::NodeHeader { reason };
-    if fields.len() != 4 {
-        return Err(bad(format!(
-            "found {} field{} instead of 4",
-            fields.len(),
-            if fields.len() == 1 { "" } else { "s" }
-        )));
-    }
-    let names = [
-        "point count",
-        "dimension",
-        "attribute count",
-        "boundary-marker flag",
-    ];
-    let mut values = [0u64; 4];
-    for ((value, field), name) in values.iter_mut().zip(&fields).zip(names) {
-        *value = field.parse::<u64>().map_err(|_| {
-            bad(format!(
-                "the {name} {:?} is not a non-negative integer",
-                shorten(field)
-            ))
-        })?;
-    }
-    let [count, dimension, attributes, markers] = values;
-    if dimension != 2 {
-        return Err(bad(format!(
-            "the dimension is {dimension}, only 2 is supported"
-        )));
-    }
-    if markers > 1 {
-        return Err(bad(format!(
-            "the boundary-marker flag is {markers}, it must be 0 or 1"
-        )));
-    }
-    Ok(NodeHeader {
-        count,
-        attributes,
-        markers,
-    })
-}
-
-/// Parses the first two fields of a text or CSV line as a point.
-#[inline]
-fn parse_delimited(line: &str) -> Result<[f64; 2], ParseErrorKind> {
-    let mut fields = Fields::new(line);
-    let x = match fields.next() {
-        Some(Ok(token)) => parse_coordinate(token, Axis::X)?,
-        Some(Err(())) | None => return Err(ParseErrorKind::EmptyField { axis: Axis::X }),
-    };
-    let y = match fields.next() {
-        Some(Ok(token)) => parse_coordinate(token, Axis::Y)?,
-        Some(Err(())) if fields.pos < line.len() => {
-            return Err(ParseErrorKind::EmptyField { axis: Axis::Y })
-        }
-        Some(Err(())) | None => return Err(ParseErrorKind::MissingY),
-    };
-    Ok([x, y])
-}
-
 /// Parses one coordinate and checks it against the exact envelope.
 #[inline]
-fn parse_coordinate(token: &str, axis: Axis) -> Result<f64, ParseErrorKind> {
+pub(super) fn parse_coordinate(token: &str, axis: Axis) -> Result<f64, ParseErrorKind> {
     let value = token
         .parse::<f64>()
         .map_err(|_| ParseErrorKind::NotANumber {
@@ -771,8 +625,26 @@ fn has_nonzero_digit(token: &str) -> bool {
         .any(|b| (b'1'..=b'9').contains(&b))
 }
 
+/// What a token that is not a number probably is, for the error message.
+fn not_a_number_hint(token: &str) -> &'static str {
+    let digit = |c: Option<char>| c.is_some_and(|c| c.is_ascii_digit());
+    let between_digits = |separator: char| {
+        token.match_indices(separator).any(|(i, _)| {
+            digit(token[..i].chars().next_back()) && digit(token[i + 1..].chars().next())
+        })
+    };
+    if token.contains(';') {
+        "semicolons do not separate fields here, and decimal commas are not supported: \
+         write `0.5 1.5` or `0.5,1.5`"
+    } else if between_digits(',') || token.contains(|c: char| is_blank_char(c)) {
+        "decimal commas are not supported: write `0.5 1.5` or `0.5,1.5`, not `0,5 1,5`"
+    } else {
+        "expected `x y`, `x,y` or `x y z...`"
+    }
+}
+
 /// A token for an error message, cut to a readable length.
-fn shorten(token: &str) -> String {
+pub(super) fn shorten(token: &str) -> String {
     const MAX_CHARS: usize = 40;
     match token.char_indices().nth(MAX_CHARS) {
         Some((i, _)) => format!("{}...", &token[..i]),

@@ -34,11 +34,12 @@ fn err_at(text: &str, format: Option<InputFormat>, line: usize) -> ParseErrorKin
 
 #[test]
 fn text_separators_and_extra_columns() {
-    let expected = vec![[1.5, -2.0], [3.0, 4e2], [5.0, 6.0], [7.0, 8.0], [9.0, 10.0]];
-    assert_eq!(
-        ok("1.5 -2\n3\t4e2\n  5 ,  6  \n7,8,extra\n9 10 0.85 more\n"),
-        expected
-    );
+    let expected = vec![[1.5, -2.0], [3.0, 4e2], [5.0, 6.0]];
+    assert_eq!(ok("1.5 -2\n3\t4e2\n  5 \t 6  \n"), expected);
+    assert_eq!(ok("1.5,-2\n3 , 4e2\n  5 ,  6  \n"), expected);
+    assert_eq!(ok("1.5 -2 a\n3\t4e2\tb\n5 6 c\n"), expected);
+    assert_eq!(ok("1.5,-2,extra\n3,4e2,more\n5,6,\n"), expected);
+    assert_eq!(ok("1.5 -2 0.85 x\n3 4e2 0.9 y\n5 6 1 z\n"), expected);
     assert_eq!(
         ok("+.5 1.\n-0 0e-500\n1E+3 2e-3\n"),
         vec![[0.5, 1.0], [-0.0, 0.0], [1000.0, 0.002]]
@@ -90,9 +91,9 @@ fn line_numbers_count_every_kind_of_line_end() {
 #[test]
 fn explicit_text_has_no_header() {
     let kind = err_at("x y\n1 2\n", Some(InputFormat::Text), 1);
-    assert!(
-        matches!(kind, ParseErrorKind::NotANumber { axis: Axis::X, ref token } if token == "x")
-    );
+    assert!(matches!(kind, ParseErrorKind::HeaderInText), "{kind}");
+    // Detected, the same content is CSV with a header.
+    assert_eq!(ok("x y\n1 2\n"), vec![[1.0, 2.0]]);
 }
 
 // ----- CSV -----
@@ -103,10 +104,7 @@ fn csv_with_and_without_header() {
     assert_eq!(ok("x,y\n1,2\n3.5,-4\n"), expected);
     assert_eq!(ok("X, Y, label\r\n1, 2, a\r\n3.5, -4, b\r\n"), expected);
     assert_eq!(ok("\"x\",\"y\"\n\"1\",\"2\"\n3.5,\"-4\"\n"), expected);
-    assert_eq!(
-        ok("# exported\nlongitude latitude\n1 2\n3.5 -4\n"),
-        expected
-    );
+    assert_eq!(ok("# exported\nx y\n1 2\n3.5 -4\n"), expected);
     assert_eq!(ok("1,2\n3.5,-4\n"), expected);
     assert_eq!(
         parse_as("x,y\n1,2\n3.5,-4\n", InputFormat::Csv).unwrap(),
@@ -177,11 +175,22 @@ fn node_with_no_points() {
 fn four_integer_text_lines_are_not_mistaken_for_a_node_header() {
     // Second line does not have the `index x y` shape the header asks for.
     assert_eq!(ok("4 2 0 0\n5 6 0 0\n"), vec![[4.0, 2.0], [5.0, 6.0]]);
-    assert_eq!(ok("4 2 0 0\n7 6\n"), vec![[4.0, 2.0], [7.0, 6.0]]);
     assert_eq!(ok("4 2 0 0\n"), vec![[4.0, 2.0]]);
     assert_eq!(detect_format(b"4 2 0 0\n5 6 0 0\n"), InputFormat::Text);
-    // Not dimension 2, or a marker flag above 1: never a header.
-    assert_eq!(ok("3 3 0 0\n0 1 2\n"), vec![[3.0, 3.0], [0.0, 1.0]]);
+    // Read as text, the rows must then have the first row's four columns.
+    let kind = err_at("4 2 0 0\n7 6\n", None, 2);
+    assert!(matches!(
+        kind,
+        ParseErrorKind::ColumnCount {
+            found: 2,
+            expected: 4,
+            line: 1,
+            header: false
+        }
+    ));
+    // Not dimension 2, or a marker flag above 1: never a header (and not text either).
+    let kind = err_at("3 3 0 0\n0 1 2\n", None, 2);
+    assert!(matches!(kind, ParseErrorKind::ColumnCount { .. }));
 }
 
 #[test]
@@ -495,7 +504,7 @@ fn path_extension_forces_the_format() {
     let err = read_points_from_path(&node).unwrap_err();
     assert_eq!(err.line, Some(2));
     let csv = dir.path().join("pts.csv");
-    std::fs::write(&csv, "a,b\r\n1,2\r\n").unwrap();
+    std::fs::write(&csv, "A,B,X,Y\r\n0,0,1,2\r\n").unwrap();
     assert_eq!(read_points_from_path(&csv).unwrap(), vec![[1.0, 2.0]]);
     let txt = dir.path().join("pts.txt");
     std::fs::write(&txt, "2 2 0 0\n0 1 2\n1 3 4\n").unwrap();
@@ -610,4 +619,235 @@ fn real_data_files_have_their_documented_point_counts() {
     let drill = read_points_from_path(&dir.join("stretchdenoise/data/drill.txt")).unwrap();
     let drill2 = read_points_from_path(&dir.join("stretchdenoise/data/drill2_xyz.txt")).unwrap();
     assert_eq!(drill, drill2);
+}
+
+// ----- headers select the columns by name -----
+
+#[test]
+fn a_header_selects_x_and_y_by_name() {
+    let expected = vec![[1.5, 2.0], [-3.0, 4.0]];
+    for text in [
+        "id,x,y\n7,1.5,2\n8,-3,4\n",
+        "ID, X ,Y\n7, 1.5, 2\n8, -3, 4\n",
+        "\"id\",\"x\",\"y\"\n\"7\",1.5,2\n\"8\",-3,\"4\"\n",
+        "y,x\n2,1.5\n4,-3\n",
+        "name,y,weight,x\nNew York,2,0.5,1.5\n\"Bath, UK\",4,1,-3\n",
+        // pandas writes an unnamed index column, R a quoted empty name.
+        ",x,y\n0,1.5,2\n1,-3,4\n",
+        "\"\",\"x\",\"y\"\n\"1\",1.5,2\n\"2\",-3,4\n",
+        "id x y\n7 1.5 2\n8 -3 4\n",
+        "# exported\n\n  id\tX\tY  # columns\n7\t1.5\t2\n8\t-3\t4\n",
+    ] {
+        assert_eq!(ok(text), expected, "{text:?}");
+        assert_eq!(detect_format(text.as_bytes()), InputFormat::Csv, "{text:?}");
+        assert_eq!(
+            parse_as(text, InputFormat::Csv).unwrap(),
+            expected,
+            "{text:?}"
+        );
+    }
+    // A header alone is an empty file.
+    assert!(ok("id,x,y\n").is_empty());
+}
+
+#[test]
+fn a_header_without_x_and_y_names_its_columns() {
+    for (text, names) in [
+        ("lon,lat\n1,2\n", "\"lon\", \"lat\""),
+        ("longitude latitude\n1 2\n", "\"longitude\", \"latitude\""),
+        ("id,x,z\n1,2,3\n", "\"id\", \"x\", \"z\""),
+        ("\"X coord\",\"Y coord\"\n1,2\n", "\"X coord\", \"Y coord\""),
+    ] {
+        let kind = err_at(text, None, 1);
+        assert!(
+            matches!(kind, ParseErrorKind::HeaderWithoutXY { .. }),
+            "{text:?}: {kind}"
+        );
+        let message = kind.to_string();
+        assert!(message.contains(names), "{message}");
+        assert!(message.contains("no `x` and `y`"), "{message}");
+    }
+    let many: Vec<String> = (0..40).map(|i| format!("c{i}")).collect();
+    let kind = err_at(&format!("{}\n", many.join(",")), None, 1);
+    assert!(kind.to_string().contains("and 28 more"), "{kind}");
+    let kind = err_at("x,y,X\n1,2,3\n", None, 1);
+    assert!(
+        matches!(kind, ParseErrorKind::DuplicateColumn { ref name } if name == "x"),
+        "{kind}"
+    );
+}
+
+#[test]
+fn rows_must_have_the_columns_of_the_header_or_first_row() {
+    for (text, line, found, expected, header) in [
+        // One column short of the header: id read as x without it.
+        ("id,x,y\n7,1.5,2\n1.5,2\n", 3, 2, 3, true),
+        ("x,y\n1,2\n3,4,5\n", 3, 3, 2, true),
+        // A thousands separator.
+        ("1,2\n1,000.5,2\n", 2, 3, 2, false),
+        ("1.5 2\n3 4 5\n", 2, 3, 2, false),
+        ("1 2 3\n4 5\n", 2, 2, 3, false),
+        ("1,2,\n3,4\n", 2, 2, 3, false),
+    ] {
+        let kind = err_at(text, None, line);
+        match kind {
+            ParseErrorKind::ColumnCount {
+                found: f,
+                expected: e,
+                header: h,
+                ..
+            } => assert_eq!((f, e, h), (found, expected, header), "{text:?}"),
+            other => panic!("{text:?}: {other}"),
+        }
+    }
+    let message = err_at("id,x,y\n7,1.5,2\n1.5,2\n", None, 3).to_string();
+    assert!(
+        message.starts_with("2 columns, but the header on line 1 has 3"),
+        "{message}"
+    );
+}
+
+#[test]
+fn decimal_commas_are_refused() {
+    for (text, axis, token) in [
+        ("0,5 1,5\n", Axis::Y, "5 1"),
+        ("0,5\t1,5\n", Axis::Y, "5\t1"),
+        ("1 0,5\n", Axis::X, "1 0"),
+        ("0,5 1\n", Axis::Y, "5 1"),
+        ("\"0,5\",\"1,5\"\n", Axis::X, "0,5"),
+        ("0,5;1,5\n", Axis::Y, "5;1"),
+        ("0;5\n", Axis::X, "0;5"),
+        ("x,y,z\n3,25 4,75\n", Axis::Y, "25 4"),
+    ] {
+        let line = text.lines().count();
+        let kind = err_at(text, None, line);
+        match &kind {
+            ParseErrorKind::NotANumber { axis: a, token: t } => {
+                assert_eq!((*a, t.as_str()), (axis, token), "{text:?}");
+            }
+            other => panic!("{text:?}: {other}"),
+        }
+        let message = kind.to_string();
+        assert!(
+            message.contains("decimal commas are not supported"),
+            "{message}"
+        );
+    }
+    let message = err_at("0,5;1,5\n", None, 1).to_string();
+    assert!(message.contains("semicolons"), "{message}");
+    // After rows of two columns, the three fields of `3,25 4,75` are refused first as a
+    // change in the number of columns, whose message names the likely cause.
+    let kind = err_at("1 2\n3,25 4,75\n", None, 2);
+    assert!(
+        matches!(kind, ParseErrorKind::ColumnCount { found: 3, .. }),
+        "{kind}"
+    );
+    assert!(kind.to_string().contains("decimal comma"), "{kind}");
+}
+
+#[test]
+fn a_number_followed_by_anything_is_refused() {
+    for (text, axis) in [
+        ("1.5x 2\n", Axis::X),
+        ("1 2y\n", Axis::Y),
+        ("1.5.2 3\n", Axis::X),
+        ("1e 2\n", Axis::X),
+        ("1e5e 2\n", Axis::X),
+        ("0x1A 2\n", Axis::X),
+        ("1_000 2\n", Axis::X),
+        ("1'000 2\n", Axis::X),
+        ("\u{2212}1 2\n", Axis::X),
+        ("1 2%\n", Axis::Y),
+        ("1-2 3\n", Axis::X),
+        ("\"1\"x 2\n", Axis::X),
+        ("1,2\"\n", Axis::Y),
+    ] {
+        let kind = err_at(text, None, 1);
+        assert!(
+            matches!(kind, ParseErrorKind::NotANumber { axis: a, .. } if a == axis),
+            "{text:?}: {kind}"
+        );
+    }
+    // A non-breaking space is no separator: one token, not a number.
+    let kind = err_at("1\u{a0}2\n", None, 1);
+    assert!(
+        matches!(kind, ParseErrorKind::NotANumber { axis: Axis::X, .. }),
+        "{kind}"
+    );
+}
+
+#[test]
+fn node_lines_need_exactly_the_fields_of_the_header() {
+    let node = Some(InputFormat::Node);
+    // One attribute declared, none given; or one too many.
+    let kind = err_at("2 2 1 0\n0 1 2\n1 3 4\n", node, 2);
+    assert!(
+        matches!(
+            kind,
+            ParseErrorKind::NodeFieldCount {
+                found: 3,
+                attributes: 1,
+                markers: 0
+            }
+        ),
+        "{kind}"
+    );
+    let kind = err_at("2 2 0 1\n0 1 2 1\n1 3 4 0 9\n", node, 3);
+    assert!(
+        matches!(kind, ParseErrorKind::NodeFieldCount { found: 5, .. }),
+        "{kind}"
+    );
+    assert!(kind.to_string().contains("3 + 0 + 1"), "{kind}");
+    // A decimal comma in a .node point line.
+    let kind = err_at("1 2 0 0\n0 1,5 2,5\n", node, 2);
+    assert!(matches!(kind, ParseErrorKind::NodeIndex { .. }), "{kind}");
+    // Detected, the same content is not a .node file, and not a consistent table either.
+    let kind = err_at("1 2 0 0\n0 1,5 2,5\n", None, 2);
+    assert!(
+        matches!(
+            kind,
+            ParseErrorKind::NotANumber { .. } | ParseErrorKind::ColumnCount { .. }
+        ),
+        "{kind}"
+    );
+}
+
+#[test]
+fn every_message_names_the_problem_on_one_line() {
+    for text in [
+        "id,x,z\n1,2,3\n",
+        "x,x,y\n",
+        "x,y\n1,2,3\n",
+        "0,5 1,5\n",
+        "2 2 1 0\n0 1 2\n1 3 4\n",
+    ] {
+        let err = parse(text).unwrap_err();
+        let message = err.to_string();
+        assert!(message.starts_with("line "), "{message}");
+        assert!(!message.contains('\n'), "{message:?}");
+    }
+}
+
+proptest! {
+    #[test]
+    fn a_header_reads_the_named_columns_wherever_they_are(
+        rows in prop::collection::vec(prop::collection::vec(-1e6f64..1e6, 4), 1..20),
+        x_at in 0usize..4,
+        y_offset in 1usize..4,
+        separator in prop::sample::select(vec![",", " ", "\t", ", "]),
+    ) {
+        let y_at = (x_at + y_offset) % 4;
+        let names: Vec<&str> = (0..4)
+            .map(|i| if i == x_at { "X" } else if i == y_at { "y" } else if i % 2 == 0 { "id" } else { "weight" })
+            .collect();
+        let mut text = names.join(separator);
+        text.push('\n');
+        for row in &rows {
+            let fields: Vec<String> = row.iter().map(f64::to_string).collect();
+            text.push_str(&fields.join(separator));
+            text.push('\n');
+        }
+        let expected: Vec<[f64; 2]> = rows.iter().map(|r| [r[x_at], r[y_at]]).collect();
+        prop_assert_eq!(parse(&text).unwrap(), expected);
+    }
 }

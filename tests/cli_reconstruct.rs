@@ -171,8 +171,26 @@ fn view_box(svg: &str) -> [f64; 4] {
     [v[0], v[1], v[2], v[3]]
 }
 
-/// Checks an SVG picture of `points`: well formed, one root, a viewBox (y flipped) that
-/// holds every point with a margin, and the expected layers.
+/// The centres of the circles of group `id` (none if the group is absent).
+fn dots(svg: &str, id: &str) -> Vec<[f64; 2]> {
+    let Some(start) = svg.find(&format!("<g id=\"{id}\"")) else {
+        return Vec::new();
+    };
+    let group = &svg[start..start + svg[start..].find("</g>").unwrap()];
+    let number = |tag: &str, name: &str| -> f64 {
+        let key = format!(" {name}=\"");
+        let at = tag.find(&key).unwrap() + key.len();
+        tag[at..at + tag[at..].find('"').unwrap()].parse().unwrap()
+    };
+    group
+        .split("<circle")
+        .skip(1)
+        .map(|tag| [number(tag, "cx"), number(tag, "cy")])
+        .collect()
+}
+
+/// Checks an SVG picture of `points`: well formed, one root, a viewBox in pixels from the
+/// origin, one dot (or unassigned ring) inside it per distinct point, and the expected layers.
 fn check_svg(svg: &str, points: &[[f64; 2]], layers: &[&str]) {
     assert!(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\""));
     assert!(svg.ends_with("</svg>\n"));
@@ -180,12 +198,19 @@ fn check_svg(svg: &str, points: &[[f64; 2]], layers: &[&str]) {
     assert_eq!(names.iter().filter(|n| *n == "svg").count(), 1);
     assert!(names.iter().any(|n| n == "title"));
     let [x, y, w, h] = view_box(svg);
-    assert!(w > 0.0 && h > 0.0);
-    for &[px, py] in points {
-        assert!(x < px && px < x + w, "{px} outside {x} + {w}");
-        assert!(y < -py && -py < y + h, "{py} outside the flipped {y} + {h}");
+    assert_eq!([x, y], [0.0, 0.0]);
+    assert!(w >= 400.0 && h > 0.0);
+    let mut drawn = dots(svg, "points");
+    drawn.extend(dots(svg, "unassigned-points"));
+    let distinct: std::collections::HashSet<[u64; 2]> =
+        points.iter().map(|p| p.map(f64::to_bits)).collect();
+    assert_eq!(drawn.len(), distinct.len(), "one dot per distinct point");
+    for [cx, cy] in drawn {
+        assert!(
+            (0.0..=w).contains(&cx) && (0.0..=h).contains(&cy),
+            "{cx} {cy} outside {w} x {h}"
+        );
     }
-    assert!(svg.contains("transform=\"scale(1,-1)\""));
     for layer in layers {
         assert!(
             svg.contains(&format!("<g id=\"{layer}\"")),
@@ -425,7 +450,7 @@ const BAD_INPUTS: &[(&str, &[u8], usize, &str)] = &[
         "not a number",
     ),
     ("one.txt", b"0 0\n\n# c\n7\n", 4, "only one number"),
-    ("empty-field.csv", b"x,y\n1,,2\n", 2, "empty field"),
+    ("empty-field.csv", b"x,y,z\n1,,2\n", 2, "empty field"),
     ("nan.txt", b"0 0\nnan 1\n", 2, "not a finite number"),
     ("inf.txt", b"0 0\n1 0\n1 -inf\n", 3, "not a finite number"),
     ("tiny.txt", b"0 0\n1e-300 1\n", 2, "2^-142"),
@@ -656,4 +681,96 @@ fn a_grid_stops_peeling_at_the_budget_with_a_note() {
         b"",
     );
     assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+}
+
+// ----- image coordinates and the bundled pictures -----
+
+#[test]
+fn y_down_turns_the_picture_and_nothing_else() {
+    let path = examples_dir().join("mushroom.p2d");
+    let arg = path.to_str().unwrap();
+    let here = Path::new(".");
+    for format in ["json", "text"] {
+        let plain = run_in(here, &["reconstruct", arg, "--format", format], b"");
+        let down = run_in(
+            here,
+            &["reconstruct", arg, "--format", format, "--y-down"],
+            b"",
+        );
+        assert_eq!((plain.code, down.code), (0, 0), "{}", down.stderr);
+        assert_eq!(
+            plain.stdout, down.stdout,
+            "--y-down changed the {format} output"
+        );
+    }
+    let plain = run_in(here, &["reconstruct", arg, "--format", "svg"], b"");
+    let down = run_in(
+        here,
+        &["reconstruct", arg, "--format", "svg", "--y-down"],
+        b"",
+    );
+    assert_eq!((plain.code, down.code), (0, 0), "{}", down.stderr);
+    let points = wdm_crust::io::read_points_from_path(&path).unwrap();
+    check_svg(&down.stdout, &points, &["points", "legend"]);
+    assert_eq!(view_box(&plain.stdout), view_box(&down.stdout));
+    // The same dots, mirrored: x kept, y_up + y_down the same for every dot.
+    let (up, down) = (dots(&plain.stdout, "points"), dots(&down.stdout, "points"));
+    assert_eq!(up.len(), down.len());
+    let sum = up[0][1] + down[0][1];
+    for (a, b) in up.iter().zip(&down) {
+        assert_eq!(a[0], b[0]);
+        assert!((a[1] + b[1] - sum).abs() <= 0.011, "{a:?} {b:?}");
+    }
+    assert!(up
+        .iter()
+        .zip(&down)
+        .any(|(a, b)| (a[1] - b[1]).abs() > 100.0));
+}
+
+/// The pictures in `docs/` and the commands in the README that make them. The mushroom of
+/// HNN-Crust is in image coordinates (y down), hence `--y-down`.
+const BUNDLED_PICTURES: &[(&str, &[&str])] = &[
+    ("bean.svg", &["examples/data/bean.txt", "--format", "svg"]),
+    (
+        "mushroom.svg",
+        &[
+            "examples/data/mushroom.p2d",
+            "--format",
+            "svg",
+            "--show",
+            "delaunay",
+            "--y-down",
+        ],
+    ),
+];
+
+#[test]
+fn the_bundled_pictures_are_what_the_readme_commands_make() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let readme = fs::read_to_string(root.join("README.md")).unwrap();
+    let write = std::env::var_os("WDM_CRUST_WRITE_PICTURES").is_some();
+    for &(name, args) in BUNDLED_PICTURES {
+        let command = format!("reconstruct {} -o {name}", args.join(" "));
+        assert!(
+            readme.contains(&command),
+            "the README should show `{command}` for docs/{name}"
+        );
+        assert!(
+            readme.contains(&format!("(docs/{name})")),
+            "docs/{name} not shown"
+        );
+        let mut full = vec!["reconstruct"];
+        full.extend_from_slice(args);
+        let run = run_in(root, &full, b"");
+        assert_eq!(run.code, 0, "{name}: {}", run.stderr);
+        let path = root.join("docs").join(name);
+        if write {
+            fs::write(&path, &run.stdout).unwrap();
+        }
+        assert!(
+            fs::read_to_string(&path).unwrap() == run.stdout,
+            "docs/{name} is not what `wdm-crust {command}` makes; regenerate the pictures with \
+             WDM_CRUST_WRITE_PICTURES=1 cargo test --release --test cli_reconstruct bundled_pictures"
+        );
+    }
 }

@@ -71,6 +71,14 @@ fn every_input_format_gives_the_same_triangulation() {
         ("comma.xy", b"0,0\n1, 0\n0 ,1\n1 , 1\n0.5,0.25"),
         ("header.csv", b"x,y\n0,0\n1,0\n0,1\n1,1\n0.5,0.25\n"),
         (
+            "id-header.csv",
+            b"id,X,Y\n10,0,0\n11,1,0\n12,0,1\n13,1,1\n14,0.5,0.25\n",
+        ),
+        (
+            "swapped.txt",
+            b"# exported\nlabel y x\na 0 0\nb 0 1\nc 1 0\nd 1 1\ne 0.25 0.5\n",
+        ),
+        (
             "header.txt",
             b"\"x\",\"y\"\r\n0,0\r\n1,0\r\n0,1\r\n1,1\r\n0.5,0.25\r\n",
         ),
@@ -215,7 +223,7 @@ const BAD_INPUTS: &[(&str, &[u8], usize, &str)] = &[
         "not a number",
     ),
     ("one.txt", b"0 0\n\n# c\n7\n", 4, "only one number"),
-    ("empty-field.csv", b"x,y\n1,,2\n", 2, "empty field"),
+    ("empty-field.csv", b"x,y,z\n1,,2\n", 2, "empty field"),
     ("nan.txt", b"0 0\nnan 1\n", 2, "not a finite number"),
     ("inf.txt", b"0 0\n1 0\n1 -inf\n", 3, "not a finite number"),
     (
@@ -280,6 +288,44 @@ const BAD_INPUTS: &[(&str, &[u8], usize, &str)] = &[
         b"3 2 0 0\n7 0 0\n8 1 0\n9 0 1\n",
         2,
         "must be 0 or 1",
+    ),
+    (
+        "attributes.node",
+        b"2 2 1 0\n0 0 0\n1 1 0\n",
+        2,
+        "the .node header asks for 3 + 1 + 0",
+    ),
+    (
+        "decimal-comma.txt",
+        b"0,5 1,5\n2,5 0,5\n",
+        1,
+        "decimal commas are not supported",
+    ),
+    ("semicolons.csv", b"x;y\n0,5;1,5\n", 1, "semicolons"),
+    (
+        "no-xy.csv",
+        b"lon,lat\n1,2\n3,4\n",
+        1,
+        "names the columns \"lon\", \"lat\" but no `x` and `y`",
+    ),
+    ("twice.csv", b"x,y,X\n1,2,3\n", 1, "two columns \"x\""),
+    (
+        "short-row.csv",
+        b"id,x,y\n1,0,0\n2,1\n",
+        3,
+        "2 columns, but the header on line 1 has 3",
+    ),
+    (
+        "thousands.txt",
+        b"1,2\n1,000.5,2\n",
+        2,
+        "3 columns, but the first row on line 1 has 2",
+    ),
+    (
+        "ragged.txt",
+        b"0 0 1\n1 0\n",
+        2,
+        "2 columns, but the first row on line 1 has 3",
     ),
 ];
 
@@ -506,5 +552,42 @@ fn real_data_round_trip() {
         let run = run_in(Path::new("."), &["triangulate"], &fs::read(&path).unwrap());
         assert_eq!(run.code, 0, "{name}: {}", run.stderr);
         check_json(&run.stdout, &points);
+    }
+}
+
+#[test]
+fn an_empty_input_succeeds_with_a_note_for_every_subcommand() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "comments.txt", b"# nothing yet\n\n   \n");
+    write(d, "header.csv", b"id,x,y\r\n");
+    write(d, "none.node", b"0 2 0 0\n");
+    for subcommand in ["triangulate", "voronoi", "reconstruct"] {
+        for (input, stdin, name) in [
+            (None, &b""[..], "<stdin>"),
+            (Some("-"), &b"\n# only a comment\n"[..], "<stdin>"),
+            (Some("comments.txt"), &b""[..], "comments.txt"),
+            (Some("header.csv"), &b""[..], "header.csv"),
+            (Some("none.node"), &b""[..], "none.node"),
+        ] {
+            let mut args = vec![subcommand];
+            args.extend(input);
+            let run = run_in(d, &args, stdin);
+            assert_eq!(run.code, 0, "{subcommand} {name}: {}", run.stderr);
+            assert!(
+                !run.stdout.is_empty(),
+                "{subcommand} {name}: an empty result is written"
+            );
+            let lines: Vec<&str> = run.stderr.lines().collect();
+            assert_eq!(lines.len(), 1, "{subcommand} {name}: {:?}", run.stderr);
+            assert!(
+                lines[0].starts_with(&format!("wdm-crust: note: {name}: no points")),
+                "{subcommand} {name}: {}",
+                lines[0]
+            );
+        }
+        // One point is not empty: no note.
+        let run = run_in(d, &[subcommand], b"1 2\n");
+        assert_eq!((run.code, run.stderr.as_str()), (0, ""), "{subcommand}");
     }
 }

@@ -308,7 +308,11 @@ impl fmt::Display for ParseErrorKind {
                 f.write_str(
                     " but no `x` and `y`: name the coordinate columns x and y (any case), \
                      or remove the header line",
-                )
+                )?;
+                if columns.iter().any(|name| name.contains(';')) {
+                    f.write_str(" (semicolons do not separate columns here: use commas)")?;
+                }
+                Ok(())
             }
             ParseErrorKind::DuplicateColumn { name } => write!(
                 f,

@@ -599,6 +599,8 @@ fn help_documents_the_formats() {
         "nn-crust",
         "--no-peeling",
         "--show",
+        "--y-down",
+        "image coordinates",
         "\"medial_axis\"",
         "Text output: one reconstructed edge",
         "SVG output",

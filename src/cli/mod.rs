@@ -21,10 +21,15 @@ pub use error::CliError;
 /// Shown after the top-level help.
 const FORMATS_HELP: &str = "\
 Input formats (detected from the content, or .node/.gtn/.csv by extension):
-  plain text   one point per line: `x y`, `x,y` or `x y z...` (extra columns ignored)
-  CSV          the same, after an optional header line such as `x,y`
+  plain text   one point per line: `x y`, `x,y` or `x y z...` (extra columns ignored); a
+               line with a comma is split at commas only, one without at white space
+  CSV          the same, after an optional header line of column names; the header picks
+               the columns named x and y (any case): `id,x,y` reads columns 2 and 3
   .node/.gtn   Triangle/Dey format: header `N 2 A B`, then `index x y [attributes] [marker]`
 Blank lines and `#` comments are skipped; \\n, \\r\\n and \\r line ends are all accepted.
+Refused with file and line, never misread: rows with a different number of columns than the
+header or first row, decimal commas (`0,5 1,5`), numbers followed by anything (`1.5x`).
+An input without points gives an empty result and a note on standard error.
 Point indices in every output are positions among the points read, counting from 0.
 On a terminal, inputs of more than 200000 points get a progress line per phase.
 

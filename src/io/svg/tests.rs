@@ -168,6 +168,20 @@ fn assert_renderable(svg: &str, points: &[[f64; 2]], y_down: bool) {
     }
 }
 
+/// The pictures of `points` with every layer, y up and y down, each checked by
+/// [`assert_renderable`].
+fn renderable_both_ways(points: &[[f64; 2]]) -> [String; 2] {
+    [false, true].map(|y_down| {
+        let options = SvgOptions {
+            y_down,
+            ..all_layers()
+        };
+        let svg = svg_of(points, &options);
+        assert_renderable(&svg, points, y_down);
+        svg
+    })
+}
+
 /// The numbers of a line in order, and the line with every number replaced by `#`.
 fn numbers_and_skeleton(line: &str) -> (Vec<f64>, String) {
     let mut numbers = Vec::new();
@@ -283,13 +297,7 @@ fn every_extent_and_offset_renders() {
             .iter()
             .map(|p| [offset[0] + extent * p[0], offset[1] + extent * p[1]])
             .collect();
-        for y_down in [false, true] {
-            let options = SvgOptions {
-                y_down,
-                ..all_layers()
-            };
-            let svg = svg_of(&points, &options);
-            assert_renderable(&svg, &points, y_down);
+        for svg in renderable_both_ways(&points) {
             if !name.contains("f64 values") {
                 assert!(svg.contains("<g id=\"closed-curves\""), "{name}");
             }
@@ -384,14 +392,7 @@ fn degenerate_inputs_draw_something_sane() {
         vec![[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]],
         vec![[1e9, 0.0], [1e9, 1e-6], [1e9, 2e-6]],
     ] {
-        for y_down in [false, true] {
-            let options = SvgOptions {
-                y_down,
-                ..all_layers()
-            };
-            let svg = svg_of(&points, &options);
-            assert_renderable(&svg, &points, y_down);
-        }
+        renderable_both_ways(&points);
     }
 }
 

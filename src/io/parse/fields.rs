@@ -22,8 +22,16 @@ pub(super) fn is_blank_char(c: char) -> bool {
 /// Whether `line` has a comma outside double quotes.
 #[inline]
 fn has_unquoted_comma(line: &str) -> bool {
+    let bytes = line.as_bytes();
+    // The common cases first, in one branch-free pass: no comma, or no quote.
+    let (commas, quotes) = bytes.iter().fold((false, false), |(c, q), &b| {
+        (c | (b == b','), q | (b == b'"'))
+    });
+    if !commas || !quotes {
+        return commas;
+    }
     let mut quoted = false;
-    for b in line.bytes() {
+    for &b in bytes {
         match b {
             b'"' => quoted = !quoted,
             b',' if !quoted => return true,
@@ -81,11 +89,13 @@ impl<'a> Fields<'a> {
 
     /// The next field of a white-space separated line, or `None` at its end.
     fn next_blank_field(&mut self) -> Option<&'a str> {
-        let rest = self.rest.trim_start_matches(is_blank_char);
-        if rest.is_empty() {
+        let start = self.rest.bytes().position(|b| !is_blank(b));
+        let Some(start) = start else {
             self.done = true;
             return None;
-        }
+        };
+        // White space is ASCII: `start` is on a character boundary.
+        let rest = &self.rest[start..];
         let bytes = rest.as_bytes();
         if bytes[0] == b'"' {
             // A quoted field ends at its closing quote, if white space or the end follows.

@@ -19,34 +19,50 @@ pub(super) fn is_blank_char(c: char) -> bool {
     c.is_ascii() && is_blank(c as u8)
 }
 
-/// Whether `line` has a comma outside double quotes.
+/// How a line is split: whether it has a comma outside double quotes, and if so, whether it
+/// has a quote at all.
 #[inline]
-fn has_unquoted_comma(line: &str) -> bool {
+fn separators(line: &str) -> (bool, bool) {
     let bytes = line.as_bytes();
-    // The common cases first, in one branch-free pass: no comma, or no quote.
-    let (commas, quotes) = bytes.iter().fold((false, false), |(c, q), &b| {
-        (c | (b == b','), q | (b == b'"'))
-    });
-    if !commas || !quotes {
-        return commas;
+    // The common cases first, with the fast byte search: no comma, or no quote.
+    if !bytes.contains(&b',') {
+        return (false, false);
+    }
+    if !bytes.contains(&b'"') {
+        return (true, false);
     }
     let mut quoted = false;
     for &b in bytes {
         match b {
             b'"' => quoted = !quoted,
-            b',' if !quoted => return true,
+            b',' if !quoted => return (true, true),
             _ => {}
         }
     }
-    false
+    (false, true)
+}
+
+/// `text` without white space at either end.
+#[inline]
+fn trim_blanks(text: &str) -> &str {
+    let bytes = text.as_bytes();
+    let (mut start, mut end) = (0, bytes.len());
+    while start < end && is_blank(bytes[start]) {
+        start += 1;
+    }
+    while end > start && is_blank(bytes[end - 1]) {
+        end -= 1;
+    }
+    // White space is ASCII: both ends are on character boundaries.
+    &text[start..end]
 }
 
 /// A field without its surrounding white space and quotes.
 #[inline]
 fn unquote(field: &str) -> &str {
-    let field = field.trim_matches(is_blank_char);
+    let field = trim_blanks(field);
     match field.strip_prefix('"').and_then(|f| f.strip_suffix('"')) {
-        Some(inner) => inner.trim_matches(is_blank_char),
+        Some(inner) => trim_blanks(inner),
         None => field,
     }
 }
@@ -56,14 +72,17 @@ fn unquote(field: &str) -> &str {
 pub(super) struct Fields<'a> {
     rest: &'a str,
     commas: bool,
+    quotes: bool,
     done: bool,
 }
 
 impl<'a> Fields<'a> {
     pub(super) fn new(line: &'a str) -> Self {
+        let (commas, quotes) = separators(line);
         Fields {
             rest: line,
-            commas: has_unquoted_comma(line),
+            commas,
+            quotes,
             done: false,
         }
     }
@@ -71,6 +90,19 @@ impl<'a> Fields<'a> {
     /// The next field of a comma-separated line: up to the next comma outside quotes.
     fn next_comma_field(&mut self) -> &'a str {
         let bytes = self.rest.as_bytes();
+        if !self.quotes {
+            return match bytes.iter().position(|&b| b == b',') {
+                Some(i) => {
+                    let field = &self.rest[..i];
+                    self.rest = &self.rest[i + 1..];
+                    trim_blanks(field)
+                }
+                None => {
+                    self.done = true;
+                    trim_blanks(self.rest)
+                }
+            };
+        }
         let mut quoted = false;
         for (i, &b) in bytes.iter().enumerate() {
             match b {
@@ -89,30 +121,35 @@ impl<'a> Fields<'a> {
 
     /// The next field of a white-space separated line, or `None` at its end.
     fn next_blank_field(&mut self) -> Option<&'a str> {
-        let start = self.rest.bytes().position(|b| !is_blank(b));
-        let Some(start) = start else {
+        let bytes = self.rest.as_bytes();
+        let n = bytes.len();
+        let mut start = 0;
+        while start < n && is_blank(bytes[start]) {
+            start += 1;
+        }
+        if start == n {
             self.done = true;
             return None;
-        };
-        // White space is ASCII: `start` is on a character boundary.
-        let rest = &self.rest[start..];
-        let bytes = rest.as_bytes();
-        if bytes[0] == b'"' {
+        }
+        if bytes[start] == b'"' {
             // A quoted field ends at its closing quote, if white space or the end follows.
-            if let Some(len) = rest[1..].find('"') {
-                let after = len + 2;
-                if after == rest.len() || is_blank(bytes[after]) {
-                    self.rest = &rest[after..];
-                    return Some(unquote(&rest[..after]));
+            if let Some(len) = self.rest[start + 1..].find('"') {
+                let after = start + len + 2;
+                if after == n || is_blank(bytes[after]) {
+                    let field = &self.rest[start..after];
+                    self.rest = &self.rest[after..];
+                    return Some(unquote(field));
                 }
             }
         }
-        let end = bytes
-            .iter()
-            .position(|&b| is_blank(b))
-            .unwrap_or(rest.len());
-        self.rest = &rest[end..];
-        Some(&rest[..end])
+        let mut end = start + 1;
+        while end < n && !is_blank(bytes[end]) {
+            end += 1;
+        }
+        // White space is ASCII: `start` and `end` are on character boundaries.
+        let field = &self.rest[start..end];
+        self.rest = &self.rest[end..];
+        Some(field)
     }
 }
 

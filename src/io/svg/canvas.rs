@@ -87,8 +87,29 @@ impl Canvas {
     /// The part of the segment `a b` inside the drawing area, in pixels.
     pub(super) fn segment(&self, a: [f64; 2], b: [f64; 2]) -> Option<[[f64; 2]; 2]> {
         let (pa, pb) = (self.to_px(a), self.to_px(b));
-        if self.holds_px(pa) && self.holds_px(pb) {
-            return Some([pa, pb]);
+        match (self.holds_px(pa), self.holds_px(pb)) {
+            (true, true) => return Some([pa, pb]),
+            // From an end inside, floating point loses nothing that shows: the error is a
+            // few units in the last place of the distance to the border.
+            (true, false) if pb.iter().all(|v| v.is_finite()) => {
+                return Some([
+                    pa,
+                    self.exit_from_inside(pa, [pb[0] - pa[0], pb[1] - pa[1]], 1.0),
+                ])
+            }
+            (false, true) if pa.iter().all(|v| v.is_finite()) => {
+                return Some([
+                    self.exit_from_inside(pb, [pa[0] - pb[0], pa[1] - pb[1]], 1.0),
+                    pb,
+                ])
+            }
+            (false, false) => {
+                let d = [pb[0] - pa[0], pb[1] - pa[1]];
+                if self.surely_misses_line(pa, d, 0.0, 1.0) {
+                    return None;
+                }
+            }
+            _ => {}
         }
         let origin = self.exact_px(&exact_point(a)?);
         let end = self.exact_px(&exact_point(b)?);
@@ -99,6 +120,16 @@ impl Canvas {
 
     /// The part of the ray from `origin` along the data direction `d` inside the drawing area.
     pub(super) fn ray(&self, origin: [f64; 2], d: [f64; 2]) -> Option<[[f64; 2]; 2]> {
+        let o = self.to_px(origin);
+        let dir = [d[0], if self.y_down { d[1] } else { -d[1] }];
+        if dir.iter().all(|v| v.is_finite()) && dir != [0.0, 0.0] {
+            if self.holds_px(o) {
+                return Some([o, self.exit_from_inside(o, dir, f64::INFINITY)]);
+            }
+            if self.surely_misses_line(o, dir, 0.0, f64::INFINITY) {
+                return None;
+            }
+        }
         let origin = self.exact_px(&exact_point(origin)?);
         let dir = self.exact_direction(d)?;
         self.clip_exact(&origin, &dir, Some(BigRational::zero()), None)
@@ -112,6 +143,55 @@ impl Canvas {
         let origin = self.exact_px(&mid);
         let dir = self.exact_direction([b[1] - a[1], a[0] - b[0]])?;
         self.clip_exact(&origin, &dir, None, None)
+    }
+
+    /// Where `inside + t d`, `0 ≤ t ≤ t_max`, from a point in the drawing area, leaves it (or
+    /// its end, if that comes first). `d` is finite and not zero.
+    fn exit_from_inside(&self, inside: [f64; 2], d: [f64; 2], t_max: f64) -> [f64; 2] {
+        let bounds = [self.width_px, self.data_height_px];
+        let mut t = t_max;
+        for k in 0..2 {
+            if d[k] > 0.0 {
+                t = t.min((bounds[k] - inside[k]) / d[k]);
+            } else if d[k] < 0.0 {
+                t = t.min(-inside[k] / d[k]);
+            }
+        }
+        // `t d` may overflow for a tiny `d`: the border is then where the line goes.
+        [0, 1].map(|k| {
+            let v = inside[k] + t * d[k];
+            if v.is_nan() {
+                inside[k]
+            } else {
+                v.clamp(0.0, bounds[k])
+            }
+        })
+    }
+
+    /// Whether `o + t d`, `lo ≤ t ≤ hi`, in pixels, certainly misses the drawing area: it
+    /// misses the area grown by more than floating point can err here (Liang–Barsky). `false`
+    /// when unsure, or when a value is not finite.
+    fn surely_misses_line(&self, o: [f64; 2], d: [f64; 2], lo: f64, hi: f64) -> bool {
+        if !o.iter().chain(&d).all(|v| v.is_finite()) {
+            return false;
+        }
+        let bounds = [self.width_px, self.data_height_px];
+        let (mut lo, mut hi) = (lo, hi);
+        for k in 0..2 {
+            let slack = 1.0 + 1e-9 * o[k].abs();
+            let (low, high) = (-slack, bounds[k] + slack);
+            if d[k] == 0.0 {
+                if o[k] < low || o[k] > high {
+                    return true;
+                }
+                continue;
+            }
+            let (a, b) = ((low - o[k]) / d[k], (high - o[k]) / d[k]);
+            lo = lo.max(a.min(b));
+            hi = hi.min(a.max(b));
+        }
+        // Only a clear gap counts: t values carry rounding too.
+        lo.is_finite() && hi.is_finite() && lo > hi + 1e-9 * (lo.abs() + hi.abs())
     }
 
     /// The pixel position of an exact data point.
@@ -204,5 +284,60 @@ pub(super) fn bounding_box(points: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
         ([0.0; 2], [1.0; 2])
     } else {
         (min, max)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A small deterministic generator (xorshift64) of values in [-1, 1).
+    fn pseudo_random(state: &mut u64) -> f64 {
+        *state ^= *state << 13;
+        *state ^= *state >> 7;
+        *state ^= *state << 17;
+        (*state >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    }
+
+    #[test]
+    fn the_floating_point_shortcuts_agree_with_exact_clipping() {
+        let mut state = 0x9e37_79b9_7f4a_7c15;
+        for y_down in [false, true] {
+            let canvas = Canvas::new(&[[0.0, 0.0], [1.0, 0.5]], y_down);
+            let exact_segment = |a: [f64; 2], b: [f64; 2]| {
+                let (ea, eb) = (exact_point(a).unwrap(), exact_point(b).unwrap());
+                let (pa, pb) = (canvas.exact_px(&ea), canvas.exact_px(&eb));
+                let dir = [&pb[0] - &pa[0], &pb[1] - &pa[1]];
+                let one = BigRational::from_integer(BigInt::from(1));
+                canvas.clip_exact(&pa, &dir, Some(BigRational::zero()), Some(one))
+            };
+            let exact_ray = |o: [f64; 2], d: [f64; 2]| {
+                let origin = canvas.exact_px(&exact_point(o).unwrap());
+                let dir = canvas.exact_direction(d).unwrap();
+                canvas.clip_exact(&origin, &dir, Some(BigRational::zero()), None)
+            };
+            let close = |a: Option<[[f64; 2]; 2]>, b: Option<[[f64; 2]; 2]>| match (a, b) {
+                (Some(a), Some(b)) => {
+                    (0..2).all(|i| (0..2).all(|k| (a[i][k] - b[i][k]).abs() < 1e-6))
+                }
+                (a, b) => a.is_none() && b.is_none(),
+            };
+            for _ in 0..2000 {
+                let mut r = || pseudo_random(&mut state);
+                let inside = [0.5 + 0.5 * r(), 0.25 + 0.25 * r()];
+                let scale = 10f64.powi((6.0 * r()).round() as i32);
+                let far = [inside[0] + scale * r(), inside[1] + scale * r()];
+                let d = [r(), r()];
+                let outside = [3.0 + 2.0 * r(), 3.0 * r()];
+                for (a, b) in [(inside, far), (far, inside), (outside, far)] {
+                    let (fast, exact) = (canvas.segment(a, b), exact_segment(a, b));
+                    assert!(close(fast, exact), "{a:?} {b:?}: {fast:?} vs {exact:?}");
+                }
+                for o in [inside, far, outside] {
+                    let (fast, exact) = (canvas.ray(o, d), exact_ray(o, d));
+                    assert!(close(fast, exact), "{o:?} {d:?}: {fast:?} vs {exact:?}");
+                }
+            }
+        }
     }
 }

@@ -421,6 +421,18 @@ fn clipping_is_exact_for_far_ends() {
         assert!(distance_to_line(end, a, b) < 1e-9, "{end:?}");
         assert!(on_edge(end) && canvas.holds_px(end), "{end:?}");
     }
+    // From a point inside to one 2^600 away on the diagonal (the floating-point path).
+    let [p, q] = canvas.segment([0.25, 0.25], [far, far]).unwrap();
+    assert_eq!(p, canvas.to_px([0.25, 0.25]));
+    assert!(distance_to_line(q, a, b) < 1e-9 && on_edge(q), "{q:?}");
+    let [p, q] = canvas.segment([far, far], [0.25, 0.25]).unwrap();
+    assert_eq!(q, canvas.to_px([0.25, 0.25]));
+    assert!(distance_to_line(p, a, b) < 1e-9 && on_edge(p), "{p:?}");
+    // Far outside on one side, and crossing the drawing from outside to outside.
+    assert!(canvas.segment([-far, -far], [-far, far]).is_none());
+    assert!(canvas.segment([2.0, -1.0], [2.0, 3.0]).is_none());
+    let [p, q] = canvas.segment([-1.0, 0.5], [2.0, 0.5]).unwrap();
+    assert_eq!([p[0], q[0]], [0.0, canvas.width_px]);
     // A ray from far away towards the drawing, and one pointing away from it.
     let [p, q] = canvas.ray([-far, 0.5], [1.0, 0.0]).unwrap();
     assert_eq!([p[1], q[1]], [canvas.to_px([0.0, 0.5])[1]; 2]);

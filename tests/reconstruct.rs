@@ -5,7 +5,7 @@ use std::collections::BTreeSet;
 use wdm_crust::reconstruct::{Label, LabelRule, Options};
 use wdm_crust::{reconstruct, reconstruct_with};
 use wdm_crust_testkit::{
-    ClosedCurve, CurveSet, Ellipse, Peanut, Rng, Sample, SampleConfig, Similarity, Star,
+    ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Sample, SampleConfig, Similarity, Star,
 };
 
 type EdgeSet = BTreeSet<(usize, usize)>;
@@ -245,7 +245,10 @@ fn peeling_many_nested_rings_stops_at_the_budget() {
     assert!(!unbounded.peeling_budget_exhausted());
     assert_eq!(unbounded.passes(), 20);
     assert_eq!(unbounded.curves().len(), 20);
-    assert!(unbounded.curves().iter().all(|c| c.closed && c.points.len() == 300));
+    assert!(unbounded
+        .curves()
+        .iter()
+        .all(|c| c.closed && c.points.len() == 300));
     assert!(unbounded.unassigned().is_empty());
     let bounded = reconstruct(&rings).unwrap();
     assert!(bounded.peeling_budget_exhausted());
@@ -449,4 +452,96 @@ fn degenerate_inputs_give_a_chain_or_nothing() {
     assert!(!rec.curves()[0].closed);
     assert_eq!(rec.curves()[0].points, vec![0, 2, 3, 1]);
     assert!(rec.medial_axis().edges.is_empty());
+}
+
+// ----- noisy closed curves (issue 13): one closed curve per true curve -----
+
+/// Evenly spaced samples of `curves` with Gaussian noise of `noise` × the mean spacing on
+/// each coordinate, shuffled.
+fn noisy_sample(curves: &[DenseCurve], noise: f64, rng: &mut Rng) -> Vec<[f64; 2]> {
+    let n: usize = curves.iter().map(|c| c.points.len()).sum();
+    let spacing = curves.iter().map(|c| c.length()).sum::<f64>() / n as f64;
+    let mut points: Vec<[f64; 2]> = curves
+        .iter()
+        .flat_map(|c| c.points.iter().copied())
+        .map(|[x, y]| {
+            [
+                x + noise * spacing * rng.normal(),
+                y + noise * spacing * rng.normal(),
+            ]
+        })
+        .collect();
+    rng.shuffle(&mut points);
+    points
+}
+
+/// In how many of `trials` noisy samples the reconstruction is exactly `curves.len()`
+/// closed curves and nothing else, the rest of the points unassigned.
+fn clean_outcomes(curves: &[DenseCurve], noise: f64, trials: u64) -> u64 {
+    (0..trials)
+        .filter(|&seed| {
+            let points = noisy_sample(curves, noise, &mut Rng::new(seed * 7919 + 1));
+            let rec = reconstruct(&points).unwrap();
+            let clean =
+                rec.curves().len() == curves.len() && rec.curves().iter().all(|c| c.closed);
+            if clean {
+                // Every point is on exactly one curve or unassigned.
+                let on_curves: usize = rec.curves().iter().map(|c| c.points.len()).sum();
+                assert_eq!(on_curves + rec.unassigned().len(), points.len());
+            }
+            clean
+        })
+        .count() as u64
+}
+
+/// Noise of 0.1 to 1 sample spacing around one closed curve: one closed curve, no chains
+/// or extra loops, the leftovers of the noise band unassigned (before peeling kept only
+/// what reads as a curve: 0.4 to 14 open chains on average at 0.3 to 1 spacing).
+#[test]
+fn noisy_closed_curves_come_out_as_one_closed_curve() {
+    let shapes = [
+        Peanut { a: 0.3, b: 0.15 }.dense(150),
+        Star { a: 0.25, k: 5 }.dense(200),
+    ];
+    // (noise in sample spacings, clean outcomes of 20 at least): measured 20, 20, 19–20,
+    // 19–20; the bound leaves one trial of slack.
+    for (noise, at_least) in [(0.1, 20), (0.3, 19), (0.5, 17), (1.0, 18)] {
+        for shape in &shapes {
+            let clean = clean_outcomes(std::slice::from_ref(shape), noise, 20);
+            assert!(clean >= at_least, "noise {noise}: {clean} of 20");
+        }
+    }
+}
+
+/// An ellipse with a circular hole: the hole survives noise up to 0.3 spacings as its own
+/// closed curve (before: lost in 11 of 20 trials at 0.3).
+#[test]
+fn a_noisy_hole_stays_a_closed_curve() {
+    let outer = Ellipse { a: 1.5, b: 1.0 }.dense(200);
+    let hole = Ellipse::circle(0.4)
+        .dense(64)
+        .transformed(&Similarity::translation([0.3, 0.0]));
+    let curves = [outer, hole];
+    for (noise, at_least) in [(0.0, 20), (0.1, 20), (0.3, 18)] {
+        let clean = clean_outcomes(&curves, noise, 20);
+        assert!(clean >= at_least, "noise {noise}: {clean} of 20");
+    }
+}
+
+/// Unassigned points: sorted, distinct, on no edge; duplicates are not listed.
+#[test]
+fn unassigned_points_are_the_points_on_no_curve() {
+    let mut rng = Rng::new(5);
+    let mut points = noisy_sample(&[Peanut { a: 0.3, b: 0.15 }.dense(150)], 0.5, &mut rng);
+    points.extend_from_slice(&points[..10].to_vec());
+    let rec = reconstruct(&points).unwrap();
+    let unassigned = rec.unassigned();
+    assert!(!unassigned.is_empty());
+    assert!(unassigned.windows(2).all(|w| w[0] < w[1]));
+    let touched: BTreeSet<u32> = rec.edges().iter().flatten().copied().collect();
+    let expected: Vec<u32> = (0..points.len() as u32)
+        .filter(|&i| !touched.contains(&i) && !rec.triangulation().is_duplicate(i))
+        .collect();
+    assert_eq!(unassigned, &expected[..]);
+    assert!(unassigned.iter().all(|&i| (i as usize) < points.len() - 10));
 }

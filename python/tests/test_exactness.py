@@ -1,0 +1,78 @@
+"""wdm_crust.triangulate is the exact Delaunay triangulation on inputs where floating-point
+triangulations fail, checked in rational arithmetic. scipy.spatial.Delaunay runs on the same
+points and its verdict is shown in the terminal summary, never asserted."""
+
+import numpy as np
+import pytest
+import scipy.spatial
+
+import wdm_crust
+from adversarial import CASES, huge
+from conftest import SCIPY_VERDICTS
+from exact import convex_hull, delaunay_problems, orient, rational_points
+
+
+def counterclockwise(points, triangles):
+    """scipy's triangles, each turned counterclockwise (scipy does not orient them)."""
+    exact = rational_points(points)
+    return [
+        (a, b, c) if orient(exact[a], exact[b], exact[c]) >= 0 else (a, c, b)
+        for a, b, c in triangles
+    ]
+
+
+def scipy_verdict(points):
+    try:
+        simplices = scipy.spatial.Delaunay(points).simplices
+    except Exception as error:  # Qhull refuses some inputs outright
+        return f"raised {type(error).__name__}: {str(error).splitlines()[0][:60]}"
+    problems = delaunay_problems(points, counterclockwise(points, simplices))
+    if not problems:
+        return "exact Delaunay"
+    return f"{len(problems)} problems, e.g. {problems[0]}"
+
+
+def cyclic_edges(cycle):
+    return {(cycle[k], cycle[(k + 1) % len(cycle)]) for k in range(len(cycle))}
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_triangulation_is_exactly_delaunay(name):
+    points = CASES[name]()
+    tri = wdm_crust.triangulate(points)
+    assert tri.triangles.shape[1:] == (3,) and len(tri.triangles) > 0
+    assert delaunay_problems(points, tri.triangles) == []
+    # The hull is the exact convex hull, every point on its boundary included.
+    hull = [int(i) for i in tri.hull]
+    assert cyclic_edges(hull) == cyclic_edges(convex_hull(rational_points(points)))
+    SCIPY_VERDICTS.append((name, scipy_verdict(points)))
+
+
+def test_the_checker_catches_a_non_delaunay_triangulation():
+    # The square's two triangulations: a point inside the circumcircle makes one invalid.
+    points = np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.5]])
+    good = wdm_crust.triangulate(points).triangles
+    assert delaunay_problems(points, good) == []
+    flipped = [(0, 1, 3), (1, 2, 3)] if {0, 2} <= set(good[0]) else [(0, 1, 2), (0, 2, 3)]
+    assert any("locally Delaunay" in p for p in delaunay_problems(points, flipped))
+    assert delaunay_problems(points, flipped[:1]) != []  # no longer covers the hull
+
+
+def test_huge_coordinates_beyond_the_envelope():
+    """1e200 is outside the envelope the exact predicates are proven for, unless the engine
+    has lifted it: then the result must be exact, else a ValueError names the first point."""
+    points = huge(1e200)
+    if np.abs(points).max() <= wdm_crust.MAX_MAGNITUDE:
+        assert delaunay_problems(points, wdm_crust.triangulate(points).triangles) == []
+    else:
+        with pytest.raises(ValueError, match=r"^point 0: .*above 2\^201"):
+            wdm_crust.triangulate(points)
+    SCIPY_VERDICTS.append(("huge coordinates (1e200)", scipy_verdict(points)))
+
+
+def test_collinear_input_has_no_triangle_and_the_line_as_hull():
+    ulp = 2.0 ** -52
+    points = np.array([[1.0 + k * ulp, 2.0 + 2 * k * ulp] for k in (5, 0, 3, 1, 4, 2)])
+    tri = wdm_crust.triangulate(points)
+    assert tri.triangles.shape == (0, 3)
+    assert tri.hull.tolist() in ([1, 3, 5, 2, 4, 0], [0, 4, 2, 5, 3, 1])

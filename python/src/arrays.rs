@@ -21,8 +21,9 @@ pub fn rows_array<'py, T: Element, const N: usize>(
     rows: Vec<[T; N]>,
 ) -> PyResult<Bound<'py, PyArray2<T>>> {
     let m = rows.len();
-    let array = Array2::from_shape_vec((m, N), rows.into_flattened())
-        .map_err(|e| PyRuntimeError::new_err(format!("internal: result of shape ({m}, {N}): {e}")))?;
+    let array = Array2::from_shape_vec((m, N), rows.into_flattened()).map_err(|e| {
+        PyRuntimeError::new_err(format!("internal: result of shape ({m}, {N}): {e}"))
+    })?;
     Ok(array.into_pyarray(py))
 }
 

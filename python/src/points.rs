@@ -6,9 +6,7 @@
 //! checked, so that nothing is silently misread (strings, booleans, complex numbers and
 //! objects are refused, and so is any shape but (n, 2)).
 
-use numpy::{
-    PyArray2, PyArrayDescrMethods, PyArrayMethods, PyUntypedArray, PyUntypedArrayMethods,
-};
+use numpy::{PyArray2, PyArrayDescrMethods, PyArrayMethods, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 

@@ -17,7 +17,9 @@ fn point_arg(function: &str, name: &str, value: &Bound<'_, PyAny>) -> PyResult<[
         if let Err(e) = wdm_crust::error::check_coordinate(0, coordinate) {
             // The engine's message starts "point 0: "; here the point has a name.
             let message = e.to_string();
-            let reason = message.split_once(": ").map_or(message.as_str(), |(_, r)| r);
+            let reason = message
+                .split_once(": ")
+                .map_or(message.as_str(), |(_, r)| r);
             return Err(PyValueError::new_err(format!(
                 "{function}: {name}: {reason}"
             )));
@@ -40,19 +42,13 @@ fn point_arg(function: &str, name: &str, value: &Bound<'_, PyAny>) -> PyResult<[
 ///     ValueError: a coordinate is NaN, infinite or outside the exact envelope.
 ///     TypeError: an argument is not a point of two real numbers.
 #[pyfunction]
-pub fn orient2d(
-    a: &Bound<'_, PyAny>,
-    b: &Bound<'_, PyAny>,
-    c: &Bound<'_, PyAny>,
-) -> PyResult<i32> {
+pub fn orient2d(a: &Bound<'_, PyAny>, b: &Bound<'_, PyAny>, c: &Bound<'_, PyAny>) -> PyResult<i32> {
     let [a, b, c] = [("a", a), ("b", b), ("c", c)].map(|(n, v)| point_arg("orient2d", n, v));
-    Ok(
-        match wdm_crust::predicates::orient2d(a?, b?, c?) {
-            Orientation::CounterClockwise => 1,
-            Orientation::Clockwise => -1,
-            Orientation::Collinear => 0,
-        },
-    )
+    Ok(match wdm_crust::predicates::orient2d(a?, b?, c?) {
+        Orientation::CounterClockwise => 1,
+        Orientation::Clockwise => -1,
+        Orientation::Collinear => 0,
+    })
 }
 
 /// Exact position of d relative to the circle through a, b, c.
@@ -78,11 +74,9 @@ pub fn incircle(
 ) -> PyResult<i32> {
     let [a, b, c, d] =
         [("a", a), ("b", b), ("c", c), ("d", d)].map(|(n, v)| point_arg("incircle", n, v));
-    Ok(
-        match wdm_crust::predicates::incircle(a?, b?, c?, d?) {
-            CirclePosition::Inside => 1,
-            CirclePosition::Outside => -1,
-            CirclePosition::On => 0,
-        },
-    )
+    Ok(match wdm_crust::predicates::incircle(a?, b?, c?, d?) {
+        CirclePosition::Inside => 1,
+        CirclePosition::Outside => -1,
+        CirclePosition::On => 0,
+    })
 }

@@ -282,11 +282,7 @@ impl Reconstruction {
     }
 
     fn __repr__(&self, py: Python<'_>) -> String {
-        let closed = self
-            .curves
-            .iter()
-            .filter(|c| c.get().closed)
-            .count();
+        let closed = self.curves.iter().filter(|c| c.get().closed).count();
         format!(
             "Reconstruction(algorithm='{}', point_count={}, edges={}, closed_curves={}, open_chains={}, medial_axis_edges={}, unassigned={}, passes={})",
             self.algorithm(),

@@ -8,11 +8,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from .scipy_report import VERDICTS
+
 REPO = Path(__file__).resolve().parents[2]
 CLI = REPO / "target" / "release" / "wdm-crust"
-
-# Filled by test_exactness.py: (input name, scipy's verdict) for the terminal summary.
-SCIPY_VERDICTS = []
 
 
 @pytest.fixture(scope="session")
@@ -43,13 +42,13 @@ def cli():
 
 
 def pytest_terminal_summary(terminalreporter):
-    if not SCIPY_VERDICTS:
+    if not VERDICTS:
         return
-    failed = [name for name, verdict in SCIPY_VERDICTS if verdict != "exact Delaunay"]
+    failed = [name for name, verdict in VERDICTS if verdict != "exact Delaunay"]
     terminalreporter.section("scipy.spatial.Delaunay on the adversarial inputs")
-    for name, verdict in SCIPY_VERDICTS:
+    for name, verdict in VERDICTS:
         terminalreporter.write_line(f"{name:<28} {verdict}")
     terminalreporter.write_line(
-        f"scipy: {len(failed)} of {len(SCIPY_VERDICTS)} not an exact Delaunay "
+        f"scipy: {len(failed)} of {len(VERDICTS)} not an exact Delaunay "
         "triangulation of all the points; wdm_crust: exact on every one (asserted)"
     )

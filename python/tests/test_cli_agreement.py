@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import wdm_crust
-from samples import SAMPLES
+from .samples import SAMPLES
 
 # (keyword arguments of wdm_crust.reconstruct, the same options on the command line)
 RECONSTRUCT_OPTIONS = [

@@ -7,9 +7,9 @@ import pytest
 import scipy.spatial
 
 import wdm_crust
-from adversarial import CASES, huge
-from conftest import SCIPY_VERDICTS
-from exact import convex_hull, delaunay_problems, orient, rational_points
+from .adversarial import CASES, huge
+from .exact import convex_hull, delaunay_problems, orient, rational_points
+from .scipy_report import VERDICTS
 
 
 def counterclockwise(points, triangles):
@@ -45,7 +45,7 @@ def test_triangulation_is_exactly_delaunay(name):
     # The hull is the exact convex hull, every point on its boundary included.
     hull = [int(i) for i in tri.hull]
     assert cyclic_edges(hull) == cyclic_edges(convex_hull(rational_points(points)))
-    SCIPY_VERDICTS.append((name, scipy_verdict(points)))
+    VERDICTS.append((name, scipy_verdict(points)))
 
 
 def test_the_checker_catches_a_non_delaunay_triangulation():
@@ -67,7 +67,7 @@ def test_huge_coordinates_beyond_the_envelope():
     else:
         with pytest.raises(ValueError, match=r"^point 0: .*above 2\^201"):
             wdm_crust.triangulate(points)
-    SCIPY_VERDICTS.append(("huge coordinates (1e200)", scipy_verdict(points)))
+    VERDICTS.append(("huge coordinates (1e200)", scipy_verdict(points)))
 
 
 def test_collinear_input_has_no_triangle_and_the_line_as_hull():

@@ -12,10 +12,6 @@ import numpy as np
 import numpy.typing as npt
 
 __version__: str
-MIN_MAGNITUDE: float
-"""Smallest non-zero coordinate magnitude accepted: 2**-142."""
-MAX_MAGNITUDE: float
-"""Largest coordinate magnitude accepted: 2**201."""
 
 _Points = npt.ArrayLike
 """An (n, 2) array-like of real numbers."""
@@ -106,9 +102,9 @@ class Reconstruction:
 def triangulate(points: _Points) -> Triangulation:
     """The exact Delaunay triangulation of `points`.
 
-    Raises ValueError for NaN, infinite or out-of-envelope coordinates (naming the point's
-    index) and for a shape other than (n, 2); TypeError for points that are not real
-    numbers. The GIL is released while the engine runs.
+    Raises ValueError for a coordinate the engine refuses (NaN, infinite, or outside the
+    range its exact predicates support), naming the point's index, and for a shape other
+    than (n, 2); TypeError for points that are not real numbers. The GIL is released while the engine runs.
     """
 
 def voronoi(points: _Points) -> Voronoi:

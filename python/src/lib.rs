@@ -20,10 +20,8 @@ mod voronoi;
 use pyo3::prelude::*;
 
 /// The module's public names.
-const PUBLIC_NAMES: [&str; 12] = [
+const PUBLIC_NAMES: [&str; 10] = [
     "__version__",
-    "MIN_MAGNITUDE",
-    "MAX_MAGNITUDE",
     "triangulate",
     "voronoi",
     "reconstruct",
@@ -46,8 +44,6 @@ const PUBLIC_NAMES: [&str; 12] = [
 #[pyo3(name = "wdm_crust")]
 fn wdm_crust_python(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add("__version__", env!("CARGO_PKG_VERSION"))?;
-    module.add("MIN_MAGNITUDE", wdm_crust::error::MIN_MAGNITUDE)?;
-    module.add("MAX_MAGNITUDE", wdm_crust::error::MAX_MAGNITUDE)?;
     module.add_function(wrap_pyfunction!(triangulation::triangulate, module)?)?;
     module.add_function(wrap_pyfunction!(voronoi::voronoi, module)?)?;
     module.add_function(wrap_pyfunction!(reconstruction::reconstruct, module)?)?;

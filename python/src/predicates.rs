@@ -5,8 +5,8 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use wdm_crust::predicates::{CirclePosition, Orientation};
 
-/// The point `value`, given as the argument `name` of `function`: two finite coordinates
-/// inside the exact envelope (outside it the adaptive predicates could over- or underflow).
+/// The point `value`, given as the argument `name` of `function`: two coordinates the engine
+/// accepts (`check_coordinate`: finite, and inside the range its exact predicates support).
 fn point_arg(function: &str, name: &str, value: &Bound<'_, PyAny>) -> PyResult<[f64; 2]> {
     let point: [f64; 2] = value.extract().map_err(|_| {
         PyTypeError::new_err(format!(
@@ -39,7 +39,8 @@ fn point_arg(function: &str, name: &str, value: &Bound<'_, PyAny>) -> PyResult<[
 ///     of the float64 values, never rounded.
 ///
 /// Raises:
-///     ValueError: a coordinate is NaN, infinite or outside the exact envelope.
+///     ValueError: the engine refuses a coordinate (NaN, infinite, or outside the range
+///         its exact predicates support); the message names the argument.
 ///     TypeError: an argument is not a point of two real numbers.
 #[pyfunction]
 pub fn orient2d(a: &Bound<'_, PyAny>, b: &Bound<'_, PyAny>, c: &Bound<'_, PyAny>) -> PyResult<i32> {
@@ -63,7 +64,7 @@ pub fn orient2d(a: &Bound<'_, PyAny>, b: &Bound<'_, PyAny>, c: &Bound<'_, PyAny>
 ///     if they are collinear it tells on which side of their line d lies.
 ///
 /// Raises:
-///     ValueError: a coordinate is NaN, infinite or outside the exact envelope.
+///     ValueError: as `orient2d`.
 ///     TypeError: an argument is not a point of two real numbers.
 #[pyfunction]
 pub fn incircle(

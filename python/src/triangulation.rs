@@ -134,9 +134,9 @@ impl Triangulation {
 ///     (then `triangles` is empty and `hull` lists the points along the line).
 ///
 /// Raises:
-///     ValueError: a coordinate is NaN, infinite, or outside the exact envelope
-///         (0 or magnitude in [MIN_MAGNITUDE, MAX_MAGNITUDE]); the message names the point's
-///         index. Also for a shape other than (n, 2).
+///     ValueError: the engine refuses a coordinate (NaN, infinite, or outside the range
+///         its exact predicates support); the message names the point's index. Also for a
+///         shape other than (n, 2).
 ///     TypeError: the points are not real numbers (strings, complex, booleans, objects).
 ///
 /// The GIL is released while the engine runs. Do not write to `points` from another

@@ -50,5 +50,5 @@ def pytest_terminal_summary(terminalreporter):
         terminalreporter.write_line(f"{name:<28} {verdict}")
     terminalreporter.write_line(
         f"scipy: {len(failed)} of {len(VERDICTS)} not an exact Delaunay "
-        "triangulation of all the points; wdm_crust: exact on every one (asserted)"
+        "triangulation of all the points; wdm_crust: exact on every input it accepts (asserted)"
     )

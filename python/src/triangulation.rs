@@ -5,7 +5,7 @@ use std::sync::Arc;
 use numpy::{PyArray1, PyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
-use crate::arrays::{indices, rows_array, vector};
+use crate::arrays::{index_rows, indices, rows_array, vector};
 use crate::errors::engine_error;
 use crate::points::with_points;
 use crate::voronoi::{Voronoi, VoronoiData};
@@ -41,7 +41,7 @@ impl TriangulationData {
                 .map(|t| tri.triangle(t).map(i64::from))
                 .collect(),
             hull: indices(tri.hull()),
-            duplicates: crate::arrays::index_rows(tri.duplicates()),
+            duplicates: index_rows(tri.duplicates()),
         }
     }
 }

@@ -52,6 +52,16 @@ pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
     let tri = full.triangulation();
     let points = &tri.points;
     let n = points.len();
+    // A clean sample leaves fewer than three points to peel: return before building anything.
+    let mut touched = vec![false; n];
+    for &[a, b] in edges.iter() {
+        touched[a as usize] = true;
+        touched[b as usize] = true;
+    }
+    if touched.iter().filter(|&&t| !t).nth(2).is_none() {
+        return Peeling::done(0);
+    }
+    drop(touched);
     let neighbours = DelaunayNeighbours::new(tri);
     let mut budget = options.peeling_budget().saturating_mul(n);
     // Points that can no longer start a curve: noise leftovers and what a pass could only

@@ -20,6 +20,7 @@
 
 mod bounding_box;
 mod cells;
+mod merge;
 
 pub use bounding_box::{BoundingBox, BoxError};
 

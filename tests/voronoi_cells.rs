@@ -141,23 +141,29 @@ fn half_ulp(x: f64) -> Q {
     q(f64::from_bits(a.to_bits() + 1) - a) / Q::from_integer(BigInt::from(2))
 }
 
-/// The properties of a tiling, checked exactly:
-/// * every cell of a distinct point is counterclockwise with positive area and convex up to
-///   the rounding of its vertices (each turn is left, or right by less than rounding the
-///   three vertices can change it); duplicates have no cell;
-/// * the areas add up to the box's area exactly (shared vertices are rounded identically,
-///   box sides keep their coordinate, so the signed areas telescope);
-/// * a site in the box lies in its cell;
+/// The properties of a tiling, checked exactly. Per cell, on [`clipped_cell`] (each vertex the
+/// exact one correctly rounded):
+/// * counterclockwise with positive area and convex up to the rounding of its vertices (each
+///   turn is left, or right by less than rounding the three vertices can change it);
+/// * a site in the box lies in its cell, up to the rounding of the cell's vertices;
 /// * every vertex of the cell of `p` is no farther from `p` than from any other site, up to
-///   the rounding of that vertex: `|v − s|² − |v − p|² ≥ −2 Σ_axis |p − s|_axis · ulp(v)/2`
-///   (checked against all sites when `all_sites`, else against every site that has a cell
-///   sharing the vertex and the site's Delaunay neighbours — enough for large inputs).
+///   its rounding: `|v − s|² − |v − p|² ≥ −2 Σ_axis |p − s|_axis · ulp(v_axis)/2`
+///   (against all sites when `all_sites`, else against the Delaunay neighbours of `p`, which
+///   bound its cell).
+///
+/// On [`clipped_cells`] (short edges contracted):
+/// * duplicates have no cell; every other ring has positive area, lies in the box, holds no
+///   vertex twice, contains its site if that is in the box, and each of its vertices is within 64 ulps of a vertex of the cell above;
+/// * the signed areas add up to the box's area exactly (shared vertices are identical in
+///   every cell, box sides keep their coordinate, so the areas telescope).
+///
+/// [`clipped_cell`]: wdm_crust::Voronoi::clipped_cell
+/// [`clipped_cells`]: wdm_crust::Voronoi::clipped_cells
 fn check_tiling(points: &[[f64; 2]], bbox: &BoundingBox, all_sites: bool) -> Vec<Vec<[f64; 2]>> {
     let tri = triangulate(points).expect("valid points");
     let vor = tri.voronoi();
     let cells = vor.clipped_cells(bbox);
     assert_eq!(cells.len(), points.len());
-    let mut total = Q::zero();
     let mut neighbours: Vec<Vec<usize>> = vec![Vec::new(); points.len()];
     for t in tri.triangles() {
         for k in 0..3 {
@@ -165,80 +171,132 @@ fn check_tiling(points: &[[f64; 2]], bbox: &BoundingBox, all_sites: bool) -> Vec
             neighbours[t[(k + 1) % 3] as usize].push(t[k] as usize);
         }
     }
-    let hull = tri.hull();
-    for w in hull.windows(2) {
+    for w in tri.hull().windows(2) {
         neighbours[w[0] as usize].push(w[1] as usize);
         neighbours[w[1] as usize].push(w[0] as usize);
     }
-    for (i, ring) in cells.iter().enumerate() {
+    let mut total = Q::zero();
+    for (i, merged) in cells.iter().enumerate() {
         if tri.is_duplicate(i as u32) {
-            assert!(ring.is_empty(), "duplicate {i} has a cell");
+            assert!(merged.is_empty(), "duplicate {i} has a cell");
             continue;
         }
-        let p = points[i].map(q);
+        let ring = vor.clipped_cell(i as u32, bbox);
         if bbox.contains(points[i]) {
-            assert!(ring.len() >= 3, "site {i} in the box has no cell: {ring:?}");
+            assert!(
+                merged.len() >= 3,
+                "site {i} in the box has no cell: {ring:?}"
+            );
         }
-        if ring.is_empty() {
+        if !ring.is_empty() {
+            let others: Vec<usize> = if all_sites {
+                (0..points.len()).collect()
+            } else {
+                neighbours[i].clone()
+            };
+            check_cell(points, i, &ring, bbox, &others);
+        }
+        if merged.is_empty() {
             continue;
         }
-        let v: Vec<[Q; 2]> = ring.iter().map(|c| c.map(q)).collect();
-        let n = v.len();
         assert!(
-            twice_area(ring).is_positive(),
-            "cell {i} has no area: {ring:?}"
+            twice_area(merged).is_positive(),
+            "cell {i} has no area: {merged:?}"
         );
-        for k in 0..n {
-            let (a, b, c) = (&v[k], &v[(k + 1) % n], &v[(k + 2) % n]);
-            // The exact vertices turn left; rounding each coordinate by at most h moves
-            // every difference by at most e = 2h and the cross product by the bound below.
-            let h = [k, k + 1, k + 2]
-                .iter()
-                .flat_map(|&j| ring[j % n].map(half_ulp))
-                .max()
-                .expect("six values");
-            let e = &h * Q::from_integer(BigInt::from(2));
-            let l1 = |u: &[Q; 2], w: &[Q; 2]| (&u[0] - &w[0]).abs() + (&u[1] - &w[1]).abs();
-            let bound = &e * (l1(b, a) + l1(c, a)) + &e * &e * Q::from_integer(BigInt::from(2));
-            assert!(
-                cross(a, b, c) >= -bound,
-                "cell {i} not convex at {k}: {ring:?}"
-            );
+        let mut sorted = merged.clone();
+        sorted.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+        sorted.dedup();
+        assert_eq!(
+            sorted.len(),
+            merged.len(),
+            "cell {i} touches itself: {merged:?}"
+        );
+        let corners: Vec<[Q; 2]> = merged.iter().map(|c| c.map(q)).collect();
+        for k in 0..corners.len() {
+            let (a, b) = (&corners[k], &corners[(k + 1) % corners.len()]);
+            let site = points[i].map(q);
             if bbox.contains(points[i]) {
                 assert!(
-                    !cross(&v[k], &v[(k + 1) % n], &p).is_negative(),
-                    "site {i} outside its cell {ring:?}"
-                );
-            }
-            assert!(bbox.contains(ring[k]), "cell {i} leaves the box: {ring:?}");
-        }
-        total += twice_area(ring);
-        let others: Vec<usize> = if all_sites {
-            (0..points.len()).collect()
-        } else {
-            neighbours[i].clone()
-        };
-        for (k, vertex) in v.iter().enumerate() {
-            let h = ring[k].map(half_ulp);
-            for &s in &others {
-                if points[s] == points[i] {
-                    continue;
-                }
-                let sq = points[s].map(q);
-                let slack = Q::from_integer(BigInt::from(2))
-                    * ((&p[0] - &sq[0]).abs() * &h[0] + (&p[1] - &sq[1]).abs() * &h[1]);
-                assert!(
-                    power(vertex, &sq, &p) >= -slack,
-                    "vertex {:?} of cell {i} is nearer to site {s}",
-                    ring[k]
+                    !cross(a, b, &site).is_negative(),
+                    "site {i} outside {merged:?}"
                 );
             }
         }
+        for v in merged {
+            assert!(bbox.contains(*v), "cell {i} leaves the box: {merged:?}");
+            // Contracted edges are at most 16 ulps of the larger coordinate magnitude long;
+            // these inputs chain at most four of them.
+            let near = ring.iter().any(|w| {
+                let m = v[0].abs().max(v[1].abs()).max(w[0].abs()).max(w[1].abs());
+                let ulp = f64::from_bits(m.to_bits() + 1) - m;
+                (0..2).all(|a| (v[a] - w[a]).abs() <= 64.0 * ulp)
+            });
+            assert!(near, "merged vertex {v:?} of cell {i} is far from {ring:?}");
+        }
+        total += twice_area(merged);
     }
     let (lo, hi) = (bbox.min(), bbox.max());
     let box_area = (q(hi[0]) - q(lo[0])) * (q(hi[1]) - q(lo[1])) * Q::from_integer(BigInt::from(2));
     assert_eq!(total, box_area, "areas do not add up to the box");
     cells
+}
+
+/// The per-cell checks of [`check_tiling`] on one correctly rounded cell of site `i`.
+fn check_cell(
+    points: &[[f64; 2]],
+    i: usize,
+    ring: &[[f64; 2]],
+    bbox: &BoundingBox,
+    others: &[usize],
+) {
+    let p = points[i].map(q);
+    let v: Vec<[Q; 2]> = ring.iter().map(|c| c.map(q)).collect();
+    let n = v.len();
+    assert!(
+        n >= 3 && twice_area(ring).is_positive(),
+        "cell {i} has no area: {ring:?}"
+    );
+    let two = Q::from_integer(BigInt::from(2));
+    for k in 0..n {
+        let (a, b, c) = (&v[k], &v[(k + 1) % n], &v[(k + 2) % n]);
+        // The exact vertices turn left; rounding each coordinate by at most h moves every
+        // difference by at most e = 2h and the cross product by the bound below.
+        let h = [k, k + 1, k + 2]
+            .iter()
+            .flat_map(|&j| ring[j % n].map(half_ulp))
+            .max()
+            .expect("six values");
+        let e = &h * &two;
+        let l1 = |u: &[Q; 2], w: &[Q; 2]| (&u[0] - &w[0]).abs() + (&u[1] - &w[1]).abs();
+        let bound = &e * (l1(b, a) + l1(c, a)) + &e * &e * &two;
+        assert!(
+            cross(a, b, c) >= -bound,
+            "cell {i} not convex at {k}: {ring:?}"
+        );
+        if bbox.contains(points[i]) {
+            let bound = &e * (l1(b, a) + l1(&p, a)) + &e * &e * &two;
+            assert!(
+                cross(a, b, &p) >= -bound,
+                "site {i} outside its cell {ring:?}"
+            );
+        }
+        assert!(bbox.contains(ring[k]), "cell {i} leaves the box: {ring:?}");
+    }
+    for (k, vertex) in v.iter().enumerate() {
+        let h = ring[k].map(half_ulp);
+        for &s in others {
+            if points[s] == points[i] {
+                continue;
+            }
+            let sq = points[s].map(q);
+            let slack = &two * ((&p[0] - &sq[0]).abs() * &h[0] + (&p[1] - &sq[1]).abs() * &h[1]);
+            assert!(
+                power(vertex, &sq, &p) >= -slack,
+                "vertex {:?} of cell {i} is nearer to site {s}",
+                ring[k]
+            );
+        }
+    }
 }
 
 /// The library's cells equal the brute-force reference, vertex for vertex.
@@ -472,23 +530,56 @@ fn results_do_not_depend_on_the_input_order() {
 }
 
 #[test]
+fn nearly_cocircular_decimal_grids_merge_nearly_coincident_vertices() {
+    // stretchdenoise/data/family.p2d: a grid of step 1/11 written to six decimals, so only
+    // nearly cocircular. Its Voronoi vertices come in clusters a few 1e-15 apart, which
+    // rounding alone turns into rings touching themselves (cell 519).
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/stretchdenoise/data/family.p2d"
+    );
+    let points = wdm_crust::io::read_points_from_path(std::path::Path::new(path))
+        .unwrap_or_else(|e| panic!("{path}: {e}"));
+    let bbox = BoundingBox::around(&points).unwrap();
+    let cells = check_tiling(&points, &bbox, false);
+    let tri = triangulate(&points).unwrap();
+    let vor = tri.voronoi();
+    let changed = (0..points.len())
+        .filter(|&i| vor.clipped_cell(i as u32, &bbox) != cells[i])
+        .count();
+    assert!(
+        changed > 0,
+        "no vertex was merged: the test does not exercise merging"
+    );
+}
+
+#[test]
 fn real_point_sets_tile_their_default_box() {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/hnn-crust-sgp16");
-    let mut files: Vec<_> = std::fs::read_dir(dir)
-        .unwrap_or_else(|e| panic!("{dir}: {e}"))
-        .map(|e| e.expect("entry").path())
-        .filter(|p| p.is_file())
-        .collect();
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data");
+    let mut files = Vec::new();
+    for sub in ["hnn-crust-sgp16", "fitconnect/data", "stretchdenoise/data"] {
+        let sub = format!("{dir}/{sub}");
+        for entry in std::fs::read_dir(&sub).unwrap_or_else(|e| panic!("{sub}: {e}")) {
+            files.push(entry.expect("entry").path());
+        }
+    }
     files.sort();
-    assert!(!files.is_empty(), "no point files in {dir}");
     let mut checked = 0;
     for path in files {
-        let Ok(points) = wdm_crust::io::read_points_from_path(&path) else {
+        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
+        // family.p2d has its own test above.
+        let family = path.file_name().is_some_and(|n| n == "family.p2d");
+        if family || !["txt", "xy", "xym", "p2d", "gtn"].contains(&ext) {
             continue;
-        };
+        }
+        let points = wdm_crust::io::read_points_from_path(&path)
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let bbox = BoundingBox::around(&points).expect("points");
         check_tiling(&points, &bbox, false);
         checked += 1;
     }
-    assert!(checked > 0, "no readable point file in {dir}");
+    assert!(
+        checked >= 25,
+        "only {checked} point files found under {dir}"
+    );
 }

@@ -1,8 +1,8 @@
 //! The Voronoi cells clipped to a box as GeoJSON (RFC 7946): a `FeatureCollection` with one
 //! `Feature` per distinct input point, properties `{"site": i}`, whose geometry is its cell
 //! clipped to the box as a `Polygon` (one ring, closed, counterclockwise), or `null` when the
-//! cell meets the box in no area (a site outside a box given by the caller). Duplicate
-//! points get no feature. Coordinates are the input's, printed as the shortest decimal that
+//! cell meets the box in no area (a site outside a box given by the caller, or a cell thinner
+//! than the rounding; see [`Voronoi::clipped_cells`]). Duplicate points get no feature. Coordinates are the input's, printed as the shortest decimal that
 //! reads back as the same `f64`.
 
 use std::io::{self, BufWriter, Write};
@@ -34,14 +34,17 @@ pub fn write_voronoi_geojson<W: Write>(
     let tri = vor.triangulation();
     out.write_all(b"{\"type\":\"FeatureCollection\",\"features\":[")?;
     let mut first = true;
-    for site in (0..tri.point_count() as u32).filter(|&i| !tri.is_duplicate(i)) {
+    let cells = vor.clipped_cells(bbox);
+    for (site, ring) in cells.iter().enumerate() {
+        if tri.is_duplicate(site as u32) {
+            continue;
+        }
         out.write_all(if first { b"\n" } else { b",\n" })?;
         first = false;
         write!(
             out,
             "{{\"type\":\"Feature\",\"properties\":{{\"site\":{site}}},\"geometry\":"
         )?;
-        let ring = vor.clipped_cell(site, bbox);
         if ring.is_empty() {
             out.write_all(b"null}")?;
             continue;

@@ -28,6 +28,7 @@
 //! circle of points) makes its own cell quadratic.
 
 use super::bounding_box::BoundingBox;
+use super::merge::merge_close_vertices;
 use super::Voronoi;
 use crate::delaunay::{prev_in_triangle, NO_TWIN};
 use crate::kernel::metric::{distance_order, dot_sign};
@@ -185,6 +186,16 @@ impl Clipper<'_> {
     }
 }
 
+/// Rotates `ring` to start at its lexicographically smallest vertex.
+fn start_at_smallest(ring: &mut [[f64; 2]]) {
+    if let Some(start) = (0..ring.len()).min_by(|&i, &j| {
+        let (a, b) = (ring[i], ring[j]);
+        a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1]))
+    }) {
+        ring.rotate_left(start);
+    }
+}
+
 /// The box as a counterclockwise polygon of its corners and sides.
 fn box_polygon(bbox: &BoundingBox) -> Vec<Node> {
     let corners = bbox.corners();
@@ -250,11 +261,21 @@ impl Voronoi<'_> {
         self.clipped_cell_local(self.tri.local_index(p), bbox)
     }
 
-    /// [`clipped_cell`](Self::clipped_cell) of every point, by the caller's index.
+    /// [`clipped_cell`](Self::clipped_cell) of every point, by the caller's index, with the
+    /// vertices that rounding left within 16 ulps of each other merged, consistently in all
+    /// cells (see below).
     ///
-    /// The cells of the distinct points tile the box: their areas add up to the box's area up
-    /// to the rounding of the vertices, no two overlap, and the cell of a site in the box
-    /// contains it. Duplicates get an empty cell.
+    /// The cells of the distinct points tile the box: their signed areas add up to the box's
+    /// area (exactly, when computed exactly from the returned coordinates, since every vertex
+    /// is shared by the cells around it and box sides keep their coordinates), no two
+    /// overlap, and the cell of a site in the box contains it. Duplicates get an empty cell.
+    ///
+    /// Nearly cocircular sites (decimal grids) have distinct Voronoi vertices a few `1e-15`
+    /// apart; rounded independently, they could make a ring touch itself (`A, B, A`), which
+    /// GIS tools reject. So a Voronoi edge whose rounded ends are within 16 ulps is contracted
+    /// in every cell to one of its ends (a box corner or side point if there is one), and a
+    /// cell thinner than that disappears; [`clipped_cell`](Self::clipped_cell) alone does not
+    /// do this, as it needs the neighbouring cells.
     ///
     /// ```
     /// use wdm_crust::BoundingBox;
@@ -274,9 +295,14 @@ impl Voronoi<'_> {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn clipped_cells(&self, bbox: &BoundingBox) -> Vec<Vec<[f64; 2]>> {
-        (0..self.tri.point_count() as u32)
+        let mut rings: Vec<Vec<[f64; 2]>> = (0..self.tri.point_count() as u32)
             .map(|p| self.clipped_cell(p, bbox))
-            .collect()
+            .collect();
+        merge_close_vertices(&mut rings, bbox);
+        for ring in &mut rings {
+            start_at_smallest(ring);
+        }
+        rings
     }
 
     /// [`clipped_cell`](Self::clipped_cell) of local point `p`.
@@ -300,12 +326,7 @@ impl Voronoi<'_> {
         while ring.len() > 1 && ring.first() == ring.last() {
             ring.pop();
         }
-        if let Some(start) = (0..ring.len()).min_by(|&i, &j| {
-            let (a, b) = (ring[i], ring[j]);
-            a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1]))
-        }) {
-            ring.rotate_left(start);
-        }
+        start_at_smallest(&mut ring);
         ring
     }
 

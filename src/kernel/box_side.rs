@@ -6,9 +6,11 @@
 //! * [`circumcenter_side`]: the sign of `O[axis] − value` for the circumcenter `O` of three
 //!   `f64` points (a Voronoi vertex, never representable exactly in general). With
 //!   `O = t0 + u/d` (see `circumcenter`) it is the sign of `d·(t0[axis] − value) + u[axis]`
-//!   (degree 3 in the leaves) times the sign of `d` (degree 2): evaluated by the running-error
-//!   filter (`bounded`, a proven bound, after an exact power-of-two normalization) and, when
-//!   that bound cannot decide, exactly in `BigInt` (`exact`).
+//!   (degree 3 in the leaves) times the sign of `d` (degree 2). Stages: the filtered `f64`
+//!   circumcenter, whose error is proven below 256 ulps of its larger coordinate
+//!   ([`circumcenter`]), decides when `value` is farther than that; then the running-error
+//!   filter (`bounded`, a proven bound, after an exact power-of-two normalization) on the
+//!   polynomial; then the polynomial exactly in `BigInt` (`exact`).
 //!
 //! The constructions, each correctly rounded to the nearest `f64` so that one exact point
 //! gets the same coordinates whichever cell or triangle computes it:
@@ -23,8 +25,8 @@
 use num_bigint::{BigInt, Sign as BigSign};
 
 use super::arith::Arith;
-use super::bounded::lift_filter;
-use super::circumcenter::circumcenter_rounded;
+use super::bounded::{lift_filter, Bounded};
+use super::circumcenter::{circumcenter, circumcenter_rounded};
 use super::exact::{lift_exact, ratio_to_f64, signs};
 use super::poly::{circ, diff, Pt};
 use super::scale::normalize;
@@ -54,6 +56,9 @@ pub(crate) fn circumcenter_side(tri: [[f64; 2]; 3], axis: usize, value: f64) -> 
     if tri.iter().flatten().chain([&value]).any(|c| !c.is_finite()) {
         return Sign::Zero;
     }
+    if let Some(sign) = side_from_circumcenter(tri, axis, value) {
+        return sign;
+    }
     let points = [tri[0], tri[1], tri[2], [value, value]];
     let [f0, f1, f2, fv] = lift_filter(normalize(points).0);
     let ([d, n], _) = signs(side_terms(&[f0, f1, f2], &fv, axis), || {
@@ -61,6 +66,46 @@ pub(crate) fn circumcenter_side(tri: [[f64; 2]; 3], axis: usize, value: f64) -> 
         side_terms(&[e0, e1, e2], &ev, axis)
     });
     n.times(d)
+}
+
+/// The sign of `O[axis] − value` from the `f64` circumcenter `ô`, if certain: `ô` is within
+/// `E = 256·ulp(N)` of `O` in each coordinate (`N` the larger of `|ô|`'s coordinates, see
+/// [`circumcenter`]), so `|ô[axis] − value| > E` decides; the computed difference `d̂` has the
+/// exact difference's sign and `|d̂| ≤ (1 + u)·|ô[axis] − value|`, hence the test
+/// `|d̂| > E·(1 + 4ε)`. `E` is a power of two times 256: exact.
+#[inline]
+fn side_from_circumcenter(tri: [[f64; 2]; 3], axis: usize, value: f64) -> Option<Sign> {
+    certified_side(circumcenter(tri[0], tri[1], tri[2])?, axis, value)
+}
+
+/// [`side_from_circumcenter`] on the computed circumcenter `o`.
+#[inline]
+fn certified_side(o: [f64; 2], axis: usize, value: f64) -> Option<Sign> {
+    let n = o[0].abs().max(o[1].abs());
+    if !n.is_normal() {
+        return None;
+    }
+    let ulp = f64::from_bits(n.to_bits() & 0x7ff0_0000_0000_0000) * f64::EPSILON;
+    let d = o[axis] - value;
+    (d.abs() > 256.0 * ulp * (1.0 + 4.0 * f64::EPSILON)).then(|| Sign::of_f64(d))
+}
+
+/// Whether the circumcenter of `tri` lies strictly inside the box `(min, max)`, exactly:
+/// [`circumcenter_side`] against the four sides, with the filtered circumcenter computed once
+/// for all of them. False for a collinear `tri`.
+pub(crate) fn circumcenter_strictly_inside(
+    tri: [[f64; 2]; 3],
+    min: [f64; 2],
+    max: [f64; 2],
+) -> bool {
+    let fast = circumcenter(tri[0], tri[1], tri[2]);
+    let side = |axis: usize, value: f64| {
+        fast.and_then(|o| certified_side(o, axis, value))
+            .unwrap_or_else(|| circumcenter_side(tri, axis, value))
+    };
+    (0..2).all(|axis| {
+        side(axis, min[axis]) == Sign::Positive && side(axis, max[axis]) == Sign::Negative
+    })
 }
 
 /// The other coordinate (`y` for `axis == 0`, else `x`) of the point of the perpendicular
@@ -93,8 +138,39 @@ pub(crate) fn bisector_crossing(p: [f64; 2], q: [f64; 2], axis: usize, value: f6
 
 /// The circumcenter of `a, b, c`, each coordinate the nearest `f64` to the exact one (ties to
 /// even), or `None` iff they are collinear (or a coordinate is not finite).
+///
+/// Most calls are certified without exact arithmetic: with `q = u/d` from the running-error
+/// filter (`q̂` within `e` of `q`) and `t0 + q̂ = s + r` exactly (Knuth's TwoSum), the exact
+/// coordinate is `s + r + δ` with `|δ| ≤ e`; when `|r| + e` is below half the smaller gap
+/// from `s` to its neighbouring `f64`s, `s` is the unique nearest `f64`. Otherwise (and for
+/// a zero coordinate) the exact circumcenter is rounded.
 pub(crate) fn circumcenter_nearest(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<[f64; 2]> {
-    circumcenter_rounded(a, b, c)
+    nearest_from_bounded([a, b, c]).or_else(|| circumcenter_rounded(a, b, c))
+}
+
+/// [`circumcenter_nearest`] when the running-error filter certifies it.
+fn nearest_from_bounded(t: [[f64; 2]; 3]) -> Option<[f64; 2]> {
+    let c = circ(&lift_filter(t));
+    let x = nearest_sum(t[0][0], c.ux.div(&c.d)?)?;
+    let y = nearest_sum(t[0][1], c.uy.div(&c.d)?)?;
+    Some([x, y])
+}
+
+/// The `f64` nearest to `t0 + q` for `q` known within `q.e` of `q.v`, if certain.
+fn nearest_sum(t0: f64, q: Bounded) -> Option<f64> {
+    let s = t0 + q.v;
+    let a = s.abs();
+    if !(a.is_normal() && q.e.is_finite()) {
+        return None;
+    }
+    // TwoSum: t0 + q.v = s + r exactly (no overflow: s is finite and normal).
+    let bv = s - t0;
+    let r = (t0 - (s - bv)) + (q.v - bv);
+    let below = a - f64::from_bits(a.to_bits() - 1);
+    let above = f64::from_bits(a.to_bits() + 1) - a;
+    // Half the smaller gap: exact (a power of two). The sum is rounded, hence the margin.
+    let half_gap = 0.5 * below.min(above);
+    ((r.abs() + q.e) * (1.0 + 4.0 * f64::EPSILON) < half_gap).then_some(s)
 }
 
 #[cfg(test)]
@@ -180,6 +256,21 @@ mod tests {
     }
 
     #[test]
+    fn strictly_inside_agrees_with_the_four_sides() {
+        let mut rng = Xs(0x0bad_cafe_f00d_d00d);
+        for _ in 0..3000 {
+            let mut c = || (rng.next() * 8.0).floor() / 2.0;
+            let t = [[c(), c()], [c(), c()], [c(), c()]];
+            let (min, max) = ([c() - 1.0, c() - 1.0], [c() + 1.0, c() + 1.0]);
+            let expected = (0..2).all(|a| {
+                circumcenter_side(t, a, min[a]) == Sign::Positive
+                    && circumcenter_side(t, a, max[a]) == Sign::Negative
+            });
+            assert_eq!(circumcenter_strictly_inside(t, min, max), expected, "{t:?}");
+        }
+    }
+
+    #[test]
     fn bisector_crossing_is_the_nearest_f64_and_symmetric() {
         let mut rng = Xs(0x2545_f491_4f6c_dd1d);
         for round in 0..4000 {
@@ -208,6 +299,33 @@ mod tests {
 
     #[test]
     fn circumcenter_nearest_is_correctly_rounded() {
+        let mut rng = Xs(0x1234_5678_9abc_def1);
+        let mut certified = 0;
+        for round in 0..6000 {
+            let scale = [1.0, 1e-100, 1e120, 0.1][round % 4];
+            // Small triangles far from the origin (the common case), and large ones.
+            let spread = [1e-3, 1.0, 1e-9][round % 3];
+            let base = [rng.next() * scale, rng.next() * scale];
+            let mut corner = || {
+                [
+                    base[0] + rng.next() * spread * scale,
+                    base[1] + rng.next() * spread * scale,
+                ]
+            };
+            let t = [corner(), corner(), corner()];
+            let Some(o) = exact_circumcenter(t) else {
+                continue;
+            };
+            let expected = [0, 1].map(|i| super::super::exact::rational_to_f64(&o[i]));
+            assert_eq!(
+                circumcenter_nearest(t[0], t[1], t[2]),
+                Some(expected),
+                "{t:?}"
+            );
+            certified += usize::from(nearest_from_bounded(t).is_some());
+        }
+        // About a third pass the filter here (mostly the small triangles); the rest is exact.
+        assert!(certified > 1000, "the filter certified only {certified}");
         let t = [[0.0, 0.0], [1.0, 0.0], [0.1, 0.3]];
         let o = exact_circumcenter(t).unwrap();
         let expected = [0, 1].map(|i| super::super::exact::rational_to_f64(&o[i]));

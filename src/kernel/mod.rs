@@ -68,7 +68,9 @@ pub(crate) mod static_filter;
 pub(crate) mod stats;
 
 pub(crate) use basic::{incircle, orient};
-pub(crate) use box_side::{bisector_crossing, circumcenter_nearest, circumcenter_side};
+pub(crate) use box_side::{
+    bisector_crossing, circumcenter_nearest, circumcenter_side, circumcenter_strictly_inside,
+};
 pub use circumcenter::{circumcenter, circumcenter_exact, ExactPoint};
 pub use derived::{circumcenter_in_convex_hull, dot_sign_circumcenters, HullPosition};
 pub(crate) use derived::{compare_circumradius, orient_circumcenter};

@@ -33,8 +33,49 @@ use super::Voronoi;
 use crate::delaunay::{prev_in_triangle, NO_TWIN};
 use crate::kernel::metric::{distance_order, dot_sign};
 use crate::kernel::{
-    bisector_crossing, circumcenter_nearest, circumcenter_side, incircle, orient, Sign,
+    bisector_crossing, circumcenter_nearest, circumcenter_side, circumcenter_strictly_inside,
+    incircle, orient, Sign,
 };
+
+/// What is known of the Voronoi vertices, by vertex id (empty vectors: nothing is kept, for
+/// a single cell). Each vertex is a corner of three or more cells.
+#[derive(Default)]
+struct KnownVertices {
+    /// The rounded position (NaN until computed): a certified or exact rounding.
+    position: Vec<[f64; 2]>,
+    /// Whether it lies strictly inside the box, once decided.
+    inside: Vec<Option<bool>>,
+}
+
+impl KnownVertices {
+    fn for_all(count: usize) -> KnownVertices {
+        KnownVertices {
+            position: vec![[f64::NAN; 2]; count],
+            inside: vec![None; count],
+        }
+    }
+
+    /// The rounded position of `v`, from `compute` on first use.
+    fn position(&mut self, v: u32, compute: impl FnOnce() -> [f64; 2]) -> [f64; 2] {
+        match self.position.get_mut(v as usize) {
+            Some(slot) if !slot[0].is_nan() => *slot,
+            Some(slot) => {
+                *slot = compute();
+                *slot
+            }
+            None => compute(),
+        }
+    }
+
+    /// Whether `v` lies strictly inside the box, from `decide` on first use.
+    fn inside(&mut self, v: u32, decide: impl FnOnce() -> bool) -> bool {
+        match self.inside.get_mut(v as usize) {
+            Some(Some(known)) => *known,
+            Some(slot) => *slot.insert(decide()),
+            None => decide(),
+        }
+    }
+}
 
 /// A line carrying an edge of the polygon being clipped.
 #[derive(Debug, Clone, Copy)]
@@ -61,6 +102,14 @@ enum Vertex {
 struct Node {
     vertex: Vertex,
     next: Line,
+}
+
+/// Buffers of [`Clipper::cut`]: the sides of the polygon's vertices, and the cut polygon with
+/// a flag per vertex telling whether it lies on the cut line.
+#[derive(Default)]
+struct Scratch {
+    signs: Vec<Sign>,
+    nodes: Vec<(Node, bool)>,
 }
 
 /// One site's clipping: its coordinates and the coordinates of all distinct points.
@@ -122,8 +171,10 @@ impl Clipper<'_> {
 
     /// Cuts `polygon` (convex, counterclockwise, positive area) by the half-plane of `q`.
     /// Returns false when nothing of positive area is left.
-    fn cut(&self, polygon: &mut Vec<Node>, q: u32, scratch: &mut Vec<(Node, bool)>) -> bool {
-        let signs: Vec<Sign> = polygon.iter().map(|n| self.side(&n.vertex, q)).collect();
+    fn cut(&self, polygon: &mut Vec<Node>, q: u32, scratch: &mut Scratch) -> bool {
+        let Scratch { signs, nodes } = scratch;
+        signs.clear();
+        signs.extend(polygon.iter().map(|n| self.side(&n.vertex, q)));
         if !signs.contains(&Sign::Negative) {
             return true;
         }
@@ -132,7 +183,7 @@ impl Clipper<'_> {
             return false;
         }
         let clip = Line::Bisector(q);
-        scratch.clear();
+        nodes.clear();
         let n = polygon.len();
         for i in 0..n {
             let (a, sa, sb) = (polygon[i], signs[i], signs[(i + 1) % n]);
@@ -143,29 +194,51 @@ impl Clipper<'_> {
                 } else {
                     a.next
                 };
-                scratch.push((Node { next, ..a }, sa == Sign::Zero));
+                nodes.push((Node { next, ..a }, sa == Sign::Zero));
             }
             let crosses = (sa == Sign::Positive && sb == Sign::Negative)
                 || (sa == Sign::Negative && sb == Sign::Positive);
             if crosses {
                 let vertex = Clipper::crossing(a.next, q);
                 let next = if sa == Sign::Positive { clip } else { a.next };
-                scratch.push((Node { vertex, next }, true));
+                nodes.push((Node { vertex, next }, true));
             }
         }
         // The vertices on the cut line form one run; only its ends are corners.
-        let m = scratch.len();
+        let m = nodes.len();
         polygon.clear();
         polygon.extend((0..m).filter_map(|i| {
-            let (node, on) = scratch[i];
-            let redundant = on && scratch[(i + m - 1) % m].1 && scratch[(i + 1) % m].1;
+            let (node, on) = nodes[i];
+            let redundant = on && nodes[(i + m - 1) % m].1 && nodes[(i + 1) % m].1;
             (!redundant).then_some(node)
         }));
         true
     }
 
-    /// The coordinates of `v`, correctly rounded from the exact point.
-    fn coordinates(&self, v: &Vertex) -> [f64; 2] {
+    /// The coordinates of `v`, correctly rounded from the exact point. A circumcenter of the
+    /// site and two consecutive neighbours is the Voronoi vertex between their edges
+    /// (`neighbours` pairs each neighbour with the vertex after it): it is kept in `known`.
+    fn coordinates(
+        &self,
+        v: &Vertex,
+        neighbours: &[(u32, u32)],
+        known: &mut KnownVertices,
+    ) -> [f64; 2] {
+        if let Vertex::Circumcenter { q1, q2 } = *v {
+            let k = neighbours.len();
+            let id = (0..k).find_map(|i| {
+                let (a, face) = neighbours[i];
+                let b = neighbours[(i + 1) % k].0;
+                ((a, b) == (q1, q2) || (a, b) == (q2, q1)).then_some(face)
+            });
+            if let Some(id) = id {
+                return known.position(id, || self.coordinates_of(v));
+            }
+        }
+        self.coordinates_of(v)
+    }
+
+    fn coordinates_of(&self, v: &Vertex) -> [f64; 2] {
         match *v {
             Vertex::Corner(c) => c,
             Vertex::Crossing { axis, value, q } => {
@@ -255,10 +328,20 @@ impl Voronoi<'_> {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn clipped_cell(&self, p: u32, bbox: &BoundingBox) -> Vec<[f64; 2]> {
+        self.clipped_cell_with(p, bbox, &mut KnownVertices::default())
+    }
+
+    /// [`clipped_cell`](Self::clipped_cell), reusing the Voronoi vertices in `known`.
+    fn clipped_cell_with(
+        &self,
+        p: u32,
+        bbox: &BoundingBox,
+        known: &mut KnownVertices,
+    ) -> Vec<[f64; 2]> {
         if p as usize >= self.tri.point_count() || self.tri.is_duplicate(p) {
             return Vec::new();
         }
-        self.clipped_cell_local(self.tri.local_index(p), bbox)
+        self.clipped_cell_local(self.tri.local_index(p), bbox, known)
     }
 
     /// [`clipped_cell`](Self::clipped_cell) of every point, by the caller's index, with the
@@ -295,9 +378,13 @@ impl Voronoi<'_> {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn clipped_cells(&self, bbox: &BoundingBox) -> Vec<Vec<[f64; 2]>> {
-        let mut rings: Vec<Vec<[f64; 2]>> = (0..self.tri.point_count() as u32)
-            .map(|p| self.clipped_cell(p, bbox))
-            .collect();
+        let mut known = KnownVertices::for_all(self.vertex_count);
+        let mut rings: Vec<Vec<[f64; 2]>> = vec![Vec::new(); self.tri.point_count()];
+        // In local (Z) order: neighbouring cells are near each other in memory.
+        for p in 0..self.tri.points.len() as u32 {
+            let ring = self.clipped_cell_local(p, bbox, &mut known);
+            rings[self.tri.input_index(p) as usize] = ring;
+        }
         merge_close_vertices(&mut rings, bbox);
         for ring in &mut rings {
             start_at_smallest(ring);
@@ -306,21 +393,30 @@ impl Voronoi<'_> {
     }
 
     /// [`clipped_cell`](Self::clipped_cell) of local point `p`.
-    pub(crate) fn clipped_cell_local(&self, p: u32, bbox: &BoundingBox) -> Vec<[f64; 2]> {
+    fn clipped_cell_local(
+        &self,
+        p: u32,
+        bbox: &BoundingBox,
+        known: &mut KnownVertices,
+    ) -> Vec<[f64; 2]> {
+        if let Some(ring) = self.cell_inside_box(p, bbox, known) {
+            return ring;
+        }
         let clipper = Clipper {
             points: &self.tri.points,
             p: self.tri.points[p as usize],
         };
         let mut polygon = box_polygon(bbox);
-        let mut scratch = Vec::new();
-        for q in self.neighbours_local(p) {
+        let mut scratch = Scratch::default();
+        let neighbours = self.neighbours_local(p);
+        for &(q, _) in &neighbours {
             if !clipper.cut(&mut polygon, q, &mut scratch) {
                 return Vec::new();
             }
         }
         let mut ring: Vec<[f64; 2]> = polygon
             .iter()
-            .map(|n| clipper.coordinates(&n.vertex))
+            .map(|n| clipper.coordinates(&n.vertex, &neighbours, known))
             .collect();
         ring.dedup();
         while ring.len() > 1 && ring.first() == ring.last() {
@@ -330,9 +426,42 @@ impl Voronoi<'_> {
         ring
     }
 
-    /// The sites across the edges of the cell of local point `p`, counterclockwise around it;
-    /// for collinear input its neighbours on the line.
-    pub(crate) fn neighbours_local(&self, p: u32) -> Vec<u32> {
+    /// The fast path of most cells: a bounded cell whose Voronoi vertices all lie strictly
+    /// inside the box (decided exactly) is its own clipped cell; its vertices are distinct and
+    /// in strictly convex position. `None` otherwise.
+    fn cell_inside_box(
+        &self,
+        p: u32,
+        bbox: &BoundingBox,
+        known: &mut KnownVertices,
+    ) -> Option<Vec<[f64; 2]>> {
+        if !self.is_cell_bounded_local(p) {
+            return None;
+        }
+        let mut ring = Vec::new();
+        for v in self.cell_local(p) {
+            let t = self.vertex_triangle(v);
+            if !known.inside(v, || {
+                circumcenter_strictly_inside(t, bbox.min(), bbox.max())
+            }) {
+                return None;
+            }
+            // Collinear Delaunay triangles do not exist: the fallback is unreachable.
+            ring.push(known.position(v, || circumcenter_nearest(t[0], t[1], t[2]).unwrap_or(t[0])));
+        }
+        ring.dedup();
+        while ring.len() > 1 && ring.first() == ring.last() {
+            ring.pop();
+        }
+        start_at_smallest(&mut ring);
+        Some(ring)
+    }
+
+    /// The sites across the edges of the cell of local point `p`, counterclockwise around it,
+    /// each with the Voronoi vertex between its edge and the next one (`NO_TWIN` after the
+    /// last neighbour of a hull point, and for collinear input, where the neighbours are the
+    /// previous and next point on the line).
+    pub(crate) fn neighbours_local(&self, p: u32) -> Vec<(u32, u32)> {
         if self.tri.is_degenerate() {
             let line: Vec<u32> = self
                 .tri
@@ -347,6 +476,7 @@ impl Voronoi<'_> {
             return before
                 .into_iter()
                 .chain(line.get(at + 1).copied())
+                .map(|q| (q, NO_TWIN))
                 .collect();
         }
         let start = self.out_halfedge[p as usize];
@@ -357,7 +487,8 @@ impl Voronoi<'_> {
         let mut e = start;
         loop {
             if self.has_dual(e) {
-                neighbours.push(self.tri.dest(e as usize));
+                // The face left of p → q lies between q's edge and the next one.
+                neighbours.push((self.tri.dest(e as usize), self.vertex_of_halfedge(e)));
             }
             match self.rotate_counterclockwise(e) {
                 Some(next) if next != start => e = next,
@@ -365,7 +496,7 @@ impl Voronoi<'_> {
                 None => {
                     // A hull point: the incoming hull edge comes from the last neighbour.
                     let incoming = prev_in_triangle(e as usize);
-                    neighbours.push(self.tri.org(incoming));
+                    neighbours.push((self.tri.org(incoming), NO_TWIN));
                     break;
                 }
             }

@@ -46,7 +46,8 @@ counterclockwise ring), or null if the cell meets the box in no area (a site out
 given with --clip). Hull cells are clipped too, so the cells tile the box. The box is --clip
 XMIN,YMIN,XMAX,YMAX or, by default, the points' bounding box enlarged by 10 % of its larger
 side on every side. Which side of the box and of each bisector a vertex lies on is decided
-exactly; coordinates are the exact ones correctly rounded.";
+exactly; coordinates are the exact ones correctly rounded (vertices that rounding
+leaves within 16 ulps of each other are merged, in every cell alike).";
 
 /// Output formats of `voronoi`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

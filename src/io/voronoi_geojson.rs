@@ -30,7 +30,7 @@ pub fn write_voronoi_geojson<W: Write>(
     bbox: &BoundingBox,
     out: W,
 ) -> io::Result<()> {
-    let mut out = BufWriter::new(out);
+    let mut out = BufWriter::with_capacity(1 << 16, out);
     let tri = vor.triangulation();
     out.write_all(b"{\"type\":\"FeatureCollection\",\"features\":[")?;
     let mut first = true;
@@ -54,9 +54,9 @@ pub fn write_voronoi_geojson<W: Write>(
             if k > 0 {
                 out.write_all(b",")?;
             }
-            // `{:?}` prints the shortest string that reads back as the same f64, and never
-            // NaN or infinity here (the box and the rounded vertices are finite).
-            write!(out, "[{:?},{:?}]", p[0], p[1])?;
+            // The shortest decimal that reads back as the same f64 (serde_json's `ryu`),
+            // never NaN or infinity here: the box and the rounded vertices are finite.
+            serde_json::to_writer(&mut out, p)?;
         }
         out.write_all(b"]]}}")?;
     }

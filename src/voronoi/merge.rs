@@ -78,9 +78,8 @@ pub(crate) fn merge_close_vertices(rings: &mut [Vec<[f64; 2]>], bbox: &BoundingB
     // The representative of every group: most box sides, then lexicographically smallest.
     let rank = |p: [f64; 2]| (std::cmp::Reverse(box_sides(p, bbox)), p[0], p[1]);
     let mut best: HashMap<usize, [f64; 2]> = HashMap::new();
-    for i in 0..coords.len() {
+    for (i, &p) in coords.iter().enumerate() {
         let root = find(&mut parent, i);
-        let p = coords[i];
         best.entry(root)
             .and_modify(|q| {
                 if rank(p).partial_cmp(&rank(*q)) == Some(std::cmp::Ordering::Less) {

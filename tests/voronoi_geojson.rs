@@ -3,27 +3,14 @@
 //! and a bad `--clip` is a one-line usage error. (Shapely's checks of the same output are in
 //! tests/python/test_geojson_voronoi.py.)
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
-
 use serde_json::Value;
 use wdm_crust::{triangulate, BoundingBox};
 
-fn run(args: &[&str], input: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_wdm-crust"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("run wdm-crust");
-    // A usage error may end the process before it reads anything.
-    let _ = child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(input.as_bytes());
-    child.wait_with_output().expect("wait")
+mod common;
+use common::Run;
+
+fn run(args: &[&str], input: &str) -> Run {
+    common::run_in(std::path::Path::new("."), args, input.as_bytes())
 }
 
 const POINTS: &str = "0 0\n3 0.5\n1 2\n0 0\n2.5 2.5\n-1 1.25\n";
@@ -41,8 +28,7 @@ fn points() -> Vec<[f64; 2]> {
 /// The features as (site, closed ring) pairs, checking the GeoJSON structure on the way.
 /// The coordinates are read from the text with Rust's correctly rounded `f64` parser
 /// (serde_json's default one may be an ulp off), one feature per line.
-fn features(stdout: &[u8]) -> Vec<(u64, Option<Vec<[f64; 2]>>)> {
-    let text = std::str::from_utf8(stdout).expect("UTF-8");
+fn features(text: &str) -> Vec<(u64, Option<Vec<[f64; 2]>>)> {
     let mut rings = text
         .lines()
         .filter(|l| l.contains("\"Feature\""))
@@ -59,7 +45,7 @@ fn features(stdout: &[u8]) -> Vec<(u64, Option<Vec<[f64; 2]>>)> {
                     .collect::<Vec<[f64; 2]>>(),
             )
         });
-    let json: Value = serde_json::from_slice(stdout).expect("valid JSON");
+    let json: Value = serde_json::from_str(text).expect("valid JSON");
     assert_eq!(json["type"], "FeatureCollection");
     json["features"]
         .as_array()
@@ -106,11 +92,7 @@ fn expected(bbox: &BoundingBox) -> Vec<(u64, Option<Vec<[f64; 2]>>)> {
 #[test]
 fn geojson_holds_the_library_cells_bit_for_bit() {
     let out = run(&["voronoi", "--format", "geojson"], POINTS);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
     let bbox = BoundingBox::around(&points()).unwrap();
     let got = features(&out.stdout);
     assert_eq!(got, expected(&bbox));
@@ -121,11 +103,7 @@ fn geojson_holds_the_library_cells_bit_for_bit() {
 #[test]
 fn clip_implies_geojson_and_sites_outside_get_null() {
     let out = run(&["voronoi", "--clip", "-0.5,-0.5,1.5,1"], POINTS);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
     let bbox = BoundingBox::new([-0.5, -0.5], [1.5, 1.0]).unwrap();
     let got = features(&out.stdout);
     assert_eq!(got, expected(&bbox));
@@ -140,16 +118,15 @@ fn an_output_ending_in_geojson_implies_the_format() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("cells.GeoJSON");
     let out = run(&["voronoi", "-o", path.to_str().unwrap()], POINTS);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
     let bbox = BoundingBox::around(&points()).unwrap();
-    assert_eq!(features(&std::fs::read(&path).unwrap()), expected(&bbox));
+    assert_eq!(
+        features(&std::fs::read_to_string(&path).unwrap()),
+        expected(&bbox)
+    );
     // The other formats are unchanged by the new flag's absence.
     let json = run(&["voronoi"], POINTS);
-    let value: Value = serde_json::from_slice(&json.stdout).unwrap();
+    let value: Value = serde_json::from_str(&json.stdout).unwrap();
     assert!(value.get("vertices").is_some() && value.get("type").is_none());
 }
 
@@ -170,9 +147,9 @@ fn a_bad_clip_is_a_one_line_usage_error() {
         ("0,0,1,x", "'x' is not a number"),
     ] {
         let out = run(&["voronoi", "--clip", clip], POINTS);
-        assert_eq!(out.status.code(), Some(2), "{clip}");
+        assert_eq!(out.code, 2, "{clip}");
         assert!(out.stdout.is_empty());
-        let stderr = String::from_utf8(out.stderr).unwrap();
+        let stderr = out.stderr;
         assert_eq!(stderr.lines().count(), 1, "{stderr}");
         assert!(stderr.contains(message), "{clip}: {stderr}");
     }
@@ -180,8 +157,8 @@ fn a_bad_clip_is_a_one_line_usage_error() {
         &["voronoi", "--clip", "0,0,1,1", "--format", "text"],
         POINTS,
     );
-    assert_eq!(out.status.code(), Some(2));
-    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(out.code, 2);
+    let stderr = out.stderr;
     assert_eq!(stderr.lines().count(), 1);
     assert!(stderr.contains("--clip"), "{stderr}");
 }
@@ -189,10 +166,6 @@ fn a_bad_clip_is_a_one_line_usage_error() {
 #[test]
 fn no_points_give_an_empty_collection() {
     let out = run(&["voronoi", "--format", "geojson"], "");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
     assert!(features(&out.stdout).is_empty());
 }

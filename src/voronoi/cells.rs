@@ -272,23 +272,13 @@ fn start_at_smallest(ring: &mut [[f64; 2]]) {
 /// The box as a counterclockwise polygon of its corners and sides.
 fn box_polygon(bbox: &BoundingBox) -> Vec<Node> {
     let corners = bbox.corners();
+    let side = |axis: usize, value: f64| Line::Side { axis, value };
+    let (lo, hi) = (bbox.min(), bbox.max());
     let sides = [
-        Line::Side {
-            axis: 1,
-            value: bbox.min()[1],
-        },
-        Line::Side {
-            axis: 0,
-            value: bbox.max()[0],
-        },
-        Line::Side {
-            axis: 1,
-            value: bbox.max()[1],
-        },
-        Line::Side {
-            axis: 0,
-            value: bbox.min()[0],
-        },
+        side(1, lo[1]),
+        side(0, hi[0]),
+        side(1, hi[1]),
+        side(0, lo[0]),
     ];
     corners
         .iter()

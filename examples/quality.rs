@@ -595,6 +595,8 @@ fn main() {
     let methods = algorithms();
     // Inputs rerun with the WDM variants at the end.
     let mut variant_inputs: Vec<(String, Vec<Case>)> = Vec::new();
+    // Inputs judged by the survey's measures at the end.
+    let mut survey_inputs: Vec<(String, Vec<Case>)> = Vec::new();
 
     // Smooth curves at several ε.
     let shapes = smooth_shapes();
@@ -611,6 +613,9 @@ fn main() {
             &methods,
             false,
         ));
+        if eps > 0.5 {
+            survey_inputs.push((format!("sparse: smooth, ε = {eps}"), cases.clone()));
+        }
         if eps > 1.0 {
             variant_inputs.push((format!("smooth, ε = {eps}"), cases));
         }
@@ -653,6 +658,7 @@ fn main() {
         &methods,
         false,
     );
+    survey_inputs.push(("sharp: polygons, ε = 0.6".to_string(), corner_cases.clone()));
     variant_inputs.push(("polygons, ε = 0.6".to_string(), corner_cases));
 
     // Several disjoint curves, and nested curves.
@@ -731,9 +737,10 @@ fn main() {
 
     // Outliers.
     let mut rows = Vec::new();
-    for (i, &pct) in [10.0, 20.0, 40.0].iter().enumerate() {
+    for (i, &pct) in [10.0, 20.0, 40.0, 70.0].iter().enumerate() {
         let spoil = move |s: Sample, rng: &mut Rng| s.with_outliers(pct, rng);
         let cases = sampled_cases(&sets, 0.3, 0.0, 6, 400 + i as u64, &spoil);
+        survey_inputs.push((format!("{pct} % outliers"), cases.clone()));
         rows.push(run_row(
             &format!("{pct} % outliers"),
             &cases,
@@ -859,6 +866,36 @@ fn main() {
     variant_inputs.push(("real, one closed curve (8 files)".to_string(), real_closed));
     variant_inputs.push(("real, components (5 files)".to_string(), real_components));
 
+    // The survey's measures (Ohrhallinger et al., CGF 2021): noise in sample spacings on
+    // evenly spaced closed curves, single and with a hole, then the sets collected above.
+    let mut rows = Vec::new();
+    let single = [
+        Peanut { a: 0.3, b: 0.15 }.dense(150),
+        Star { a: 0.25, k: 5 }.dense(200),
+    ];
+    let annulus = vec![
+        Ellipse { a: 1.5, b: 1.0 }.dense(200),
+        Ellipse::circle(0.4)
+            .dense(64)
+            .transformed(&Similarity::translation([0.3, 0.0])),
+    ];
+    for (i, &noise) in [0.1, 0.3, 0.5, 1.0].iter().enumerate() {
+        let mut rng = Rng::new(900 + i as u64);
+        let cases: Vec<Case> = (0..10)
+            .flat_map(|_| single.iter().map(|c| vec![c.clone()]).collect::<Vec<_>>())
+            .map(|curves| spaced_case(curves, noise, &mut rng))
+            .collect();
+        rows.push(survey_row(&format!("noise {noise} × spacing, one curve"), &cases, &methods));
+        let cases: Vec<Case> = (0..10)
+            .map(|_| spaced_case(annulus.clone(), noise, &mut rng))
+            .collect();
+        rows.push(survey_row(&format!("noise {noise} × spacing, with a hole"), &cases, &methods));
+    }
+    for (label, cases) in &survey_inputs {
+        rows.push(survey_row(label, cases, &methods));
+    }
+    print_survey_table(&rows, &methods);
+
     // WDM variants.
     let variants = wdm_variants();
     let rows: Vec<Row> = variant_inputs
@@ -926,4 +963,123 @@ fn main() {
         println!("{line}");
     }
     println!("\nTotal time: {:.1} s", started.elapsed().as_secs_f64());
+}
+
+// ---------------------------------------------------------------------------------------
+// The survey's measures: is the output a valid set of curves, and how close to the truth.
+
+/// Sums of the survey's measures over the trials of one row, for one method.
+#[derive(Default, Clone)]
+struct SurveyTally {
+    trials: usize,
+    /// Trials whose output is one closed curve per true closed curve and nothing else.
+    right: usize,
+    closed: usize,
+    true_closed: usize,
+    /// Open chains plus closed curves beyond the true count.
+    junk: usize,
+    /// Curve samples (not outliers) on an output curve, and all curve samples.
+    on_curves: usize,
+    samples: usize,
+    hausdorff: f64,
+}
+
+struct SurveyRow {
+    label: String,
+    points: usize,
+    tallies: Vec<SurveyTally>,
+}
+
+/// Evenly spaced samples of `curves` (in curve order, for the truth) with Gaussian noise of
+/// `noise` × the mean sample spacing on each coordinate.
+fn spaced_case(curves: Vec<DenseCurve>, noise: f64, rng: &mut Rng) -> Case {
+    let n: usize = curves.iter().map(|c| c.points.len()).sum();
+    let spacing = curves.iter().map(|c| c.length()).sum::<f64>() / n as f64;
+    let mut points = Vec::with_capacity(n);
+    let mut truth = HashSet::new();
+    for c in &curves {
+        let first = points.len() as u32;
+        let k = c.points.len() as u32;
+        for (i, p) in c.points.iter().enumerate() {
+            points.push([
+                p[0] + noise * spacing * rng.normal(),
+                p[1] + noise * spacing * rng.normal(),
+            ]);
+            let (a, b) = (first + i as u32, first + (i as u32 + 1) % k);
+            truth.insert((a.min(b), a.max(b)));
+        }
+    }
+    Case {
+        points,
+        truth,
+        curves,
+    }
+}
+
+fn survey_row(label: &str, cases: &[Case], methods: &[Method]) -> SurveyRow {
+    let mut tallies = vec![SurveyTally::default(); methods.len()];
+    for case in cases {
+        let true_closed = case.curves.iter().filter(|c| c.closed).count();
+        let samples: HashSet<u32> = case.truth.iter().flat_map(|&(a, b)| [a, b]).collect();
+        for (tally, method) in tallies.iter_mut().zip(methods) {
+            let Ok(rec) = reconstruct_with(&case.points, &method.options) else {
+                continue;
+            };
+            let closed = rec.curves().iter().filter(|c| c.closed).count();
+            let open = rec.curves().len() - closed;
+            tally.trials += 1;
+            tally.closed += closed;
+            tally.true_closed += true_closed;
+            tally.junk += open + closed.saturating_sub(true_closed);
+            tally.right += usize::from(open == 0 && closed == true_closed);
+            let touched: HashSet<u32> = rec.edges().iter().flatten().copied().collect();
+            tally.on_curves += samples.intersection(&touched).count();
+            tally.samples += samples.len();
+            tally.hausdorff += curve_distances(&case.points, rec.edges(), &case.curves).0;
+        }
+    }
+    let points = cases.iter().map(|c| c.points.len()).sum::<usize>() / cases.len().max(1);
+    SurveyRow {
+        label: label.to_string(),
+        points,
+        tallies,
+    }
+}
+
+fn print_survey_table(rows: &[SurveyRow], methods: &[Method]) {
+    println!(
+        "\n### The survey's measures (Ohrhallinger et al., CGF 2021)\n\nright = share of trials \
+         whose output is exactly one closed curve per true curve (no open chains, no extra \
+         loops); closed = mean closed curves (true count in brackets); junk = mean open chains \
+         plus loops beyond the true count; on = share of the curve samples (outliers not \
+         counted) on an output curve; H = symmetric Hausdorff distance to the true curves in % \
+         of their bounding-box diagonal, mean over trials. Noise rows: evenly spaced samples \
+         (peanut 150, star 200; ellipse 200 with a circular hole of 64), Gaussian noise of the \
+         given multiple of the sample spacing, 10 trials per shape.\n"
+    );
+    let mut header = String::from("| input | trials | n |");
+    let mut rule = String::from("|---|---:|---:|");
+    for method in methods {
+        let name = method.name;
+        header += &format!(" {name} right | {name} closed | {name} junk | {name} on | {name} H |");
+        rule += "---:|---:|---:|---:|---:|";
+    }
+    println!("{header}\n{rule}");
+    for row in rows {
+        let trials = row.tallies.first().map_or(0, |t| t.trials);
+        let mut line = format!("| {} | {} | {} |", row.label, trials, row.points);
+        for t in &row.tallies {
+            let per = |x: usize| x as f64 / t.trials.max(1) as f64;
+            line += &format!(
+                " {:.0} % | {:.2} ({:.0}) | {:.2} | {:.1} % | {:.2} |",
+                percent(t.right, t.trials),
+                per(t.closed),
+                per(t.true_closed),
+                per(t.junk),
+                percent(t.on_curves, t.samples),
+                t.hausdorff / t.trials.max(1) as f64
+            );
+        }
+        println!("{line}");
+    }
 }

@@ -26,3 +26,4 @@ pub use delaunay::{triangulate, Triangulation};
 pub use error::Error;
 pub use reconstruct::{reconstruct, reconstruct_observed, reconstruct_with, Reconstruction};
 pub use voronoi::Voronoi;
+pub use voronoi::{BoundingBox, BoxError};

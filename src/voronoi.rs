@@ -14,6 +14,15 @@
 //! is then `n − 1` parallel lines, the bisectors of consecutive points of
 //! [`Triangulation::hull`], which this vertex/edge/ray model does not represent; every cell
 //! iterator is empty and [`Voronoi::collinear_bisectors`] lists the bisected pairs.
+//!
+//! [`Voronoi::clipped_cells`] gives every cell, hull cells and collinear input included, as a
+//! polygon in coordinates clipped to a [`BoundingBox`], so that the cells tile the box.
+
+mod bounding_box;
+mod cells;
+mod merge;
+
+pub use bounding_box::{BoundingBox, BoxError};
 
 use crate::delaunay::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
 use crate::kernel::{circumcenter, circumcenter_exact, incircle, ExactPoint, Sign};

@@ -649,36 +649,42 @@ fn bundled_examples_round_trip() {
 // ----- the peeling budget -----
 
 #[test]
-fn a_grid_stops_peeling_at_the_budget_with_a_note() {
+fn nested_rings_stop_peeling_at_the_budget_with_a_note() {
     let dir = tempfile::tempdir().unwrap();
-    let grid: Vec<[f64; 2]> = (0..900)
-        .map(|i| [(i % 30) as f64, (i / 30) as f64])
+    // Twenty concentric rings: twenty passes, each on everything inside.
+    let rings: Vec<[f64; 2]> = (1..=20)
+        .flat_map(|r| {
+            (0..300).map(move |k| {
+                let t = k as f64 / 300.0 * std::f64::consts::TAU;
+                [r as f64 * t.cos(), r as f64 * t.sin()]
+            })
+        })
         .collect();
-    write(dir.path(), "grid.txt", points_text(&grid).as_bytes());
+    write(dir.path(), "rings.txt", points_text(&rings).as_bytes());
     let run = run_in(
         dir.path(),
-        &["reconstruct", "grid.txt", "--format", "text"],
+        &["reconstruct", "rings.txt", "--format", "text"],
         b"",
     );
     assert_eq!(run.code, 0, "{}", run.stderr);
     let lines: Vec<&str> = run.stderr.lines().collect();
     assert_eq!(lines.len(), 1, "{}", run.stderr);
     assert!(
-        lines[0].starts_with("wdm-crust: note: grid.txt: peeling stopped after ")
+        lines[0].starts_with("wdm-crust: note: rings.txt: peeling stopped after ")
             && lines[0].contains("(--peeling-budget 4)"),
         "{}",
         lines[0]
     );
-    // A larger budget peels the grid to its centre, silently.
+    // A larger budget peels the rings to the centre, silently.
     let run = run_in(
         dir.path(),
         &[
             "reconstruct",
-            "grid.txt",
+            "rings.txt",
             "--format",
             "text",
             "--peeling-budget",
-            "1000",
+            "100",
         ],
         b"",
     );

@@ -5,7 +5,7 @@ use std::collections::BTreeSet;
 use wdm_crust::reconstruct::{Label, LabelRule, Options};
 use wdm_crust::{reconstruct, reconstruct_with};
 use wdm_crust_testkit::{
-    ClosedCurve, CurveSet, Ellipse, Peanut, Rng, Sample, SampleConfig, Similarity, Star,
+    ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Sample, SampleConfig, Similarity, Star,
 };
 
 type EdgeSet = BTreeSet<(usize, usize)>;
@@ -91,7 +91,9 @@ fn sharp_cornered_polygons_are_reconstructed_exactly() {
 /// A slot with parallel walls is not BNC (Definition 2): the medial ball keeps its radius
 /// along the slot instead of shrinking, the first vertex past the mouth lies inside the hull
 /// and is switched off, and WDM_CRUST closes the slot at its mouth. Pinned so a change in
-/// this known limitation is noticed.
+/// this known limitation is noticed: the slot's walls are then left to peeling, which
+/// keeps what reads as a separate curve and reports the points within a sample spacing of
+/// the outer curve as unassigned.
 #[test]
 fn a_parallel_slot_is_closed_at_its_mouth() {
     let corners = [
@@ -110,9 +112,14 @@ fn a_parallel_slot_is_closed_at_its_mouth() {
         let ours = edge_set(rec.edges());
         let mouth = (3 * per_edge, 6 * per_edge);
         assert!(ours.contains(&mouth), "{per_edge}: the mouth is closed");
+        let expected = match per_edge {
+            4 => (8, 3),
+            8 => (12, 2),
+            _ => (2, 2),
+        };
         assert_eq!(
             score(&cycle_edges(pts.len()), rec.edges()),
-            (2, 2),
+            expected,
             "{per_edge}"
         );
     }
@@ -214,31 +221,70 @@ fn a_shape_with_a_hole_needs_peeling() {
     }
 }
 
-/// A grid is no curve sample: peeling takes off one square ring per pass. The budget stops
-/// it after a bounded amount of work, says so, and leaves the inner points untouched.
+/// `rings` concentric circles of radii 1, 2, …, each with `per_ring` points: nested curves
+/// that peeling takes off one per pass (a ring is a hole of the ring around it).
+fn concentric_rings(rings: usize, per_ring: usize) -> Vec<[f64; 2]> {
+    (1..=rings)
+        .flat_map(|r| {
+            (0..per_ring).map(move |k| {
+                let t = k as f64 / per_ring as f64 * std::f64::consts::TAU + 0.1 * r as f64;
+                [r as f64 * t.cos(), r as f64 * t.sin()]
+            })
+        })
+        .collect()
+}
+
+/// Twenty nested rings take twenty passes, each on all the points inside the rings found so
+/// far: the budget stops that after a bounded amount of work, says so, and leaves the inner
+/// rings unassigned.
 #[test]
-fn peeling_a_grid_stops_at_the_budget() {
+fn peeling_many_nested_rings_stops_at_the_budget() {
+    let rings = concentric_rings(20, 300);
+    let unbounded =
+        reconstruct_with(&rings, &Options::new().with_peeling_budget(usize::MAX)).unwrap();
+    assert!(!unbounded.peeling_budget_exhausted());
+    assert_eq!(unbounded.passes(), 20);
+    assert_eq!(unbounded.curves().len(), 20);
+    assert!(unbounded
+        .curves()
+        .iter()
+        .all(|c| c.closed && c.points.len() == 300));
+    assert!(unbounded.unassigned().is_empty());
+    let bounded = reconstruct(&rings).unwrap();
+    assert!(bounded.peeling_budget_exhausted());
+    assert!(bounded.passes() < unbounded.passes());
+    // The extra passes ran on at most 4n points: each on all points not yet on a curve.
+    let n = rings.len();
+    let ran: usize = (1..bounded.passes()).map(|k| 300 * (20 - k)).sum();
+    assert!(ran <= 4 * n, "{ran} > 4n");
+    assert_eq!(bounded.unassigned().len(), 300 * (20 - bounded.passes()));
+    // The passes that did run found the same edges as without the bound.
+    let all: EdgeSet = edge_set(unbounded.edges());
+    assert!(edge_set(bounded.edges()).is_subset(&all));
+    let zero = reconstruct_with(&rings, &Options::new().with_peeling_budget(0)).unwrap();
+    assert_eq!(zero.passes(), 1);
+    assert!(zero.peeling_budget_exhausted());
+}
+
+/// A grid is no sample of curves: its rows lie one spacing apart. The first pass takes the
+/// border; peeling then takes every other square ring (the ring next to a curve lies within
+/// a spacing of it and is unassigned, the one after is as far from the curve as a separate
+/// curve of an ε-sample with ε = 1/2 would be). Whatever it keeps is closed.
+#[test]
+fn a_grid_is_square_rings_and_unassigned_points() {
     let side = 40;
     let grid: Vec<[f64; 2]> = (0..side * side)
         .map(|i| [(i % side) as f64, (i / side) as f64])
         .collect();
-    let unbounded =
-        reconstruct_with(&grid, &Options::new().with_peeling_budget(usize::MAX)).unwrap();
-    assert!(!unbounded.peeling_budget_exhausted());
-    assert!(unbounded.passes() >= 10, "{} passes", unbounded.passes());
-    let bounded = reconstruct(&grid).unwrap();
-    assert!(bounded.peeling_budget_exhausted());
-    assert!(bounded.passes() < unbounded.passes());
-    // The extra passes ran on at most 4n points: each on all points not yet on a curve.
-    let n = grid.len();
-    assert!((bounded.passes() - 1) * bounded.untouched_points().len() <= 4 * n);
-    assert!(!bounded.untouched_points().is_empty());
-    // The passes that did run found the same edges as without the bound.
-    let all: EdgeSet = edge_set(unbounded.edges());
-    assert!(edge_set(bounded.edges()).is_subset(&all));
-    let zero = reconstruct_with(&grid, &Options::new().with_peeling_budget(0)).unwrap();
-    assert_eq!(zero.passes(), 1);
-    assert!(zero.peeling_budget_exhausted());
+    let rec = reconstruct(&grid).unwrap();
+    assert!(!rec.peeling_budget_exhausted());
+    assert_eq!(rec.curves().len(), side / 4);
+    for (k, curve) in rec.curves().iter().enumerate() {
+        assert!(curve.closed);
+        assert_eq!(curve.points.len(), 4 * (side - 1 - 4 * k), "ring {k}");
+    }
+    let on_curves: usize = rec.curves().iter().map(|c| c.points.len()).sum();
+    assert_eq!(rec.unassigned().len() + on_curves, side * side);
 }
 
 /// Even–odd point-in-polygon (test geometry only).
@@ -406,4 +452,96 @@ fn degenerate_inputs_give_a_chain_or_nothing() {
     assert!(!rec.curves()[0].closed);
     assert_eq!(rec.curves()[0].points, vec![0, 2, 3, 1]);
     assert!(rec.medial_axis().edges.is_empty());
+}
+
+// ----- noisy closed curves (issue 13): one closed curve per true curve -----
+
+/// Evenly spaced samples of `curves` with Gaussian noise of `noise` × the mean spacing on
+/// each coordinate, shuffled.
+fn noisy_sample(curves: &[DenseCurve], noise: f64, rng: &mut Rng) -> Vec<[f64; 2]> {
+    let n: usize = curves.iter().map(|c| c.points.len()).sum();
+    let spacing = curves.iter().map(|c| c.length()).sum::<f64>() / n as f64;
+    let mut points: Vec<[f64; 2]> = curves
+        .iter()
+        .flat_map(|c| c.points.iter().copied())
+        .map(|[x, y]| {
+            [
+                x + noise * spacing * rng.normal(),
+                y + noise * spacing * rng.normal(),
+            ]
+        })
+        .collect();
+    rng.shuffle(&mut points);
+    points
+}
+
+/// In how many of `trials` noisy samples the reconstruction is exactly `curves.len()`
+/// closed curves and nothing else, the rest of the points unassigned.
+fn clean_outcomes(curves: &[DenseCurve], noise: f64, trials: u64) -> u64 {
+    (0..trials)
+        .filter(|&seed| {
+            let points = noisy_sample(curves, noise, &mut Rng::new(seed * 7919 + 1));
+            let rec = reconstruct(&points).unwrap();
+            let clean =
+                rec.curves().len() == curves.len() && rec.curves().iter().all(|c| c.closed);
+            if clean {
+                // Every point is on exactly one curve or unassigned.
+                let on_curves: usize = rec.curves().iter().map(|c| c.points.len()).sum();
+                assert_eq!(on_curves + rec.unassigned().len(), points.len());
+            }
+            clean
+        })
+        .count() as u64
+}
+
+/// Noise of 0.1 to 1 sample spacing around one closed curve: one closed curve, no chains
+/// or extra loops, the leftovers of the noise band unassigned (before peeling kept only
+/// what reads as a curve: 0.4 to 14 open chains on average at 0.3 to 1 spacing).
+#[test]
+fn noisy_closed_curves_come_out_as_one_closed_curve() {
+    let shapes = [
+        Peanut { a: 0.3, b: 0.15 }.dense(150),
+        Star { a: 0.25, k: 5 }.dense(200),
+    ];
+    // (noise in sample spacings, clean outcomes of 20 at least): measured 20, 20, 19–20,
+    // 19–20; the bound leaves one trial of slack.
+    for (noise, at_least) in [(0.1, 20), (0.3, 19), (0.5, 17), (1.0, 18)] {
+        for shape in &shapes {
+            let clean = clean_outcomes(std::slice::from_ref(shape), noise, 20);
+            assert!(clean >= at_least, "noise {noise}: {clean} of 20");
+        }
+    }
+}
+
+/// An ellipse with a circular hole: the hole survives noise up to 0.3 spacings as its own
+/// closed curve (before: lost in 11 of 20 trials at 0.3).
+#[test]
+fn a_noisy_hole_stays_a_closed_curve() {
+    let outer = Ellipse { a: 1.5, b: 1.0 }.dense(200);
+    let hole = Ellipse::circle(0.4)
+        .dense(64)
+        .transformed(&Similarity::translation([0.3, 0.0]));
+    let curves = [outer, hole];
+    for (noise, at_least) in [(0.0, 20), (0.1, 20), (0.3, 18)] {
+        let clean = clean_outcomes(&curves, noise, 20);
+        assert!(clean >= at_least, "noise {noise}: {clean} of 20");
+    }
+}
+
+/// Unassigned points: sorted, distinct, on no edge; duplicates are not listed.
+#[test]
+fn unassigned_points_are_the_points_on_no_curve() {
+    let mut rng = Rng::new(5);
+    let mut points = noisy_sample(&[Peanut { a: 0.3, b: 0.15 }.dense(150)], 0.5, &mut rng);
+    points.extend_from_slice(&points[..10].to_vec());
+    let rec = reconstruct(&points).unwrap();
+    let unassigned = rec.unassigned();
+    assert!(!unassigned.is_empty());
+    assert!(unassigned.windows(2).all(|w| w[0] < w[1]));
+    let touched: BTreeSet<u32> = rec.edges().iter().flatten().copied().collect();
+    let expected: Vec<u32> = (0..points.len() as u32)
+        .filter(|&i| !touched.contains(&i) && !rec.triangulation().is_duplicate(i))
+        .collect();
+    assert_eq!(unassigned, &expected[..]);
+    assert!(unassigned.iter().all(|&i| (i as usize) < points.len() - 10));
 }

@@ -8,11 +8,13 @@
 //!   [`Triangulation`](crate::Triangulation), a [`Voronoi`](crate::Voronoi) diagram and a
 //!   [`Reconstruction`](crate::Reconstruction) (see [`output`] for the formats).
 //! * [`write_reconstruction_svg`] draws a reconstruction as an SVG picture (see [`svg`]).
+//! * [`write_voronoi_geojson`] writes the Voronoi cells clipped to a box as GeoJSON polygons.
 
 mod lines;
 pub mod output;
 pub mod parse;
 pub mod svg;
+mod voronoi_geojson;
 
 pub use output::{
     write_reconstruction_json, write_reconstruction_text, write_triangulation_json,
@@ -23,3 +25,4 @@ pub use parse::{
     ParseError, ParseErrorKind,
 };
 pub use svg::{write_reconstruction_svg, SvgOptions};
+pub use voronoi_geojson::write_voronoi_geojson;

@@ -38,6 +38,7 @@
 //! | `metric::distance_order(p, a, b)` | `a` is strictly farther from `p` than `b` |
 //! | `metric::dot_sign(p, s, q)` | `(s − p)·(q − p) > 0` |
 //! | `MixedPoints::{orient, incircle}` | as `orient`, `incircle`, on samples and circumcenters |
+//! | `box_side::circumcenter_side(t, axis, v)` | the circumcenter of `t` has `axis` coordinate strictly above `v` |
 //!
 //! `Zero` is always the exact degenerate case (collinear, cocircular, equal).
 //!
@@ -52,6 +53,7 @@
 mod arith;
 pub(crate) mod basic;
 mod bounded;
+mod box_side;
 mod circumcenter;
 mod derived;
 mod exact;
@@ -66,6 +68,9 @@ pub(crate) mod static_filter;
 pub(crate) mod stats;
 
 pub(crate) use basic::{incircle, orient};
+pub(crate) use box_side::{
+    bisector_crossing, circumcenter_nearest, circumcenter_side, circumcenter_strictly_inside,
+};
 pub use circumcenter::{circumcenter, circumcenter_exact, ExactPoint};
 pub use derived::{circumcenter_in_convex_hull, dot_sign_circumcenters, HullPosition};
 pub(crate) use derived::{compare_circumradius, orient_circumcenter};

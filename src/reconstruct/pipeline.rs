@@ -182,6 +182,7 @@ fn assemble(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<curves::Curve> {
 mod tests {
     use super::*;
     use crate::reconstruct::extract::EdgeClass;
+    use crate::reconstruct::MedialAxisMode;
     use crate::voronoi::{EdgeEnd, Voronoi};
     use std::collections::BTreeSet;
     use wdm_crust_testkit::Rng;
@@ -207,9 +208,9 @@ mod tests {
     }
 
     /// The pipeline runs on local indices and translates once; its result must be what the
-    /// same steps give through the public API alone, on the caller's indices: peeling
-    /// included, redone here on caller indices (sub-triangulations of the untouched points,
-    /// their crust mapped back through the subset, kept where it is a Delaunay edge).
+    /// same steps give through the public API alone, on the caller's indices: the first pass
+    /// exactly, and what peeling adds only Delaunay edges between points the first pass left
+    /// untouched (which of them is peel.rs's rule, tested there).
     #[test]
     fn the_pipeline_equals_its_steps_on_caller_indices() {
         let mut rng = Rng::new(3);
@@ -232,57 +233,40 @@ mod tests {
             }
             rng.shuffle(&mut points);
             for peeling in [false, true] {
-                let options = Options::new().with_peeling(peeling);
+                let options = Options::new()
+                    .with_peeling(peeling)
+                    .with_medial_axis(MedialAxisMode::Raw);
                 let rec = reconstruct_with(&points, &options).unwrap();
 
                 let tri = triangulate(&points).unwrap();
                 let vor = tri.voronoi();
                 let flow = wdm::label_vertices(&vor, options.label_rule());
                 assert_eq!(rec.labels(), &flow.labels[..], "round {round}");
-                let mut edges = public_crust_edges(&vor, &flow.labels);
-                let mut passes = 1;
+                let first_pass = public_crust_edges(&vor, &flow.labels);
                 let delaunay: BTreeSet<[u32; 2]> = (0..tri.halfedges().len())
                     .map(|e| {
                         let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
                         [a.min(b), a.max(b)]
                     })
                     .collect();
-                loop {
-                    if !peeling {
-                        break;
-                    }
-                    let touched: BTreeSet<u32> = edges.iter().flatten().copied().collect();
-                    let rest: Vec<u32> = (0..points.len() as u32)
-                        .filter(|&i| !touched.contains(&i) && !tri.is_duplicate(i))
-                        .collect();
-                    if rest.len() < 3 {
-                        break;
-                    }
-                    let subset: Vec<[f64; 2]> = rest.iter().map(|&i| tri.point(i)).collect();
-                    let sub = triangulate(&subset).unwrap();
-                    if sub.is_degenerate() {
-                        break;
-                    }
-                    let sub_vor = sub.voronoi();
-                    let sub_flow = wdm::label_vertices(&sub_vor, options.label_rule());
-                    let found: Vec<[u32; 2]> = public_crust_edges(&sub_vor, &sub_flow.labels)
-                        .iter()
-                        .map(|&[a, b]| {
-                            let (a, b) = (rest[a as usize], rest[b as usize]);
-                            [a.min(b), a.max(b)]
-                        })
-                        .filter(|e| delaunay.contains(e))
-                        .collect();
-                    if found.is_empty() {
-                        break;
-                    }
-                    edges.extend(found);
-                    edges.sort_unstable();
-                    edges.dedup();
-                    passes += 1;
+                let edges = rec.edges().to_vec();
+                // The first pass exactly; later passes only add Delaunay edges between
+                // points the first pass left untouched (their selection is peel.rs's).
+                let first_touched: BTreeSet<u32> = first_pass.iter().flatten().copied().collect();
+                let first_set: BTreeSet<[u32; 2]> = first_pass.iter().copied().collect();
+                assert!(first_set.iter().all(|e| edges.contains(e)), "round {round}");
+                for e in edges.iter().filter(|&e| !first_set.contains(e)) {
+                    assert!(peeling, "round {round}: {e:?} without peeling");
+                    assert!(delaunay.contains(e), "round {round}: {e:?}");
+                    assert!(
+                        e.iter().all(|p| !first_touched.contains(p)),
+                        "round {round}"
+                    );
                 }
-                assert_eq!(rec.passes(), passes, "round {round}");
-                peeled += usize::from(passes > 1);
+                let grew = edges.len() > first_pass.len();
+                assert!(peeling || rec.passes() == 1, "round {round}");
+                assert!(!grew || rec.passes() > 1, "round {round}");
+                peeled += usize::from(grew);
                 assert_eq!(rec.edges(), &edges[..], "round {round}");
                 let curves = curves::assemble(points.len(), &edges, &points);
                 assert_eq!(rec.curves(), &curves[..], "round {round}");
@@ -292,7 +276,8 @@ mod tests {
                     .filter(|&i| !tri.is_duplicate(i) && !edges.iter().flatten().any(|&p| p == i))
                     .collect();
                 assert_eq!(rec.untouched_points(), untouched, "round {round}");
-                if passes == 1 {
+                assert_eq!(rec.unassigned(), untouched, "round {round}");
+                if !grew {
                     let axis = medial_axis(&vor, &flow.labels, &[]);
                     assert_eq!(rec.medial_axis(), &axis, "round {round}");
                 }

@@ -1,0 +1,343 @@
+//! `wdm_crust.reconstruct`, its options, and the `Reconstruction` and `Curve` results.
+
+use std::sync::Arc;
+
+use numpy::{PyArray1, PyArray2, PyUntypedArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyList, PyTuple};
+use wdm_crust::reconstruct::{Algorithm, MedialAxisMode, Options};
+
+use crate::arrays::{index_rows, indices, rows_array, vector};
+use crate::errors::engine_error;
+use crate::points::with_points;
+use crate::triangulation::{Source, Triangulation, TriangulationData};
+
+/// The algorithms by their command-line names (`--algorithm`).
+const ALGORITHMS: [Algorithm; 3] = [Algorithm::Wdm, Algorithm::Crust, Algorithm::NnCrust];
+/// The medial-axis modes by their command-line names (`--medial-axis`).
+const MEDIAL_AXIS_MODES: [MedialAxisMode; 2] = [MedialAxisMode::Pruned, MedialAxisMode::Raw];
+
+/// The engine's options from the keyword arguments; unknown names are a `ValueError` that
+/// lists the known ones.
+fn options(
+    algorithm: &str,
+    peeling: bool,
+    medial_axis: &str,
+    peeling_budget: Option<i64>,
+) -> PyResult<Options> {
+    let algorithm = by_name(&ALGORITHMS, Algorithm::name, "algorithm", algorithm)?;
+    let medial_axis = by_name(
+        &MEDIAL_AXIS_MODES,
+        MedialAxisMode::name,
+        "medial_axis",
+        medial_axis,
+    )?;
+    let mut options = Options::new()
+        .with_algorithm(algorithm)
+        .with_peeling(peeling)
+        .with_medial_axis(medial_axis);
+    if let Some(budget) = peeling_budget {
+        let budget = usize::try_from(budget).map_err(|_| {
+            PyValueError::new_err(format!(
+                "peeling_budget must be a non-negative integer, got {budget}"
+            ))
+        })?;
+        options = options.with_peeling_budget(budget);
+    }
+    Ok(options)
+}
+
+/// The item of `items` called `wanted`.
+fn by_name<T: Copy>(
+    items: &[T],
+    name: fn(T) -> &'static str,
+    option: &str,
+    wanted: &str,
+) -> PyResult<T> {
+    items
+        .iter()
+        .copied()
+        .find(|&item| name(item) == wanted)
+        .ok_or_else(|| {
+            let known: Vec<String> = items.iter().map(|&i| format!("'{}'", name(i))).collect();
+            PyValueError::new_err(format!(
+                "{option} must be one of {}, got '{wanted}'",
+                known.join(", ")
+            ))
+        })
+}
+
+/// One curve's arrays, computed without the GIL.
+struct CurveData {
+    closed: bool,
+    points: Vec<i64>,
+    coords: Vec<[f64; 2]>,
+}
+
+/// The arrays of a reconstruction, computed without the GIL.
+struct ReconstructionData {
+    edges: Vec<[i64; 2]>,
+    curves: Vec<CurveData>,
+    medial_vertices: Vec<[f64; 2]>,
+    medial_edges: Vec<[i64; 2]>,
+    unassigned: Vec<i64>,
+}
+
+impl ReconstructionData {
+    /// The same data as the command line's JSON; the curves' coordinates are the caller's
+    /// `points`.
+    fn of(rec: &wdm_crust::Reconstruction, points: &[[f64; 2]]) -> Self {
+        let curves = rec
+            .curves()
+            .iter()
+            .map(|curve| CurveData {
+                closed: curve.closed,
+                points: indices(curve.points.iter().copied()),
+                coords: curve.points.iter().map(|&i| points[i as usize]).collect(),
+            })
+            .collect();
+        let medial_axis = rec.medial_axis();
+        ReconstructionData {
+            edges: index_rows(rec.edges()),
+            curves,
+            medial_vertices: medial_axis.vertices.clone(),
+            medial_edges: index_rows(&medial_axis.edges),
+            unassigned: indices(rec.unassigned().iter().copied()),
+        }
+    }
+}
+
+/// One reconstructed curve: a closed loop or an open chain.
+///
+/// Attributes:
+///     closed: True for a closed loop (its last point connects back to the first).
+///     points: (k,) int64, the point indices along the curve. A closed loop lists each
+///         point once, counterclockwise, from its smallest index.
+///     coords: (k, 2) float64, the coordinates of those points (for plotting a closed
+///         loop, repeat the first row at the end).
+#[pyclass(module = "wdm_crust", frozen)]
+pub struct Curve {
+    closed: bool,
+    points: Py<PyArray1<i64>>,
+    coords: Py<PyArray2<f64>>,
+}
+
+#[pymethods]
+impl Curve {
+    /// True for a closed loop, False for an open chain.
+    #[getter]
+    fn closed(&self) -> bool {
+        self.closed
+    }
+
+    /// (k,) int64: the point indices along the curve.
+    #[getter]
+    fn points(&self, py: Python<'_>) -> Py<PyArray1<i64>> {
+        self.points.clone_ref(py)
+    }
+
+    /// (k, 2) float64: the coordinates of the points along the curve.
+    #[getter]
+    fn coords(&self, py: Python<'_>) -> Py<PyArray2<f64>> {
+        self.coords.clone_ref(py)
+    }
+
+    /// The number of points on the curve.
+    fn __len__(&self, py: Python<'_>) -> usize {
+        self.points.bind(py).len()
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> String {
+        format!(
+            "Curve(closed={}, points={})",
+            if self.closed { "True" } else { "False" },
+            self.points.bind(py).len()
+        )
+    }
+}
+
+/// The result of `wdm_crust.reconstruct`.
+///
+/// Attributes:
+///     algorithm: 'wdm', 'crust' or 'nn-crust'.
+///     edges: (e, 2) int64, the reconstructed edges [i, j] with i < j, sorted.
+///     curves: list of Curve, the edges assembled into closed loops and open chains (open
+///         chains first, then loops by their smallest index).
+///     medial_axis: (vertices (v, 2) float64, edges (s, 2) int64): the WDM_MAT segments
+///         between inner Voronoi vertices; empty for 'crust' and 'nn-crust'.
+///     unassigned: (u,) int64, the points on no curve (outliers, leftovers of noise),
+///         sorted; duplicates are not listed.
+///     passes: how many passes ran (more than one when peeling found nested curves).
+///     peeling_budget_exhausted: True when peeling stopped at its budget.
+///     point_count: the number of input points, duplicates included.
+///     triangulation: the Delaunay triangulation of all the points (built on first use).
+#[pyclass(module = "wdm_crust", frozen)]
+pub struct Reconstruction {
+    inner: Arc<wdm_crust::Reconstruction>,
+    edges: Py<PyArray2<i64>>,
+    curves: Vec<Py<Curve>>,
+    medial_vertices: Py<PyArray2<f64>>,
+    medial_edges: Py<PyArray2<i64>>,
+    unassigned: Py<PyArray1<i64>>,
+    triangulation: PyOnceLock<Py<Triangulation>>,
+}
+
+impl Reconstruction {
+    fn new(
+        py: Python<'_>,
+        inner: wdm_crust::Reconstruction,
+        data: ReconstructionData,
+    ) -> PyResult<Self> {
+        let curves = data
+            .curves
+            .into_iter()
+            .map(|curve| {
+                let curve = Curve {
+                    closed: curve.closed,
+                    points: vector(py, curve.points).unbind(),
+                    coords: rows_array(py, curve.coords)?.unbind(),
+                };
+                Py::new(py, curve)
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        Ok(Reconstruction {
+            inner: Arc::new(inner),
+            edges: rows_array(py, data.edges)?.unbind(),
+            curves,
+            medial_vertices: rows_array(py, data.medial_vertices)?.unbind(),
+            medial_edges: rows_array(py, data.medial_edges)?.unbind(),
+            unassigned: vector(py, data.unassigned).unbind(),
+            triangulation: PyOnceLock::new(),
+        })
+    }
+}
+
+#[pymethods]
+impl Reconstruction {
+    /// 'wdm', 'crust' or 'nn-crust'.
+    #[getter]
+    fn algorithm(&self) -> &'static str {
+        self.inner.algorithm().name()
+    }
+
+    /// (e, 2) int64: the reconstructed edges [i, j], i < j, sorted.
+    #[getter]
+    fn edges(&self, py: Python<'_>) -> Py<PyArray2<i64>> {
+        self.edges.clone_ref(py)
+    }
+
+    /// list of Curve: closed loops and open chains.
+    #[getter]
+    fn curves<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        PyList::new(py, self.curves.iter().map(|c| c.clone_ref(py)))
+    }
+
+    /// (vertices (v, 2) float64, edges (s, 2) int64): the medial axis.
+    #[getter]
+    fn medial_axis<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        PyTuple::new(
+            py,
+            [
+                self.medial_vertices.clone_ref(py).into_any(),
+                self.medial_edges.clone_ref(py).into_any(),
+            ],
+        )
+    }
+
+    /// (u,) int64: the points on no curve, sorted.
+    #[getter]
+    fn unassigned(&self, py: Python<'_>) -> Py<PyArray1<i64>> {
+        self.unassigned.clone_ref(py)
+    }
+
+    /// How many passes ran.
+    #[getter]
+    fn passes(&self) -> usize {
+        self.inner.passes()
+    }
+
+    /// True when peeling stopped at its budget (the unassigned points may hold curves).
+    #[getter]
+    fn peeling_budget_exhausted(&self) -> bool {
+        self.inner.peeling_budget_exhausted()
+    }
+
+    /// The number of input points, duplicates included.
+    #[getter]
+    fn point_count(&self) -> usize {
+        self.inner.triangulation().point_count()
+    }
+
+    /// The Delaunay triangulation of all the points, built on first use.
+    #[getter]
+    fn triangulation(&self, py: Python<'_>) -> PyResult<Py<Triangulation>> {
+        let tri = self.triangulation.get_or_try_init(py, || {
+            let data = py.detach(|| TriangulationData::of(self.inner.triangulation()));
+            let source = Source::Reconstruction(Arc::clone(&self.inner));
+            Py::new(py, Triangulation::new(py, source, data)?)
+        })?;
+        Ok(tri.clone_ref(py))
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> String {
+        let closed = self.curves.iter().filter(|c| c.get().closed).count();
+        format!(
+            "Reconstruction(algorithm='{}', point_count={}, edges={}, closed_curves={}, open_chains={}, medial_axis_edges={}, unassigned={}, passes={})",
+            self.algorithm(),
+            self.point_count(),
+            self.edges.bind(py).shape()[0],
+            closed,
+            self.curves.len() - closed,
+            self.medial_edges.bind(py).shape()[0],
+            self.unassigned.bind(py).len(),
+            self.passes()
+        )
+    }
+}
+
+/// Reconstructs the curves the points were sampled from, and their medial axis.
+///
+/// Args:
+///     points: an (n, 2) array-like of real numbers (see `triangulate`).
+///     algorithm: 'wdm' (WDM_CRUST, the default), 'crust' (Amenta–Bern–Eppstein) or
+///         'nn-crust' (Dey–Kumar); the baselines return no medial axis.
+///     peeling: WDM: rerun on the points no curve reached, to find nested curves (holes);
+///         False runs the paper's single pass.
+///     medial_axis: WDM: 'pruned' (the default: spurious branches removed) or 'raw' (the
+///         paper's WDM_MAT, every Voronoi edge between two inner vertices).
+///     peeling_budget: the extra passes together may run on at most this many times the
+///         input's points; None keeps the engine's default (as the command line's).
+///
+/// Returns:
+///     Reconstruction with `edges`, `curves`, `medial_axis`, `unassigned`: the same data as
+///     `wdm-crust reconstruct`'s JSON with the same options.
+///
+/// Raises:
+///     ValueError: invalid points (as `triangulate`), an unknown algorithm or medial_axis
+///         name, or a negative peeling_budget.
+///     TypeError: the points are not real numbers.
+///
+/// The GIL is released while the engine runs.
+#[pyfunction]
+#[pyo3(signature = (points, *, algorithm = "wdm", peeling = true, medial_axis = "pruned", peeling_budget = None))]
+pub fn reconstruct(
+    py: Python<'_>,
+    points: &Bound<'_, PyAny>,
+    algorithm: &str,
+    peeling: bool,
+    medial_axis: &str,
+    peeling_budget: Option<i64>,
+) -> PyResult<Reconstruction> {
+    let options = options(algorithm, peeling, medial_axis, peeling_budget)?;
+    let (rec, data) = with_points(points, |points| {
+        py.detach(|| {
+            let rec = wdm_crust::reconstruct_with(points, &options)?;
+            let data = ReconstructionData::of(&rec, points);
+            Ok((rec, data))
+        })
+        .map_err(engine_error)
+    })?;
+    Reconstruction::new(py, rec, data)
+}

@@ -885,11 +885,19 @@ fn main() {
             .flat_map(|_| single.iter().map(|c| vec![c.clone()]).collect::<Vec<_>>())
             .map(|curves| spaced_case(curves, noise, &mut rng))
             .collect();
-        rows.push(survey_row(&format!("noise {noise} × spacing, one curve"), &cases, &methods));
+        rows.push(survey_row(
+            &format!("noise {noise} × spacing, one curve"),
+            &cases,
+            &methods,
+        ));
         let cases: Vec<Case> = (0..10)
             .map(|_| spaced_case(annulus.clone(), noise, &mut rng))
             .collect();
-        rows.push(survey_row(&format!("noise {noise} × spacing, with a hole"), &cases, &methods));
+        rows.push(survey_row(
+            &format!("noise {noise} × spacing, with a hole"),
+            &cases,
+            &methods,
+        ));
     }
     for (label, cases) in &survey_inputs {
         rows.push(survey_row(label, cases, &methods));

@@ -482,8 +482,7 @@ fn clean_outcomes(curves: &[DenseCurve], noise: f64, trials: u64) -> u64 {
         .filter(|&seed| {
             let points = noisy_sample(curves, noise, &mut Rng::new(seed * 7919 + 1));
             let rec = reconstruct(&points).unwrap();
-            let clean =
-                rec.curves().len() == curves.len() && rec.curves().iter().all(|c| c.closed);
+            let clean = rec.curves().len() == curves.len() && rec.curves().iter().all(|c| c.closed);
             if clean {
                 // Every point is on exactly one curve or unassigned.
                 let on_curves: usize = rec.curves().iter().map(|c| c.points.len()).sum();
@@ -533,7 +532,8 @@ fn a_noisy_hole_stays_a_closed_curve() {
 fn unassigned_points_are_the_points_on_no_curve() {
     let mut rng = Rng::new(5);
     let mut points = noisy_sample(&[Peanut { a: 0.3, b: 0.15 }.dense(150)], 0.5, &mut rng);
-    points.extend_from_slice(&points[..10].to_vec());
+    let repeated = points[..10].to_vec();
+    points.extend_from_slice(&repeated);
     let rec = reconstruct(&points).unwrap();
     let unassigned = rec.unassigned();
     assert!(!unassigned.is_empty());

@@ -1,5 +1,7 @@
 //! Assembly of reconstructed edges into curves: closed loops and open chains.
 
+use crate::kernel::{orient, Sign};
+
 /// One reconstructed curve.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -153,8 +155,11 @@ fn walk(
 }
 
 /// Puts a loop in its canonical form by names: from its smallest name towards the smaller
-/// neighbour, reversed if its signed area is negative (summed in that order, so the result
-/// does not depend on where the walk started), then from its smallest name again.
+/// neighbour, reversed if it runs clockwise, then from its smallest name again.
+///
+/// The direction is decided exactly: at the loop's lexicographically smallest point (an
+/// extreme point, so the loop turns there the way it runs around) by the exact orientation
+/// of its two neighbours. A rounded signed area cancels for data far from the origin.
 fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]], name: impl Fn(u32) -> u32) {
     let n = cycle.len();
     let start_at_smallest = |cycle: &mut [u32]| {
@@ -166,13 +171,18 @@ fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]], name: impl Fn
     if n > 2 && name(cycle[1]) > name(cycle[n - 1]) {
         cycle[1..].reverse();
     }
-    let mut twice_area = 0.0;
-    for i in 0..n {
-        let a = points[cycle[i] as usize];
-        let b = points[cycle[(i + 1) % n] as usize];
-        twice_area += a[0] * b[1] - a[1] * b[0];
+    if n < 3 {
+        return;
     }
-    if twice_area < 0.0 {
+    let at = |i: usize| points[cycle[i] as usize];
+    let lowest = (0..n)
+        .min_by(|&i, &j| {
+            let (p, q) = (at(i), at(j));
+            p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
+        })
+        .unwrap_or(0);
+    let turn = orient(at((lowest + n - 1) % n), at(lowest), at((lowest + 1) % n));
+    if turn == Sign::Negative {
         cycle.reverse();
         start_at_smallest(cycle);
     }

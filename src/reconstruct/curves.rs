@@ -1,5 +1,8 @@
 //! Assembly of reconstructed edges into curves: closed loops and open chains.
 
+use super::polygons::ring_orientation_by;
+use crate::kernel::Sign;
+
 /// One reconstructed curve.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -153,8 +156,8 @@ fn walk(
 }
 
 /// Puts a loop in its canonical form by names: from its smallest name towards the smaller
-/// neighbour, reversed if its signed area is negative (summed in that order, so the result
-/// does not depend on where the walk started), then from its smallest name again.
+/// neighbour, reversed if it runs clockwise (decided exactly, see
+/// [`ring_orientation_by`]), then from its smallest name again.
 fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]], name: impl Fn(u32) -> u32) {
     let n = cycle.len();
     let start_at_smallest = |cycle: &mut [u32]| {
@@ -166,13 +169,8 @@ fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]], name: impl Fn
     if n > 2 && name(cycle[1]) > name(cycle[n - 1]) {
         cycle[1..].reverse();
     }
-    let mut twice_area = 0.0;
-    for i in 0..n {
-        let a = points[cycle[i] as usize];
-        let b = points[cycle[(i + 1) % n] as usize];
-        twice_area += a[0] * b[1] - a[1] * b[0];
-    }
-    if twice_area < 0.0 {
+    // Exactly (the float shoelace sum can get a thin loop far from the origin wrong).
+    if ring_orientation_by(n, |i| points[cycle[i] as usize]) == Sign::Negative {
         cycle.reverse();
         start_at_smallest(cycle);
     }

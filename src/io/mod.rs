@@ -8,7 +8,10 @@
 //!   [`Triangulation`](crate::Triangulation), a [`Voronoi`](crate::Voronoi) diagram and a
 //!   [`Reconstruction`](crate::Reconstruction) (see [`output`] for the formats).
 //! * [`write_reconstruction_svg`] draws a reconstruction as an SVG picture (see [`svg`]).
+//! * [`write_reconstruction_geojson`] writes a reconstruction as GeoJSON: polygons with
+//!   holes, open chains, the medial axis, the unassigned points (see [`geojson`]).
 
+pub mod geojson;
 mod lines;
 pub mod output;
 pub mod parse;
@@ -18,6 +21,7 @@ pub use output::{
     write_reconstruction_json, write_reconstruction_text, write_triangulation_json,
     write_triangulation_text, write_voronoi_json, write_voronoi_text,
 };
+pub use geojson::write_reconstruction_geojson;
 pub use parse::{
     detect_format, format_from_path, read_points, read_points_from_path, Axis, InputFormat,
     ParseError, ParseErrorKind,

@@ -1,0 +1,467 @@
+//! Point location and nearest input point, exact, by walking the triangulation.
+//!
+//! # Which triangle holds a point
+//!
+//! A *visibility walk*: from a start triangle, cross any edge that has the query point
+//! strictly on its far side, until no edge does (the point is in the closed triangle) or
+//! the edge to cross is on the convex hull (the point is outside the hull: a hull edge's
+//! line bounds the hull). On a Delaunay triangulation this walk never visits a triangle
+//! twice, whatever edge it picks (Edelsbrunner's acyclicity theorem: each step lowers the
+//! power of the query point with respect to the circumcircles), so it ends within as many
+//! steps as there are triangles; a step budget of that size backs the argument with a scan
+//! of all triangles, so even a cycle could only cost time. Every side test is the exact
+//! orientation of the kernel, so the answer is the one exact arithmetic gives: strictly
+//! inside a triangle, on the relative interior of an edge, on a vertex, or outside the hull.
+//!
+//! The walk starts at a hint: the triangle of the previous query ([`Locator`]), a triangle
+//! the caller names ([`Triangulation::locate_from`]), or without either the nearest of a
+//! sample of about ∛T triangles (jump and walk, [`Triangulation::locate`]).
+//!
+//! # Which input point is nearest
+//!
+//! A greedy walk on the Delaunay graph: from a corner of the located triangle, move to a
+//! neighbour strictly closer to the query until none is. If `v` is not a nearest point,
+//! the segment from `v` to the query leaves `v`'s Voronoi cell through an edge or a vertex
+//! of the diagram at some point `x`; the site `w` of a cell on the other side (one at
+//! distance `|x − v|` from `x`, so a Delaunay neighbour of `v`: across a Voronoi edge, or
+//! around a vertex shared by cocircular sites, a neighbour along their circle) has
+//! `|q − w| ≤ |q − x| + |x − w| = |q − v|`, with equality only for `w = v`. So the walk ends
+//! at a nearest point. Distances are compared exactly (the kernel's `distance_order`:
+//! a filter, then exact integers), never computed.
+//!
+//! Degenerate triangulations (all points collinear, or fewer than three distinct) have no
+//! triangle to walk: location then checks the chain of points along the line and the
+//! nearest point is found by an exact scan.
+
+use super::triangulation::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
+use crate::error::{check_coordinate, Error};
+use crate::kernel::metric::distance_order;
+use crate::kernel::{orient, Sign};
+
+/// Where a query point lies in a [`Triangulation`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Location {
+    /// Strictly inside triangle `t` (an id for [`Triangulation::triangle`]).
+    Triangle(usize),
+    /// On the relative interior of the edge of half-edge `e` (see [`Triangulation`] for
+    /// half-edge ids; its twin, if any, is the same edge seen from the other triangle).
+    Edge(usize),
+    /// On input point `i` (a caller index; the first occurrence for duplicated coordinates).
+    Vertex(u32),
+    /// Strictly between the consecutive points `[a, b]` (caller indices) of a degenerate
+    /// triangulation's chain: all points collinear, so there are no triangles.
+    OnChain([u32; 2]),
+    /// Outside the closed convex hull of the points.
+    Outside,
+}
+
+/// The end of a walk, in the triangulation's local terms.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Walked {
+    /// In the closed triangle.
+    Inside(usize),
+    /// Strictly right of this hull half-edge.
+    Beyond(usize),
+}
+
+/// Repeated queries on one triangulation, each walk starting from where the previous one
+/// ended (queries close to each other are answered in a few steps).
+///
+/// ```
+/// use wdm_crust::delaunay::Location;
+///
+/// let points = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0], [2.0, 1.0]];
+/// let tri = wdm_crust::triangulate(&points)?;
+/// let mut locator = tri.locator();
+/// match locator.locate([2.0, 3.0])? {
+///     Location::Triangle(t) => assert!(tri.triangle(t).contains(&2)),
+///     other => panic!("expected a triangle, got {other:?}"),
+/// }
+/// assert_eq!(locator.locate([2.0, 1.0])?, Location::Vertex(4));
+/// assert_eq!(locator.locate([5.0, 1.0])?, Location::Outside);
+/// assert_eq!(locator.nearest([3.9, 0.2])?, Some(1));
+/// # Ok::<(), wdm_crust::Error>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Locator<'a> {
+    tri: &'a Triangulation,
+    last: usize,
+}
+
+impl<'a> Locator<'a> {
+    /// A locator whose first walk starts from a sampled triangle near the first query.
+    pub fn new(tri: &'a Triangulation) -> Self {
+        Locator {
+            tri,
+            last: usize::MAX,
+        }
+    }
+
+    /// Where `q` lies; the walk starts at the previous query's triangle.
+    ///
+    /// # Errors
+    /// A coordinate of `q` that is not finite or outside the exact envelope (as for input
+    /// points, see [`crate::error`]): [`Error::NotFinite`], [`Error::TooSmall`] or
+    /// [`Error::TooLarge`] with index 0.
+    pub fn locate(&mut self, q: [f64; 2]) -> Result<Location, Error> {
+        check_query(q)?;
+        if self.tri.is_degenerate() {
+            return Ok(self.tri.locate_on_chain(q));
+        }
+        let walked = self.tri.walk(q, self.start(q));
+        self.remember(walked);
+        Ok(self.tri.classify(q, walked))
+    }
+
+    /// One of the input points nearest to `q` (a caller index; the first occurrence for
+    /// duplicated coordinates), or `None` when there are no points. When several are equally
+    /// near, which one is returned depends on where the walk came from.
+    ///
+    /// # Errors
+    /// As [`locate`](Self::locate).
+    pub fn nearest(&mut self, q: [f64; 2]) -> Result<Option<u32>, Error> {
+        check_query(q)?;
+        let tri = self.tri;
+        if tri.is_degenerate() {
+            return Ok(tri.nearest_by_scan(q).map(|p| tri.input_index(p)));
+        }
+        let walked = tri.walk(q, self.start(q));
+        self.remember(walked);
+        let outgoing = match walked {
+            Walked::Inside(t) => {
+                // The nearest corner, with the half-edge leaving it.
+                let mut best = 3 * t;
+                for e in 3 * t + 1..3 * t + 3 {
+                    let (p, b) = (tri.point_at(tri.org(e)), tri.point_at(tri.org(best)));
+                    if distance_order(q, p, b) == Sign::Negative {
+                        best = e;
+                    }
+                }
+                best
+            }
+            Walked::Beyond(e) => e,
+        };
+        Ok(Some(tri.input_index(tri.greedy_nearest(q, outgoing))))
+    }
+
+    fn start(&self, q: [f64; 2]) -> usize {
+        if self.last < self.tri.triangle_count() {
+            self.last
+        } else {
+            self.tri.sampled_start(q)
+        }
+    }
+
+    fn remember(&mut self, walked: Walked) {
+        self.last = match walked {
+            Walked::Inside(t) => t,
+            Walked::Beyond(e) => e / 3,
+        };
+    }
+}
+
+fn check_query(q: [f64; 2]) -> Result<(), Error> {
+    check_coordinate(0, q[0])?;
+    check_coordinate(0, q[1])
+}
+
+impl Triangulation {
+    /// Where `q` lies: strictly inside a triangle, on an edge, on an input point, or outside
+    /// the convex hull, decided exactly (see [`locate`](crate::delaunay::locate) for the
+    /// walk and why it is exact). The walk starts at the nearest of a small sample of
+    /// triangles; for many queries, a [`Locator`] starts each walk where the last one ended.
+    ///
+    /// # Errors
+    /// A coordinate of `q` that is not finite or outside the exact envelope: see
+    /// [`Locator::locate`].
+    ///
+    /// ```
+    /// use wdm_crust::delaunay::Location;
+    ///
+    /// let tri = wdm_crust::triangulate(&[[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]])?;
+    /// assert_eq!(tri.locate([0.5, 0.5])?, Location::Triangle(0));
+    /// let Location::Edge(e) = tri.locate([1.0, 1.0])? else { panic!("on an edge") };
+    /// let mut ends = [tri.halfedge_origin(e), tri.halfedge_destination(e)];
+    /// ends.sort();
+    /// assert_eq!(ends, [1, 2]);
+    /// assert_eq!(tri.locate([2.0, 0.0])?, Location::Vertex(1));
+    /// assert_eq!(tri.locate([1.0, 1.5])?, Location::Outside);
+    /// assert!(tri.locate([f64::NAN, 0.0]).is_err());
+    /// # Ok::<(), wdm_crust::Error>(())
+    /// ```
+    pub fn locate(&self, q: [f64; 2]) -> Result<Location, Error> {
+        self.locator().locate(q)
+    }
+
+    /// [`locate`](Self::locate) with the walk starting at triangle `hint` (an id out of
+    /// range is ignored).
+    ///
+    /// # Errors
+    /// As [`locate`](Self::locate).
+    pub fn locate_from(&self, q: [f64; 2], hint: usize) -> Result<Location, Error> {
+        let mut locator = self.locator();
+        locator.last = hint;
+        locator.locate(q)
+    }
+
+    /// One of the input points nearest to `q`, exactly (see [`Locator::nearest`]); `None`
+    /// when there are no points.
+    ///
+    /// # Errors
+    /// As [`locate`](Self::locate).
+    ///
+    /// ```
+    /// let points = [[0.0, 0.0], [10.0, 0.0], [5.0, 8.0], [5.0, 3.0]];
+    /// let tri = wdm_crust::triangulate(&points)?;
+    /// assert_eq!(tri.nearest_point([5.0, 4.0])?, Some(3));
+    /// assert_eq!(tri.nearest_point([-7.0, -1.0])?, Some(0));
+    /// # Ok::<(), wdm_crust::Error>(())
+    /// ```
+    pub fn nearest_point(&self, q: [f64; 2]) -> Result<Option<u32>, Error> {
+        self.locator().nearest(q)
+    }
+
+    /// A [`Locator`] for repeated queries.
+    pub fn locator(&self) -> Locator<'_> {
+        Locator::new(self)
+    }
+
+    #[inline]
+    fn point_at(&self, p: u32) -> [f64; 2] {
+        self.points[p as usize]
+    }
+
+    /// The nearest (by the first corner, in floating point: only a start, not a decision)
+    /// of about ∛T triangles spread over the ids, which follow the points' Z order.
+    fn sampled_start(&self, q: [f64; 2]) -> usize {
+        let count = self.triangles.len();
+        let samples = ((count as f64).cbrt() as usize).max(1);
+        let stride = (count / samples).max(1);
+        let distance = |t: usize| {
+            let p = self.point_at(self.triangles[t][0]);
+            (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)
+        };
+        (0..count)
+            .step_by(stride)
+            .min_by(|&a, &b| distance(a).total_cmp(&distance(b)))
+            .unwrap_or(0)
+    }
+
+    /// The visibility walk from triangle `start` (a valid id; the triangulation has
+    /// triangles).
+    fn walk(&self, q: [f64; 2], start: usize) -> Walked {
+        let mut t = start;
+        // The half-edge the walk entered `t` by: `q` is strictly left of it.
+        let mut entered = usize::MAX;
+        for _ in 0..=self.triangles.len() {
+            match self.exit(q, t, entered) {
+                None => return Walked::Inside(t),
+                Some(e) => {
+                    let twin = self.halfedges[e];
+                    if twin == NO_TWIN {
+                        return Walked::Beyond(e);
+                    }
+                    entered = twin as usize;
+                    t = entered / 3;
+                }
+            }
+        }
+        self.scan(q)
+    }
+
+    /// A half-edge of triangle `t` other than `entered` with `q` strictly on its right.
+    #[inline]
+    fn exit(&self, q: [f64; 2], t: usize, entered: usize) -> Option<usize> {
+        let [a, b, c] = self.triangles[t].map(|p| self.point_at(p));
+        let edges = [(3 * t, a, b), (3 * t + 1, b, c), (3 * t + 2, c, a)];
+        edges
+            .into_iter()
+            .find(|&(e, from, to)| e != entered && orient(from, to, q) == Sign::Negative)
+            .map(|(e, _, _)| e)
+    }
+
+    /// Every triangle tested: the walk's fallback, never needed on a Delaunay triangulation.
+    #[cold]
+    fn scan(&self, q: [f64; 2]) -> Walked {
+        for t in 0..self.triangles.len() {
+            if self.exit(q, t, usize::MAX).is_none() {
+                return Walked::Inside(t);
+            }
+        }
+        let hull_edge = (0..self.halfedges.len()).find(|&e| {
+            self.halfedges[e] == NO_TWIN
+                && orient(self.point_at(self.org(e)), self.point_at(self.dest(e)), q)
+                    == Sign::Negative
+        });
+        // A point in no closed triangle is strictly right of some hull edge.
+        Walked::Beyond(hull_edge.unwrap_or(0))
+    }
+
+    /// The public answer for the end of a walk.
+    fn classify(&self, q: [f64; 2], walked: Walked) -> Location {
+        let t = match walked {
+            Walked::Beyond(_) => return Location::Outside,
+            Walked::Inside(t) => t,
+        };
+        let corners = self.triangles[t];
+        let p = corners.map(|c| self.point_at(c));
+        // Side of edge k (from corner k to corner k + 1); none is negative.
+        let on_line = [0, 1, 2].map(|k| orient(p[k], p[(k + 1) % 3], q) == Sign::Zero);
+        match on_line {
+            [false, false, false] => Location::Triangle(t),
+            // On two edges: their shared corner (edge k − 1 ends where edge k starts).
+            [true, true, _] => Location::Vertex(self.input_index(corners[1])),
+            [_, true, true] => Location::Vertex(self.input_index(corners[2])),
+            [true, _, true] => Location::Vertex(self.input_index(corners[0])),
+            [true, false, false] => Location::Edge(3 * t),
+            [false, true, false] => Location::Edge(3 * t + 1),
+            [false, false, true] => Location::Edge(3 * t + 2),
+        }
+    }
+
+    /// Location in a degenerate triangulation: on a point, strictly between consecutive
+    /// points of the chain along the line, or outside.
+    fn locate_on_chain(&self, q: [f64; 2]) -> Location {
+        if let Some(p) = self.points.iter().position(|&p| p == q) {
+            return Location::Vertex(self.input_index(p as u32));
+        }
+        for pair in self.hull.windows(2) {
+            let (a, b) = (self.point_at(pair[0]), self.point_at(pair[1]));
+            let within = |k: usize| a[k].min(b[k]) <= q[k] && q[k] <= a[k].max(b[k]);
+            if within(0) && within(1) && orient(a, b, q) == Sign::Zero {
+                return Location::OnChain([self.input_index(pair[0]), self.input_index(pair[1])]);
+            }
+        }
+        Location::Outside
+    }
+
+    /// The nearest distinct point by exact comparison with every one (local index).
+    fn nearest_by_scan(&self, q: [f64; 2]) -> Option<u32> {
+        (0..self.points.len() as u32).reduce(|best, p| {
+            if distance_order(q, self.point_at(p), self.point_at(best)) == Sign::Negative {
+                p
+            } else {
+                best
+            }
+        })
+    }
+
+    /// The greedy walk on the Delaunay graph from the origin of half-edge `outgoing` (local
+    /// index of the point reached).
+    fn greedy_nearest(&self, q: [f64; 2], mut outgoing: usize) -> u32 {
+        loop {
+            let v = self.org(outgoing);
+            let mut best = (v, outgoing);
+            self.for_each_neighbour(outgoing, |w, from_w| {
+                if distance_order(q, self.point_at(w), self.point_at(best.0)) == Sign::Negative {
+                    best = (w, from_w);
+                }
+            });
+            if best.0 == v {
+                return v;
+            }
+            outgoing = best.1;
+        }
+    }
+
+    /// Calls `visit(w, e)` for the neighbours `w` of the origin `v` of `outgoing`, with a
+    /// half-edge `e` leaving `w` (some neighbours more than once).
+    fn for_each_neighbour(&self, outgoing: usize, mut visit: impl FnMut(u32, usize)) {
+        // The corners of a triangle at v: next(e) leaves dest(e), prev(e) leaves its origin.
+        let mut visit_triangle = |e: usize| {
+            visit(self.dest(e), next_in_triangle(e));
+            let p = prev_in_triangle(e);
+            visit(self.org(p), p);
+        };
+        // Counterclockwise around v: twin(prev(e)) leaves v again.
+        let mut e = outgoing;
+        loop {
+            visit_triangle(e);
+            let twin = self.halfedges[prev_in_triangle(e)];
+            if twin == NO_TWIN {
+                break;
+            }
+            e = twin as usize;
+            if e == outgoing {
+                return;
+            }
+        }
+        // v is on the hull: the rest of its fan, clockwise.
+        let mut e = outgoing;
+        loop {
+            let twin = self.halfedges[e];
+            if twin == NO_TWIN {
+                return;
+            }
+            e = next_in_triangle(twin as usize);
+            visit_triangle(e);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::delaunay::triangulate;
+
+    #[test]
+    fn every_answer_on_a_small_square() {
+        // Two triangles sharing the diagonal; the centre lies on it.
+        let pts = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
+        let tri = triangulate(&pts).unwrap();
+        let centre = tri.locate([1.0, 1.0]).unwrap();
+        let Location::Edge(e) = centre else {
+            panic!("{centre:?}")
+        };
+        let ends = [tri.halfedge_origin(e), tri.halfedge_destination(e)];
+        assert!(ends == [0, 2] || ends == [2, 0] || ends == [1, 3] || ends == [3, 1]);
+        for (i, &p) in pts.iter().enumerate() {
+            assert_eq!(tri.locate(p).unwrap(), Location::Vertex(i as u32));
+            for hint in 0..3 {
+                assert_eq!(tri.locate_from(p, hint).unwrap(), Location::Vertex(i as u32));
+            }
+        }
+        assert!(matches!(tri.locate([0.5, 0.1]).unwrap(), Location::Triangle(_)));
+        assert_eq!(tri.locate([1.0, 0.0]).unwrap(), {
+            let e = (0..6)
+                .find(|&e| {
+                    let mut ends = [tri.halfedge_origin(e), tri.halfedge_destination(e)];
+                    ends.sort();
+                    ends == [0, 1]
+                })
+                .unwrap();
+            Location::Edge(e)
+        });
+        assert_eq!(tri.locate([3.0, 1.0]).unwrap(), Location::Outside);
+        assert_eq!(tri.locate([2.0, 3.0]).unwrap(), Location::Outside); // on the hull's line
+    }
+
+    #[test]
+    fn degenerate_triangulations() {
+        let line = [[0.0, 0.0], [2.0, 2.0], [1.0, 1.0], [1.0, 1.0]];
+        let tri = triangulate(&line).unwrap();
+        assert_eq!(tri.locate([1.0, 1.0]).unwrap(), Location::Vertex(2));
+        let on = tri.locate([0.5, 0.5]).unwrap();
+        assert!(on == Location::OnChain([0, 2]) || on == Location::OnChain([2, 0]), "{on:?}");
+        assert_eq!(tri.locate([3.0, 3.0]).unwrap(), Location::Outside);
+        assert_eq!(tri.locate([0.5, 0.6]).unwrap(), Location::Outside);
+        assert_eq!(tri.nearest_point([1.9, 1.0]).unwrap(), Some(2));
+        let empty = triangulate(&[]).unwrap();
+        assert_eq!(empty.locate([0.0, 0.0]).unwrap(), Location::Outside);
+        assert_eq!(empty.nearest_point([0.0, 0.0]).unwrap(), None);
+        let one = triangulate(&[[1.0, 1.0], [1.0, 1.0]]).unwrap();
+        assert_eq!(one.nearest_point([5.0, 0.0]).unwrap(), Some(0));
+        assert_eq!(one.locate([1.0, 1.0]).unwrap(), Location::Vertex(0));
+    }
+
+    #[test]
+    fn bad_queries_are_errors() {
+        let tri = triangulate(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]).unwrap();
+        for q in [[f64::NAN, 0.0], [0.0, f64::INFINITY], [1e300, 0.0], [1e-300, 0.0]] {
+            assert!(tri.locate(q).is_err(), "{q:?}");
+            assert!(tri.nearest_point(q).is_err(), "{q:?}");
+        }
+        // An out-of-range hint is ignored.
+        assert!(tri.locate_from([0.1, 0.1], 99).is_ok());
+    }
+}

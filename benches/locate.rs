@@ -8,17 +8,24 @@
 //! * `coherent`: the same queries sorted along a Hilbert-like serpentine (each walk starts
 //!   near its target, as when tracing a path or rasterising).
 //!
-//! wdm-crust answers with a [`wdm_crust::delaunay::Locator`] (each walk starts where the last
-//! one ended); spade's `locate` and `nearest_neighbor` start from its default hint, the last
-//! vertex used, so both remember the previous query. Compare ratios within one run.
+//! wdm-crust answers with a [`wdm_crust::delaunay::Locator`] (each walk starts from a coarse
+//! grid of start triangles, built when the locator is made: outside the timing, like spade's
+//! structures). spade answers with `locate` and `nearest_neighbor` twice: with its default
+//! hint (the last vertex used: `spade`) and with its hierarchy of hint triangulations
+//! (`spade_hierarchy`). Both libraries decide with exact orientation tests. Compare ratios
+//! within one run.
 //!
-//! `cargo bench --bench locate` (filter with e.g. `-- locate/uniform/random`).
+//! `cargo bench --bench locate` (filter with e.g. `-- locate/uniform/random`; add
+//! `WDM_BENCH_HUGE=1` for 10^6 points).
 
 mod common;
 
 use common::{PointSet, Rng};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use spade::{DelaunayTriangulation, Point2, Triangulation as _};
+use spade::{DelaunayTriangulation, HierarchyHintGenerator, Point2, Triangulation as _};
+
+/// spade with its hierarchy of hint triangulations (its fast option for scattered queries).
+type SpadeHierarchy = DelaunayTriangulation<Point2<f64>, (), (), (), HierarchyHintGenerator<f64>>;
 
 const QUERIES: usize = 10_000;
 
@@ -50,11 +57,15 @@ fn queries(points: &[[f64; 2]], seed: u64) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
 fn bench_locate(c: &mut Criterion) {
     for set in [PointSet::Uniform, PointSet::Clusters] {
         for n in [10_000, 100_000, 1_000_000] {
+            if n == 1_000_000 && std::env::var_os("WDM_BENCH_HUGE").is_none() {
+                continue; // spade's last-vertex hint takes seconds per batch there
+            }
             let points = set.points(n, 42);
             let tri = wdm_crust::triangulate(&points).expect("valid points");
             let spade_points: Vec<Point2<f64>> =
                 points.iter().map(|p| Point2::new(p[0], p[1])).collect();
-            let dt = DelaunayTriangulation::<Point2<f64>>::bulk_load(spade_points).unwrap();
+            let dt = DelaunayTriangulation::<Point2<f64>>::bulk_load(spade_points.clone()).unwrap();
+            let dth = SpadeHierarchy::bulk_load(spade_points).unwrap();
             let (random, coherent) = queries(&points, 7);
             // The same questions get the same answers: inside or outside the hull.
             let inside_wdm = random
@@ -100,6 +111,20 @@ fn bench_locate(c: &mut Criterion) {
                         inside
                     })
                 });
+                group.bench_with_input(BenchmarkId::new("spade_hierarchy", n), qs, |b, qs| {
+                    b.iter(|| {
+                        let mut inside = 0usize;
+                        for q in qs {
+                            let at = dth.locate(Point2::new(q[0], q[1]));
+                            inside += usize::from(!matches!(
+                                at,
+                                spade::PositionInTriangulation::OutsideOfConvexHull(_)
+                                    | spade::PositionInTriangulation::NoTriangulation
+                            ));
+                        }
+                        inside
+                    })
+                });
                 group.finish();
                 let mut group = c.benchmark_group(format!("nearest/{}/{order}", set.name()));
                 group.throughput(Throughput::Elements(QUERIES as u64));
@@ -119,6 +144,16 @@ fn bench_locate(c: &mut Criterion) {
                         let mut sum = 0u64;
                         for q in qs {
                             let v = dt.nearest_neighbor(Point2::new(q[0], q[1]));
+                            sum += v.map_or(0, |v| v.fix().index() as u64);
+                        }
+                        sum
+                    })
+                });
+                group.bench_with_input(BenchmarkId::new("spade_hierarchy", n), qs, |b, qs| {
+                    b.iter(|| {
+                        let mut sum = 0u64;
+                        for q in qs {
+                            let v = dth.nearest_neighbor(Point2::new(q[0], q[1]));
                             sum += v.map_or(0, |v| v.fix().index() as u64);
                         }
                         sum

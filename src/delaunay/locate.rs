@@ -13,9 +13,10 @@
 //! orientation of the kernel, so the answer is the one exact arithmetic gives: strictly
 //! inside a triangle, on the relative interior of an edge, on a vertex, or outside the hull.
 //!
-//! The walk starts at a hint: the triangle of the previous query ([`Locator`]), a triangle
-//! the caller names ([`Triangulation::locate_from`]), or without either the nearest of a
-//! sample of about ∛T triangles (jump and walk, [`Triangulation::locate`]).
+//! The walk starts at a hint: for repeated queries, a triangle from a coarse grid built once
+//! (or the previous query's triangle, [`Locator`]); a triangle the caller names
+//! ([`Triangulation::locate_from`]); or for a single query the nearest of a sample of about
+//! ∛T triangles (jump and walk, [`Triangulation::locate`]).
 //!
 //! # Which input point is nearest
 //!
@@ -64,8 +65,10 @@ enum Walked {
     Beyond(usize),
 }
 
-/// Repeated queries on one triangulation, each walk starting from where the previous one
-/// ended (queries close to each other are answered in a few steps).
+/// Repeated queries on one triangulation. Each walk starts from a coarse grid of start
+/// triangles (one per cell where there is one, about one cell per 8 triangles, built once
+/// in O(T) when the locator is made), or from where the previous walk ended when `q`'s
+/// cell has none: random queries walk a few triangles each, as queries near each other do.
 ///
 /// ```
 /// use wdm_crust::delaunay::Location;
@@ -86,18 +89,20 @@ enum Walked {
 pub struct Locator<'a> {
     tri: &'a Triangulation,
     last: usize,
+    grid: StartGrid,
 }
 
 impl<'a> Locator<'a> {
-    /// A locator whose first walk starts from a sampled triangle near the first query.
+    /// A locator for `tri`, with its grid of start triangles.
     pub fn new(tri: &'a Triangulation) -> Self {
         Locator {
             tri,
             last: usize::MAX,
+            grid: StartGrid::new(tri),
         }
     }
 
-    /// Where `q` lies; the walk starts at the previous query's triangle.
+    /// Where `q` lies; see [`Triangulation::locate`].
     ///
     /// # Errors
     /// A coordinate of `q` that is not finite or outside the exact envelope (as for input
@@ -121,34 +126,19 @@ impl<'a> Locator<'a> {
     /// As [`locate`](Self::locate).
     pub fn nearest(&mut self, q: [f64; 2]) -> Result<Option<u32>, Error> {
         check_query(q)?;
-        let tri = self.tri;
-        if tri.is_degenerate() {
-            return Ok(tri.nearest_by_scan(q).map(|p| tri.input_index(p)));
+        if self.tri.is_degenerate() {
+            return Ok(self.tri.nearest_by_scan(q));
         }
-        let walked = tri.walk(q, self.start(q));
+        let walked = self.tri.walk(q, self.start(q));
         self.remember(walked);
-        let outgoing = match walked {
-            Walked::Inside(t) => {
-                // The nearest corner, with the half-edge leaving it.
-                let mut best = 3 * t;
-                for e in 3 * t + 1..3 * t + 3 {
-                    let (p, b) = (tri.point_at(tri.org(e)), tri.point_at(tri.org(best)));
-                    if distance_order(q, p, b) == Sign::Negative {
-                        best = e;
-                    }
-                }
-                best
-            }
-            Walked::Beyond(e) => e,
-        };
-        Ok(Some(tri.input_index(tri.greedy_nearest(q, outgoing))))
+        Ok(Some(self.tri.nearest_after(q, walked)))
     }
 
     fn start(&self, q: [f64; 2]) -> usize {
-        if self.last < self.tri.triangle_count() {
-            self.last
-        } else {
-            self.tri.sampled_start(q)
+        match self.grid.start(q) {
+            Some(t) => t,
+            None if self.last < self.tri.triangle_count() => self.last,
+            None => self.tri.sampled_start(q),
         }
     }
 
@@ -157,6 +147,74 @@ impl<'a> Locator<'a> {
             Walked::Inside(t) => t,
             Walked::Beyond(e) => e / 3,
         };
+    }
+}
+
+/// Start triangles on a uniform grid over the points' bounding box: for each cell, a
+/// triangle with its first corner in the cell, if any. Only a start for the walk (floating
+/// point is fine here: no answer depends on it).
+#[derive(Debug, Clone, Default)]
+struct StartGrid {
+    origin: [f64; 2],
+    /// Cells per unit length, in x and y.
+    scale: [f64; 2],
+    side: usize,
+    cells: Vec<u32>,
+}
+
+impl StartGrid {
+    const EMPTY: u32 = u32::MAX;
+
+    fn new(tri: &Triangulation) -> StartGrid {
+        let count = tri.triangles.len();
+        if count < 64 {
+            return StartGrid::default();
+        }
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in &tri.points {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        let side = ((count / 8) as f64).sqrt().ceil() as usize;
+        let scale = [0, 1].map(|k| {
+            let span = hi[k] - lo[k];
+            if span > 0.0 && (side as f64 / span).is_finite() {
+                side as f64 / span
+            } else {
+                0.0
+            }
+        });
+        let mut grid = StartGrid {
+            origin: lo,
+            scale,
+            side,
+            cells: vec![Self::EMPTY; side * side],
+        };
+        for (t, corners) in tri.triangles.iter().enumerate() {
+            if let Some(cell) = grid.cell(tri.points[corners[0] as usize]) {
+                grid.cells[cell] = t as u32;
+            }
+        }
+        grid
+    }
+
+    fn cell(&self, q: [f64; 2]) -> Option<usize> {
+        if self.side == 0 {
+            return None;
+        }
+        let index = |k: usize| {
+            let x = (q[k] - self.origin[k]) * self.scale[k];
+            // Outside the box (or NaN-free overflow): clamp to the border cells.
+            (x.max(0.0) as usize).min(self.side - 1)
+        };
+        Some(index(1) * self.side + index(0))
+    }
+
+    fn start(&self, q: [f64; 2]) -> Option<usize> {
+        let t = *self.cells.get(self.cell(q)?)?;
+        (t != Self::EMPTY).then_some(t as usize)
     }
 }
 
@@ -190,7 +248,7 @@ impl Triangulation {
     /// # Ok::<(), wdm_crust::Error>(())
     /// ```
     pub fn locate(&self, q: [f64; 2]) -> Result<Location, Error> {
-        self.locator().locate(q)
+        self.locate_from(q, usize::MAX)
     }
 
     /// [`locate`](Self::locate) with the walk starting at triangle `hint` (an id out of
@@ -199,9 +257,16 @@ impl Triangulation {
     /// # Errors
     /// As [`locate`](Self::locate).
     pub fn locate_from(&self, q: [f64; 2], hint: usize) -> Result<Location, Error> {
-        let mut locator = self.locator();
-        locator.last = hint;
-        locator.locate(q)
+        check_query(q)?;
+        if self.is_degenerate() {
+            return Ok(self.locate_on_chain(q));
+        }
+        let start = if hint < self.triangles.len() {
+            hint
+        } else {
+            self.sampled_start(q)
+        };
+        Ok(self.classify(q, self.walk(q, start)))
     }
 
     /// One of the input points nearest to `q`, exactly (see [`Locator::nearest`]); `None`
@@ -218,10 +283,35 @@ impl Triangulation {
     /// # Ok::<(), wdm_crust::Error>(())
     /// ```
     pub fn nearest_point(&self, q: [f64; 2]) -> Result<Option<u32>, Error> {
-        self.locator().nearest(q)
+        check_query(q)?;
+        if self.is_degenerate() {
+            return Ok(self.nearest_by_scan(q));
+        }
+        let walked = self.walk(q, self.sampled_start(q));
+        Ok(Some(self.nearest_after(q, walked)))
     }
 
-    /// A [`Locator`] for repeated queries.
+    /// The nearest point (a caller index) by the greedy walk from a corner of where the
+    /// location walk ended.
+    fn nearest_after(&self, q: [f64; 2], walked: Walked) -> u32 {
+        let outgoing = match walked {
+            Walked::Inside(t) => {
+                // The nearest corner, with the half-edge leaving it.
+                let mut best = 3 * t;
+                for e in 3 * t + 1..3 * t + 3 {
+                    let (p, b) = (self.point_at(self.org(e)), self.point_at(self.org(best)));
+                    if distance_order(q, p, b) == Sign::Negative {
+                        best = e;
+                    }
+                }
+                best
+            }
+            Walked::Beyond(e) => e,
+        };
+        self.input_index(self.greedy_nearest(q, outgoing))
+    }
+
+    /// A [`Locator`] for repeated queries (its setup is one pass over the triangles).
     pub fn locator(&self) -> Locator<'_> {
         Locator::new(self)
     }
@@ -335,15 +425,17 @@ impl Triangulation {
         Location::Outside
     }
 
-    /// The nearest distinct point by exact comparison with every one (local index).
+    /// The nearest distinct point by exact comparison with every one (a caller index).
     fn nearest_by_scan(&self, q: [f64; 2]) -> Option<u32> {
-        (0..self.points.len() as u32).reduce(|best, p| {
-            if distance_order(q, self.point_at(p), self.point_at(best)) == Sign::Negative {
-                p
-            } else {
-                best
-            }
-        })
+        (0..self.points.len() as u32)
+            .reduce(|best, p| {
+                if distance_order(q, self.point_at(p), self.point_at(best)) == Sign::Negative {
+                    p
+                } else {
+                    best
+                }
+            })
+            .map(|p| self.input_index(p))
     }
 
     /// The greedy walk on the Delaunay graph from the origin of half-edge `outgoing` (local

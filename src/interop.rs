@@ -5,10 +5,9 @@
 //!   of `mint::Point2<f64>` (feature `mint`), in their order: point `i` of the result is item
 //!   `i` of the source, so every index in a result refers to the source.
 //! * With `geo-types`, a [`Reconstruction`](crate::Reconstruction)'s curves as
-//!   `geo_types` geometry: [`polygons_geo`](crate::Reconstruction::polygons_geo) (a
-//!   `MultiPolygon` with holes), [`chains_geo`](crate::Reconstruction::chains_geo) (a
-//!   `LineString` per open chain), [`medial_axis_geo`](crate::Reconstruction::medial_axis_geo)
-//!   (a `MultiLineString`), and [`Polygon::to_geo`](crate::reconstruct::Polygon::to_geo).
+//!   `geo_types` geometry: `Reconstruction::polygons_geo` (a `MultiPolygon` with holes),
+//!   `Reconstruction::chains_geo` (a `LineString` per open chain),
+//!   `Reconstruction::medial_axis_geo` (a `MultiLineString`), and `Polygon::to_geo`.
 //!
 //! Without these features the module holds only [`ToPoints`] for `[[f64; 2]]`, and the
 //! engine compiles without the extra crates.

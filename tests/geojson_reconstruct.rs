@@ -30,7 +30,11 @@ fn position(v: &Value) -> [f64; 2] {
 }
 
 fn positions(v: &Value) -> Vec<[f64; 2]> {
-    v.as_array().expect("positions").iter().map(position).collect()
+    v.as_array()
+        .expect("positions")
+        .iter()
+        .map(position)
+        .collect()
 }
 
 fn indices(v: &Value) -> Vec<u32> {
@@ -84,8 +88,14 @@ fn segments_meet(a: [[f64; 2]; 2], b: [[f64; 2]; 2]) -> bool {
         Orientation::Clockwise => -1,
         Orientation::Collinear => 0,
     };
-    let (o1, o2) = (side(orient2d(a[0], a[1], b[0])), side(orient2d(a[0], a[1], b[1])));
-    let (o3, o4) = (side(orient2d(b[0], b[1], a[0])), side(orient2d(b[0], b[1], a[1])));
+    let (o1, o2) = (
+        side(orient2d(a[0], a[1], b[0])),
+        side(orient2d(a[0], a[1], b[1])),
+    );
+    let (o3, o4) = (
+        side(orient2d(b[0], b[1], a[0])),
+        side(orient2d(b[0], b[1], a[1])),
+    );
     // With overlapping boxes, collinear segments meet.
     o1 * o2 <= 0 && o3 * o4 <= 0
 }
@@ -145,10 +155,16 @@ fn check_polygon_rings(rings: &[Vec<[f64; 2]>]) {
         }
     }
     for (h, hole) in rings.iter().enumerate().skip(1) {
-        assert!(strictly_inside(&rings[0], hole[0]), "hole {h} is inside the exterior");
+        assert!(
+            strictly_inside(&rings[0], hole[0]),
+            "hole {h} is inside the exterior"
+        );
         for (g, other) in rings.iter().enumerate().skip(1) {
             if g != h {
-                assert!(!strictly_inside(other, hole[0]), "hole {h} is inside hole {g}");
+                assert!(
+                    !strictly_inside(other, hole[0]),
+                    "hole {h} is inside hole {g}"
+                );
             }
         }
     }
@@ -187,13 +203,7 @@ fn check(rec: &Reconstruction, points: &[[f64; 2]]) -> Value {
                     .map(positions)
                     .collect();
                 let mut named = vec![indices(&properties["points"])];
-                named.extend(
-                    properties["holes"]
-                        .as_array()
-                        .unwrap()
-                        .iter()
-                        .map(indices),
-                );
+                named.extend(properties["holes"].as_array().unwrap().iter().map(indices));
                 assert_eq!(named.len(), rings.len());
                 for (ring, idx) in rings.iter().zip(&named) {
                     assert_eq!(ring.len(), idx.len() + 1);
@@ -312,7 +322,12 @@ fn nested_three_levels_and_neighbours() {
     let json = check(&rec, &points);
     assert_eq!(
         shape_summary(&json),
-        vec![(50, vec![]), (60, vec![30]), (80, vec![40]), (160, vec![120])]
+        vec![
+            (50, vec![]),
+            (60, vec![30]),
+            (80, vec![40]),
+            (160, vec![120])
+        ]
     );
 }
 
@@ -358,8 +373,8 @@ fn held_out_samples_of_the_svg_ground_truth() {
     assert!(files.len() >= 10, "the SVG drawings are there");
     for (k, path) in files.iter().enumerate() {
         let text = std::fs::read_to_string(path).unwrap();
-        let curves: Vec<DenseCurve> = svg_dense_curves(&text, 4000)
-            .unwrap_or_else(|e| panic!("{}: {e:?}", path.display()));
+        let curves: Vec<DenseCurve> =
+            svg_dense_curves(&text, 4000).unwrap_or_else(|e| panic!("{}: {e:?}", path.display()));
         let set = CurveSet::new(curves);
         let mut sample = set.eps_sample(0.3, &mut rng).randomized(&mut rng);
         if k % 3 == 1 {
@@ -392,7 +407,11 @@ fn every_real_point_file() {
         }
     }
     files.sort();
-    assert!(files.len() >= 25, "the real point sets are there: {}", files.len());
+    assert!(
+        files.len() >= 25,
+        "the real point sets are there: {}",
+        files.len()
+    );
     for path in files {
         let points = wdm_crust::io::read_points_from_path(&path)
             .unwrap_or_else(|e| panic!("{}: {e}", path.display()));

@@ -46,7 +46,10 @@ fn check_query(tri: &Triangulation, q: [f64; 2], location: Location, nearest: Op
         Location::Triangle(t) => {
             let [a, b, c] = tri.triangle_points(t);
             for (u, v) in [(a, b), (b, c), (c, a)] {
-                assert!(orient(u, v, q).is_positive(), "{q:?} not strictly inside {t}");
+                assert!(
+                    orient(u, v, q).is_positive(),
+                    "{q:?} not strictly inside {t}"
+                );
             }
         }
         Location::Edge(e) => {
@@ -81,7 +84,10 @@ fn check_query(tri: &Triangulation, q: [f64; 2], location: Location, nearest: Op
         }
     }
     if coincident.is_some() {
-        assert!(matches!(location, Location::Vertex(_)), "{q:?}: {location:?}");
+        assert!(
+            matches!(location, Location::Vertex(_)),
+            "{q:?}: {location:?}"
+        );
     }
     match nearest {
         None => assert_eq!(n, 0),
@@ -200,7 +206,9 @@ fn clustered_points() {
 #[test]
 fn collinear_and_tiny_inputs() {
     let mut rng = Rng::new(4);
-    let line: Vec<[f64; 2]> = (0..20).map(|k| [k as f64 * 0.5, k as f64 * -0.25]).collect();
+    let line: Vec<[f64; 2]> = (0..20)
+        .map(|k| [k as f64 * 0.5, k as f64 * -0.25])
+        .collect();
     let mut shuffled = line.clone();
     rng.shuffle(&mut shuffled);
     check_all(&shuffled, &mut rng);

@@ -510,10 +510,16 @@ mod tests {
         for (i, &p) in pts.iter().enumerate() {
             assert_eq!(tri.locate(p).unwrap(), Location::Vertex(i as u32));
             for hint in 0..3 {
-                assert_eq!(tri.locate_from(p, hint).unwrap(), Location::Vertex(i as u32));
+                assert_eq!(
+                    tri.locate_from(p, hint).unwrap(),
+                    Location::Vertex(i as u32)
+                );
             }
         }
-        assert!(matches!(tri.locate([0.5, 0.1]).unwrap(), Location::Triangle(_)));
+        assert!(matches!(
+            tri.locate([0.5, 0.1]).unwrap(),
+            Location::Triangle(_)
+        ));
         assert_eq!(tri.locate([1.0, 0.0]).unwrap(), {
             let e = (0..6)
                 .find(|&e| {
@@ -534,7 +540,10 @@ mod tests {
         let tri = triangulate(&line).unwrap();
         assert_eq!(tri.locate([1.0, 1.0]).unwrap(), Location::Vertex(2));
         let on = tri.locate([0.5, 0.5]).unwrap();
-        assert!(on == Location::OnChain([0, 2]) || on == Location::OnChain([2, 0]), "{on:?}");
+        assert!(
+            on == Location::OnChain([0, 2]) || on == Location::OnChain([2, 0]),
+            "{on:?}"
+        );
         assert_eq!(tri.locate([3.0, 3.0]).unwrap(), Location::Outside);
         assert_eq!(tri.locate([0.5, 0.6]).unwrap(), Location::Outside);
         assert_eq!(tri.nearest_point([1.9, 1.0]).unwrap(), Some(2));
@@ -549,7 +558,12 @@ mod tests {
     #[test]
     fn bad_queries_are_errors() {
         let tri = triangulate(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]).unwrap();
-        for q in [[f64::NAN, 0.0], [0.0, f64::INFINITY], [1e300, 0.0], [1e-300, 0.0]] {
+        for q in [
+            [f64::NAN, 0.0],
+            [0.0, f64::INFINITY],
+            [1e300, 0.0],
+            [1e-300, 0.0],
+        ] {
             assert!(tri.locate(q).is_err(), "{q:?}");
             assert!(tri.nearest_point(q).is_err(), "{q:?}");
         }

@@ -202,10 +202,7 @@ pub fn write_reconstruction_geojson<W: Write>(rec: &Reconstruction, out: W) -> i
             kind: "chain",
             points: &chain.points,
         };
-        collection.feature(
-            &Geometry::LineString(rec.curve_coords(chain)),
-            &properties,
-        )?;
+        collection.feature(&Geometry::LineString(rec.curve_coords(chain)), &properties)?;
     }
     let axis = rec.medial_axis();
     let finite = |p: &[f64; 2]| p[0].is_finite() && p[1].is_finite();
@@ -257,7 +254,7 @@ mod tests {
             let mut w = FeatureCollectionWriter::begin(&mut out).unwrap();
             let coords = vec![
                 [0.1, -0.0],
-                [1e-300, 123456789.123456789],
+                [1e-300, 123_456_789.123_456_79],
                 [f64::MAX / 1e100, 2f64.powi(-142)],
             ];
             w.feature(

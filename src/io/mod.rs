@@ -17,11 +17,11 @@ pub mod output;
 pub mod parse;
 pub mod svg;
 
+pub use geojson::write_reconstruction_geojson;
 pub use output::{
     write_reconstruction_json, write_reconstruction_text, write_triangulation_json,
     write_triangulation_text, write_voronoi_json, write_voronoi_text,
 };
-pub use geojson::write_reconstruction_geojson;
 pub use parse::{
     detect_format, format_from_path, read_points, read_points_from_path, Axis, InputFormat,
     ParseError, ParseErrorKind,

@@ -41,7 +41,7 @@ use crate::kernel::{orient, Sign};
 /// Rings are not closed: the first point is not repeated at the end (the GeoJSON writer and
 /// the `geo-types` conversion close them). Each ring starts at its smallest index; the
 /// exterior runs counterclockwise, each hole clockwise (the orientation is decided exactly).
-/// A closed [`Curve`](super::Curve) is counterclockwise, so an exterior ring lists the same
+/// A closed [`Curve`] is counterclockwise, so an exterior ring lists the same
 /// points as its curve in the same order, and a hole ring lists its curve's points
 /// backwards from the same first point.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -86,7 +86,10 @@ impl Polygon {
 
     /// The coordinates of every hole ring, in ring order (not closed).
     pub fn hole_coords(&self, rec: &Reconstruction) -> Vec<Vec<[f64; 2]>> {
-        self.holes.iter().map(|ring| rec.ring_coords(ring)).collect()
+        self.holes
+            .iter()
+            .map(|ring| rec.ring_coords(ring))
+            .collect()
     }
 }
 
@@ -153,7 +156,10 @@ impl Reconstruction {
 ///
 /// Polygons come in the order of their exterior loops in `loops`, holes in the order of
 /// theirs.
-pub(crate) fn nest_into_polygons(loops: &[&[u32]], point: impl Fn(u32) -> [f64; 2]) -> Vec<Polygon> {
+pub(crate) fn nest_into_polygons(
+    loops: &[&[u32]],
+    point: impl Fn(u32) -> [f64; 2],
+) -> Vec<Polygon> {
     let rings: Vec<Ring> = loops
         .iter()
         .map(|indices| Ring::new(indices.iter().map(|&i| point(i)).collect()))
@@ -438,7 +444,13 @@ mod tests {
 
     #[test]
     fn side_of_is_exact_on_edges_vertices_and_the_ray_line() {
-        let ring = Ring::new(vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [1.0, 1.0], [0.0, 2.0]]);
+        let ring = Ring::new(vec![
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 2.0],
+            [1.0, 1.0],
+            [0.0, 2.0],
+        ]);
         assert_eq!(ring.side_of([1.0, 0.5]), RingSide::Inside);
         assert_eq!(ring.side_of([1.0, 1.5]), RingSide::Outside); // in the notch
         assert_eq!(ring.side_of([1.0, 1.0]), RingSide::Boundary); // the notch vertex
@@ -448,7 +460,7 @@ mod tests {
         assert_eq!(ring.side_of([0.5, 1.0]), RingSide::Inside);
         assert_eq!(ring.side_of([-1.0, 0.0]), RingSide::Outside); // ray along the bottom edge
         assert_eq!(ring.side_of([-1.0, 2.0]), RingSide::Outside); // ray through both tips
-        // A point one ulp off an edge of slope 1.
+                                                                  // A point one ulp off an edge of slope 1.
         let tri = Ring::new(vec![[0.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
         let x: f64 = 0.3;
         let above = f64::from_bits(x.to_bits() + 1);
@@ -462,7 +474,11 @@ mod tests {
         // A sliver far from the origin: the float shoelace sum is all rounding.
         let base = 1e15;
         // The third point is one ulp above the line y = x: counterclockwise.
-        let ring = vec![[base, base], [base + 2.0, base + 2.0], [base + 1.0, base + 1.125]];
+        let ring = vec![
+            [base, base],
+            [base + 2.0, base + 2.0],
+            [base + 1.0, base + 1.125],
+        ];
         let shoelace: f64 = (0..3)
             .map(|i| {
                 let (a, b) = (ring[i], ring[(i + 1) % 3]);

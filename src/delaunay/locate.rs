@@ -20,8 +20,9 @@
 //!
 //! # Which input point is nearest
 //!
-//! A greedy walk on the Delaunay graph: from a corner of the located triangle, move to a
-//! neighbour strictly closer to the query until none is. If `v` is not a nearest point,
+//! A greedy walk on the Delaunay graph: from a start point (the previous answer, or a corner
+//! of a start triangle), move to the neighbour nearest the query while it is strictly
+//! nearer than where the walk stands. If `v` is not a nearest point,
 //! the segment from `v` to the query leaves `v`'s Voronoi cell through an edge or a vertex
 //! of the diagram at some point `x`; the site `w` of a cell on the other side (one at
 //! distance `|x − v|` from `x`, so a Delaunay neighbour of `v`: across a Voronoi edge, or
@@ -67,8 +68,8 @@ enum Walked {
 
 /// Repeated queries on one triangulation. Each walk starts from a coarse grid of start
 /// triangles (one per cell where there is one, about one cell per 8 triangles, built once
-/// in O(T) when the locator is made), or from where the previous walk ended when `q`'s
-/// cell has none: random queries walk a few triangles each, as queries near each other do.
+/// in O(T) when the locator is made) or from where the previous walk ended, whichever is
+/// nearer: random queries walk a few triangles each, as queries near each other do.
 ///
 /// ```
 /// use wdm_crust::delaunay::Location;
@@ -88,7 +89,10 @@ enum Walked {
 #[derive(Debug, Clone)]
 pub struct Locator<'a> {
     tri: &'a Triangulation,
+    /// The triangle the last location walk ended in.
     last: usize,
+    /// A half-edge leaving the last nearest point found.
+    last_nearest: usize,
     grid: StartGrid,
 }
 
@@ -98,6 +102,7 @@ impl<'a> Locator<'a> {
         Locator {
             tri,
             last: usize::MAX,
+            last_nearest: usize::MAX,
             grid: StartGrid::new(tri),
         }
     }
@@ -129,16 +134,30 @@ impl<'a> Locator<'a> {
         if self.tri.is_degenerate() {
             return Ok(self.tri.nearest_by_scan(q));
         }
-        let walked = self.tri.walk(q, self.start(q));
-        self.remember(walked);
-        Ok(Some(self.tri.nearest_after(q, walked)))
+        // The greedy walk works from any point: from the nearer (in floating point, only a
+        // start) of the last answer and the grid's start.
+        let tri = self.tri;
+        let grid = self.grid.start(q).map(|t| 3 * t);
+        let last = (self.last_nearest < tri.halfedges.len()).then_some(self.last_nearest);
+        let start = match (grid, last) {
+            (Some(g), Some(l)) => tri.nearer_start(q, g, l),
+            (Some(e), None) | (None, Some(e)) => e,
+            (None, None) => 3 * tri.sampled_start(q),
+        };
+        let (v, outgoing) = tri.greedy_nearest(q, start);
+        self.last_nearest = outgoing;
+        Ok(Some(tri.input_index(v)))
     }
 
+    /// The start of a location walk: the grid's triangle or the last one, whichever has its
+    /// first corner nearer (in floating point: only a start).
     fn start(&self, q: [f64; 2]) -> usize {
-        match self.grid.start(q) {
-            Some(t) => t,
-            None if self.last < self.tri.triangle_count() => self.last,
-            None => self.tri.sampled_start(q),
+        let tri = self.tri;
+        let last = (self.last < tri.triangle_count()).then_some(self.last);
+        match (self.grid.start(q), last) {
+            (Some(g), Some(l)) => tri.nearer_start(q, 3 * g, 3 * l) / 3,
+            (Some(t), None) | (None, Some(t)) => t,
+            (None, None) => tri.sampled_start(q),
         }
     }
 
@@ -287,28 +306,21 @@ impl Triangulation {
         if self.is_degenerate() {
             return Ok(self.nearest_by_scan(q));
         }
-        let walked = self.walk(q, self.sampled_start(q));
-        Ok(Some(self.nearest_after(q, walked)))
+        let (v, _) = self.greedy_nearest(q, 3 * self.sampled_start(q));
+        Ok(Some(self.input_index(v)))
     }
 
-    /// The nearest point (a caller index) by the greedy walk from a corner of where the
-    /// location walk ended.
-    fn nearest_after(&self, q: [f64; 2], walked: Walked) -> u32 {
-        let outgoing = match walked {
-            Walked::Inside(t) => {
-                // The nearest corner, with the half-edge leaving it.
-                let mut best = 3 * t;
-                for e in 3 * t + 1..3 * t + 3 {
-                    let (p, b) = (self.point_at(self.org(e)), self.point_at(self.org(best)));
-                    if distance_order(q, p, b) == Sign::Negative {
-                        best = e;
-                    }
-                }
-                best
-            }
-            Walked::Beyond(e) => e,
+    /// Of the half-edges `a` and `b`, the one whose origin is nearer `q` in floating point.
+    fn nearer_start(&self, q: [f64; 2], a: usize, b: usize) -> usize {
+        let distance = |e: usize| {
+            let p = self.point_at(self.org(e));
+            (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)
         };
-        self.input_index(self.greedy_nearest(q, outgoing))
+        if distance(b) < distance(a) {
+            b
+        } else {
+            a
+        }
     }
 
     /// A [`Locator`] for repeated queries (its setup is one pass over the triangles).
@@ -438,9 +450,9 @@ impl Triangulation {
             .map(|p| self.input_index(p))
     }
 
-    /// The greedy walk on the Delaunay graph from the origin of half-edge `outgoing` (local
-    /// index of the point reached).
-    fn greedy_nearest(&self, q: [f64; 2], mut outgoing: usize) -> u32 {
+    /// The greedy walk on the Delaunay graph from the origin of half-edge `outgoing`: the
+    /// local index of the point reached, with a half-edge leaving it.
+    fn greedy_nearest(&self, q: [f64; 2], mut outgoing: usize) -> (u32, usize) {
         loop {
             let v = self.org(outgoing);
             let mut best = (v, outgoing);
@@ -450,7 +462,7 @@ impl Triangulation {
                 }
             });
             if best.0 == v {
-                return v;
+                return best;
             }
             outgoing = best.1;
         }

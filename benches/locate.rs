@@ -22,7 +22,10 @@ mod common;
 
 use common::{PointSet, Rng};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use spade::{DelaunayTriangulation, HierarchyHintGenerator, Point2, Triangulation as _};
+use spade::{
+    DelaunayTriangulation, HierarchyHintGenerator, HintGenerator, Point2, PositionInTriangulation,
+    Triangulation as _,
+};
 
 /// spade with its hierarchy of hint triangulations (its fast option for scattered queries).
 type SpadeHierarchy = DelaunayTriangulation<Point2<f64>, (), (), (), HierarchyHintGenerator<f64>>;
@@ -54,6 +57,35 @@ fn queries(points: &[[f64; 2]], seed: u64) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
     (random, coherent)
 }
 
+/// How many of `qs` spade locates in the closed hull.
+fn spade_inside<L: HintGenerator<f64>>(
+    dt: &DelaunayTriangulation<Point2<f64>, (), (), (), L>,
+    qs: &[[f64; 2]],
+) -> usize {
+    qs.iter()
+        .filter(|q| {
+            !matches!(
+                dt.locate(Point2::new(q[0], q[1])),
+                PositionInTriangulation::OutsideOfConvexHull(_)
+                    | PositionInTriangulation::NoTriangulation
+            )
+        })
+        .count()
+}
+
+/// The sum of the indices of spade's nearest vertices to `qs` (something to return).
+fn spade_nearest<L: HintGenerator<f64>>(
+    dt: &DelaunayTriangulation<Point2<f64>, (), (), (), L>,
+    qs: &[[f64; 2]],
+) -> u64 {
+    qs.iter()
+        .map(|q| {
+            dt.nearest_neighbor(Point2::new(q[0], q[1]))
+                .map_or(0, |v| v.fix().index() as u64)
+        })
+        .sum()
+}
+
 fn bench_locate(c: &mut Criterion) {
     for set in [PointSet::Uniform, PointSet::Clusters] {
         for n in [10_000, 100_000, 1_000_000] {
@@ -72,15 +104,7 @@ fn bench_locate(c: &mut Criterion) {
                 .iter()
                 .filter(|&&q| tri.locate(q).unwrap() != wdm_crust::delaunay::Location::Outside)
                 .count();
-            let inside_spade = random
-                .iter()
-                .filter(|q| {
-                    !matches!(
-                        dth.locate(Point2::new(q[0], q[1])),
-                        spade::PositionInTriangulation::OutsideOfConvexHull(_)
-                    )
-                })
-                .count();
+            let inside_spade = spade_inside(&dth, &random);
             assert_eq!(inside_wdm, inside_spade, "{} {n}", set.name());
             for (order, qs) in [("random", &random), ("coherent", &coherent)] {
                 let mut group = c.benchmark_group(format!("locate/{}/{order}", set.name()));
@@ -102,33 +126,11 @@ fn bench_locate(c: &mut Criterion) {
                 let slow = order == "random" && n >= 100_000;
                 if !slow {
                     group.bench_with_input(BenchmarkId::new("spade", n), qs, |b, qs| {
-                        b.iter(|| {
-                            let mut inside = 0usize;
-                            for q in qs {
-                                let at = dt.locate(Point2::new(q[0], q[1]));
-                                inside += usize::from(!matches!(
-                                    at,
-                                    spade::PositionInTriangulation::OutsideOfConvexHull(_)
-                                        | spade::PositionInTriangulation::NoTriangulation
-                                ));
-                            }
-                            inside
-                        })
+                        b.iter(|| spade_inside(&dt, qs))
                     });
                 }
                 group.bench_with_input(BenchmarkId::new("spade_hierarchy", n), qs, |b, qs| {
-                    b.iter(|| {
-                        let mut inside = 0usize;
-                        for q in qs {
-                            let at = dth.locate(Point2::new(q[0], q[1]));
-                            inside += usize::from(!matches!(
-                                at,
-                                spade::PositionInTriangulation::OutsideOfConvexHull(_)
-                                    | spade::PositionInTriangulation::NoTriangulation
-                            ));
-                        }
-                        inside
-                    })
+                    b.iter(|| spade_inside(&dth, qs))
                 });
                 group.finish();
                 let mut group = c.benchmark_group(format!("nearest/{}/{order}", set.name()));
@@ -146,25 +148,11 @@ fn bench_locate(c: &mut Criterion) {
                 });
                 if !slow {
                     group.bench_with_input(BenchmarkId::new("spade", n), qs, |b, qs| {
-                        b.iter(|| {
-                            let mut sum = 0u64;
-                            for q in qs {
-                                let v = dt.nearest_neighbor(Point2::new(q[0], q[1]));
-                                sum += v.map_or(0, |v| v.fix().index() as u64);
-                            }
-                            sum
-                        })
+                        b.iter(|| spade_nearest(&dt, qs))
                     });
                 }
                 group.bench_with_input(BenchmarkId::new("spade_hierarchy", n), qs, |b, qs| {
-                    b.iter(|| {
-                        let mut sum = 0u64;
-                        for q in qs {
-                            let v = dth.nearest_neighbor(Point2::new(q[0], q[1]));
-                            sum += v.map_or(0, |v| v.fix().index() as u64);
-                        }
-                        sum
-                    })
+                    b.iter(|| spade_nearest(&dth, qs))
                 });
                 group.finish();
             }

@@ -31,7 +31,6 @@
 
 use std::io::{self, BufWriter, Write};
 
-use serde::ser::{SerializeMap, Serializer};
 use serde::Serialize;
 
 use crate::Reconstruction;
@@ -39,39 +38,16 @@ use crate::Reconstruction;
 /// Size of the buffer a writer puts in front of its output.
 const BUFFER_BYTES: usize = 1 << 16;
 
-/// A GeoJSON geometry over `[x, y]` positions. Rings of a polygon must be closed already
+/// A GeoJSON geometry over `[x, y]` positions, serialized as
+/// `{"type": "<variant>", "coordinates": ...}`. Rings of a polygon must be closed already
 /// (see [`closed_ring`]).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "type", content = "coordinates")]
 pub(crate) enum Geometry {
     Polygon(Vec<Vec<[f64; 2]>>),
     LineString(Vec<[f64; 2]>),
     MultiLineString(Vec<Vec<[f64; 2]>>),
     MultiPoint(Vec<[f64; 2]>),
-}
-
-impl Serialize for Geometry {
-    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        let mut map = serializer.serialize_map(Some(2))?;
-        match self {
-            Geometry::Polygon(rings) => {
-                map.serialize_entry("type", "Polygon")?;
-                map.serialize_entry("coordinates", rings)?;
-            }
-            Geometry::LineString(line) => {
-                map.serialize_entry("type", "LineString")?;
-                map.serialize_entry("coordinates", line)?;
-            }
-            Geometry::MultiLineString(lines) => {
-                map.serialize_entry("type", "MultiLineString")?;
-                map.serialize_entry("coordinates", lines)?;
-            }
-            Geometry::MultiPoint(points) => {
-                map.serialize_entry("type", "MultiPoint")?;
-                map.serialize_entry("coordinates", points)?;
-            }
-        }
-        map.end()
-    }
 }
 
 /// One `Feature` with its geometry and properties.

@@ -67,9 +67,9 @@ enum Walked {
 }
 
 /// Repeated queries on one triangulation. Each walk starts from a coarse grid of start
-/// triangles (one per cell where there is one, about one cell per 8 triangles, built once
-/// in O(T) when the locator is made) or from where the previous walk ended, whichever is
-/// nearer: random queries walk a few triangles each, as queries near each other do.
+/// triangles (about one cell per 8 triangles, built once in O(T) when the locator is made)
+/// or from where the previous walk ended, whichever is nearer: random queries walk a few
+/// triangles each, as queries near each other do.
 ///
 /// ```
 /// use wdm_crust::delaunay::Location;
@@ -170,8 +170,8 @@ impl<'a> Locator<'a> {
 }
 
 /// Start triangles on a uniform grid over the points' bounding box: for each cell, a
-/// triangle with its first corner in the cell, if any. Only a start for the walk (floating
-/// point is fine here: no answer depends on it).
+/// triangle whose centroid lies in it, or else one of the nearest such cell. Only a start
+/// for the walk (floating point is fine here: no answer depends on it).
 #[derive(Debug, Clone, Default)]
 struct StartGrid {
     origin: [f64; 2],
@@ -211,9 +211,33 @@ impl StartGrid {
             side,
             cells: vec![Self::EMPTY; side * side],
         };
+        // Each triangle in the cell of its centroid (so large triangles over empty space
+        // land there too), then every empty cell takes a triangle of the nearest filled cell
+        // (a breadth-first fill over the grid), so that no query starts far away.
+        let mut queue = std::collections::VecDeque::new();
         for (t, corners) in tri.triangles.iter().enumerate() {
-            if let Some(cell) = grid.cell(tri.points[corners[0] as usize]) {
+            let [a, b, c] = corners.map(|p| tri.points[p as usize]);
+            let centroid = [0, 1].map(|k| a[k] / 3.0 + b[k] / 3.0 + c[k] / 3.0);
+            if let Some(cell) = grid.cell(centroid) {
+                if grid.cells[cell] == Self::EMPTY {
+                    queue.push_back(cell);
+                }
                 grid.cells[cell] = t as u32;
+            }
+        }
+        while let Some(cell) = queue.pop_front() {
+            let (x, y) = (cell % side, cell / side);
+            let neighbours = [
+                (x > 0).then(|| cell - 1),
+                (x + 1 < side).then(|| cell + 1),
+                (y > 0).then(|| cell - side),
+                (y + 1 < side).then(|| cell + side),
+            ];
+            for next in neighbours.into_iter().flatten() {
+                if grid.cells[next] == Self::EMPTY {
+                    grid.cells[next] = grid.cells[cell];
+                    queue.push_back(next);
+                }
             }
         }
         grid
@@ -468,21 +492,20 @@ impl Triangulation {
         }
     }
 
-    /// Calls `visit(w, e)` for the neighbours `w` of the origin `v` of `outgoing`, with a
-    /// half-edge `e` leaving `w` (some neighbours more than once).
+    /// Calls `visit(w, e)` once for each neighbour `w` of the origin `v` of `outgoing`, with
+    /// a half-edge `e` leaving `w`.
     fn for_each_neighbour(&self, outgoing: usize, mut visit: impl FnMut(u32, usize)) {
-        // The corners of a triangle at v: next(e) leaves dest(e), prev(e) leaves its origin.
-        let mut visit_triangle = |e: usize| {
-            visit(self.dest(e), next_in_triangle(e));
-            let p = prev_in_triangle(e);
-            visit(self.org(p), p);
-        };
-        // Counterclockwise around v: twin(prev(e)) leaves v again.
+        // Every half-edge e leaving v names the neighbour dest(e), left by next(e).
         let mut e = outgoing;
         loop {
-            visit_triangle(e);
-            let twin = self.halfedges[prev_in_triangle(e)];
+            visit(self.dest(e), next_in_triangle(e));
+            // Counterclockwise around v: twin(prev(e)) leaves v again.
+            let p = prev_in_triangle(e);
+            let twin = self.halfedges[p];
             if twin == NO_TWIN {
+                // v is on the hull: prev(e) comes from the last neighbour, which no half-edge
+                // leaving v reaches.
+                visit(self.org(p), p);
                 break;
             }
             e = twin as usize;
@@ -490,7 +513,7 @@ impl Triangulation {
                 return;
             }
         }
-        // v is on the hull: the rest of its fan, clockwise.
+        // The rest of the fan, clockwise from `outgoing`.
         let mut e = outgoing;
         loop {
             let twin = self.halfedges[e];
@@ -498,7 +521,7 @@ impl Triangulation {
                 return;
             }
             e = next_in_triangle(twin as usize);
-            visit_triangle(e);
+            visit(self.dest(e), next_in_triangle(e));
         }
     }
 }

@@ -15,6 +15,7 @@
 
 pub mod delaunay;
 pub mod error;
+pub mod interop;
 #[cfg(feature = "cli")]
 pub mod io;
 mod kernel;

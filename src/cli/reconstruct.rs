@@ -1,11 +1,12 @@
 //! `wdm-crust reconstruct`: the curves through a point file (WDM_CRUST, or the crust and
-//! NN-crust baselines) and the medial axis, as JSON, an edge list or an SVG picture.
+//! NN-crust baselines) and the medial axis, as JSON, an edge list, an SVG picture or GeoJSON.
 
 use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
 use wdm_crust::io::{
-    write_reconstruction_json, write_reconstruction_svg, write_reconstruction_text, SvgOptions,
+    write_reconstruction_geojson, write_reconstruction_json, write_reconstruction_svg,
+    write_reconstruction_text, SvgOptions,
 };
 use wdm_crust::reconstruct::{Algorithm, MedialAxisMode, Options, Phase};
 
@@ -22,6 +23,7 @@ Examples:
   wdm-crust reconstruct points.txt -o picture.svg --show delaunay,labels
   wdm-crust reconstruct scan-pixels.txt -o picture.svg --y-down
   wdm-crust reconstruct points.txt --algorithm nn-crust --format text
+  wdm-crust reconstruct points.txt -o shapes.geojson
 
 JSON output (one line):
   {\"algorithm\": \"wdm\", \"points\": N, \"edges\": [[i, j], ...],
@@ -37,11 +39,20 @@ JSON output (one line):
 
 Text output: one reconstructed edge `i j` per line, nothing else.
 
+GeoJSON output (RFC 7946): a FeatureCollection, one feature per line: a Polygon per outer
+closed curve (exterior counterclockwise, the closed curves directly inside it as clockwise
+holes; a curve inside a hole starts a new polygon), properties {\"kind\": \"curve\",
+\"points\": [...], \"holes\": [[...], ...]}; a LineString per open chain {\"kind\": \"chain\",
+\"points\": [...]}; one MultiLineString for the medial axis {\"kind\": \"medial_axis\"}; a
+MultiPoint of the unassigned points {\"kind\": \"unassigned\", \"points\": [...]} (left out
+when there are none). Rings are closed; coordinates are the input's, written so that they
+read back exactly.
+
 SVG output: the points, the curves (closed red, open purple), the medial axis (green), the
 unassigned points (grey rings) and a legend, y axis up (--y-down: down, for image
 coordinates); --show adds faint underlays. The picture is in pixels whatever the data's
-units, so it renders at any extent. Without --format, an OUTPUT ending in .svg gets SVG and
-anything else JSON.";
+units, so it renders at any extent. Without --format, an OUTPUT ending in .svg gets SVG,
+one ending in .geojson GeoJSON, and anything else JSON.";
 
 /// Output formats of `reconstruct`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -52,6 +63,8 @@ pub enum ReconstructFormat {
     Svg,
     /// One `i j` edge per line.
     Text,
+    /// GeoJSON: polygons with holes, open chains, medial axis, unassigned points.
+    Geojson,
 }
 
 /// The reconstruction algorithms.
@@ -115,7 +128,7 @@ pub struct ReconstructArgs {
     #[arg(long, value_enum, default_value_t = AlgorithmArg::Wdm)]
     algorithm: AlgorithmArg,
 
-    /// Output format [default: svg if OUTPUT ends in .svg, else json].
+    /// Output format [default: svg if OUTPUT ends in .svg, geojson if in .geojson, else json].
     #[arg(long, value_enum)]
     format: Option<ReconstructFormat>,
 
@@ -158,13 +171,12 @@ impl ReconstructArgs {
     /// The explicit format, or the one implied by the output file name.
     fn format(&self) -> ReconstructFormat {
         self.format.unwrap_or_else(|| {
-            let is_svg = self
-                .output
-                .as_deref()
-                .and_then(Path::extension)
-                .is_some_and(|ext| ext.eq_ignore_ascii_case("svg"));
-            if is_svg {
+            let extension = self.output.as_deref().and_then(Path::extension);
+            let is = |name: &str| extension.is_some_and(|ext| ext.eq_ignore_ascii_case(name));
+            if is("svg") {
                 ReconstructFormat::Svg
+            } else if is("geojson") {
+                ReconstructFormat::Geojson
             } else {
                 ReconstructFormat::Json
             }
@@ -235,6 +247,7 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
         ReconstructFormat::Json => write_reconstruction_json(&rec, out),
         ReconstructFormat::Text => write_reconstruction_text(&rec, out),
         ReconstructFormat::Svg => write_reconstruction_svg(&rec, &svg, out),
+        ReconstructFormat::Geojson => write_reconstruction_geojson(&rec, out),
     })
 }
 

@@ -13,11 +13,13 @@
 //! and a reconstruction translates its edges once, at the end.
 
 mod divide_conquer;
+pub mod locate;
 mod mesh;
 mod triangulation;
 mod validate;
 mod zorder;
 
+pub use locate::{Location, Locator};
 pub use triangulation::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
 pub use validate::ValidationError;
 

@@ -9,13 +9,17 @@
 //!   [`Reconstruction`](crate::Reconstruction) (see [`output`] for the formats).
 //! * [`write_reconstruction_svg`] draws a reconstruction as an SVG picture (see [`svg`]).
 //! * [`write_voronoi_geojson`] writes the Voronoi cells clipped to a box as GeoJSON polygons.
+//! * [`write_reconstruction_geojson`] writes a reconstruction as GeoJSON: polygons with
+//!   holes, open chains, the medial axis, the unassigned points (see [`geojson`]).
 
+pub mod geojson;
 mod lines;
 pub mod output;
 pub mod parse;
 pub mod svg;
 mod voronoi_geojson;
 
+pub use geojson::write_reconstruction_geojson;
 pub use output::{
     write_reconstruction_json, write_reconstruction_text, write_triangulation_json,
     write_triangulation_text, write_voronoi_json, write_voronoi_text,

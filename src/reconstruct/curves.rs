@@ -1,6 +1,7 @@
 //! Assembly of reconstructed edges into curves: closed loops and open chains.
 
-use crate::kernel::{orient, Sign};
+use super::polygons::ring_orientation_by;
+use crate::kernel::Sign;
 
 /// One reconstructed curve.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -155,11 +156,8 @@ fn walk(
 }
 
 /// Puts a loop in its canonical form by names: from its smallest name towards the smaller
-/// neighbour, reversed if it runs clockwise, then from its smallest name again.
-///
-/// The direction is decided exactly: at the loop's lexicographically smallest point (an
-/// extreme point, so the loop turns there the way it runs around) by the exact orientation
-/// of its two neighbours. A rounded signed area cancels for data far from the origin.
+/// neighbour, reversed if it runs clockwise (decided exactly, see
+/// [`ring_orientation_by`]), then from its smallest name again.
 fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]], name: impl Fn(u32) -> u32) {
     let n = cycle.len();
     let start_at_smallest = |cycle: &mut [u32]| {
@@ -171,18 +169,8 @@ fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]], name: impl Fn
     if n > 2 && name(cycle[1]) > name(cycle[n - 1]) {
         cycle[1..].reverse();
     }
-    if n < 3 {
-        return;
-    }
-    let at = |i: usize| points[cycle[i] as usize];
-    let lowest = (0..n)
-        .min_by(|&i, &j| {
-            let (p, q) = (at(i), at(j));
-            p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
-        })
-        .unwrap_or(0);
-    let turn = orient(at((lowest + n - 1) % n), at(lowest), at((lowest + 1) % n));
-    if turn == Sign::Negative {
+    // Exactly (the float shoelace sum can get a thin loop far from the origin wrong).
+    if ring_orientation_by(n, |i| points[cycle[i] as usize]) == Sign::Negative {
         cycle.reverse();
         start_at_smallest(cycle);
     }

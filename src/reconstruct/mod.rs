@@ -18,6 +18,7 @@ pub mod nn_crust;
 mod options;
 mod peel;
 mod pipeline;
+pub mod polygons;
 mod result;
 pub mod wdm;
 
@@ -25,5 +26,6 @@ pub use curves::Curve;
 pub use extract::EdgeClass;
 pub use options::{Algorithm, MedialAxisMode, Options};
 pub use pipeline::{reconstruct, reconstruct_observed, reconstruct_with, Phase};
+pub use polygons::Polygon;
 pub use result::{MedialAxis, Reconstruction};
 pub use wdm::{Label, LabelRule, WaterFlow};

@@ -173,9 +173,9 @@ mod tests {
 
     #[test]
     fn polygons_with_holes_as_geo_types() {
-        // A square ring of 12 points around a square hole of 8, beside a triangle of 3.
+        // A square ring of 24 points around a square hole of 8, two spacings away.
         let mut points = Vec::new();
-        for (r, k) in [(3.0, 3), (1.0, 2)] {
+        for (r, k) in [(3.0, 6), (1.0, 2)] {
             let corners = [[-r, -r], [r, -r], [r, r], [-r, r]];
             for s in 0..4 {
                 let (a, b): ([f64; 2], [f64; 2]) = (corners[s], corners[(s + 1) % 4]);
@@ -189,7 +189,7 @@ mod tests {
         let polygons = rec.polygons_geo();
         assert_eq!(polygons.0.len(), 1);
         let polygon = &polygons.0[0];
-        assert_eq!(polygon.exterior().0.len(), 13);
+        assert_eq!(polygon.exterior().0.len(), 25);
         assert!(polygon.exterior().is_closed());
         assert_eq!(polygon.interiors().len(), 1);
         assert_eq!(polygon.interiors()[0].0.len(), 9);

@@ -136,9 +136,9 @@ struct KindProperties {
 /// Any error of `out`.
 ///
 /// ```
-/// // A square ring of 12 points around a square hole of 8.
+/// // A square ring of 24 points around a square hole of 8, two spacings away.
 /// let mut points = Vec::new();
-/// for (r, k) in [(3.0, 3), (1.0, 2)] {
+/// for (r, k) in [(3.0, 6), (1.0, 2)] {
 ///     let corners = [[-r, -r], [r, -r], [r, r], [-r, r]];
 ///     for s in 0..4 {
 ///         let (a, b): ([f64; 2], [f64; 2]) = (corners[s], corners[(s + 1) % 4]);
@@ -158,7 +158,7 @@ struct KindProperties {
 /// assert_eq!(polygon["properties"]["kind"], "curve");
 /// let rings = polygon["geometry"]["coordinates"].as_array().unwrap();
 /// assert_eq!(rings.len(), 2); // the outer ring and one hole
-/// assert_eq!(rings[0].as_array().unwrap().len(), 13); // closed: 12 points and the first again
+/// assert_eq!(rings[0].as_array().unwrap().len(), 25); // closed: 24 points and the first again
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn write_reconstruction_geojson<W: Write>(rec: &Reconstruction, out: W) -> io::Result<()> {

@@ -59,9 +59,9 @@ impl Polygon {
     /// gave them to the reconstruction `rec` this polygon came from.
     ///
     /// ```
-    /// // A square ring of 12 points around a square hole of 8.
+    /// // A square ring of 24 points around a square hole of 8, two spacings away.
     /// let mut points = Vec::new();
-    /// for (r, k) in [(3.0, 3), (1.0, 2)] {
+    /// for (r, k) in [(3.0, 6), (1.0, 2)] {
     ///     let corners = [[-r, -r], [r, -r], [r, r], [-r, r]];
     ///     for s in 0..4 {
     ///         let (a, b): ([f64; 2], [f64; 2]) = (corners[s], corners[(s + 1) % 4]);
@@ -75,7 +75,7 @@ impl Polygon {
     /// let polygons = rec.polygons();
     /// assert_eq!(polygons.len(), 1);
     /// let outer = polygons[0].exterior_coords(&rec);
-    /// assert_eq!(outer.len(), 12);
+    /// assert_eq!(outer.len(), 24);
     /// assert_eq!(outer[0], points[polygons[0].exterior[0] as usize]);
     /// assert_eq!(polygons[0].hole_coords(&rec)[0].len(), 8);
     /// # Ok::<(), wdm_crust::Error>(())

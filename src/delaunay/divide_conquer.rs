@@ -23,13 +23,37 @@
 use super::mesh::{prev, Mesh, GHOST};
 use super::triangulation::{Triangulation, NO_TWIN};
 use super::zorder::{lexicographic, order, Grid};
+use crate::kernel::scale::shift_by;
 use crate::kernel::static_filter::{Lifted, StaticFilter};
 use crate::kernel::{incircle, orient, Sign};
 use crate::predicates::{orient2d, Orientation};
 
-/// Triangulates validated points (finite, inside the exact envelope). The result keeps the
-/// points in the order the construction leaves them in (Z order, see the module docs).
-pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
+/// Triangulates validated (finite) points. The result keeps the points in the order the
+/// construction leaves them in (Z order, see the module docs).
+///
+/// `shift` is the power of two that brings every non-zero coordinate into the adaptive
+/// predicates' range (`kernel::scale::Magnitudes::adaptive_shift`): where it is not zero
+/// the construction runs on the points times `2^shift`, exactly and so with the same
+/// decisions, at the speed of ordinary input, and the result gets the caller's coordinates
+/// back. Where it is `None` (exponents spread wider than that range) it runs on the points
+/// as given, its predicates taking their wide-exponent exact stage where needed.
+pub(super) fn build(points: &[[f64; 2]], shift: Option<i32>) -> Triangulation {
+    match shift {
+        Some(s) if s != 0 => {
+            let scaled: Vec<[f64; 2]> = points.iter().map(|p| p.map(|x| shift_by(x, s))).collect();
+            let mut tri = build_as_given(&scaled);
+            drop(scaled);
+            for (p, &input) in tri.points.iter_mut().zip(&tri.input_of) {
+                *p = points[input as usize];
+            }
+            tri
+        }
+        _ => build_as_given(points),
+    }
+}
+
+/// [`build`] on the points as they are.
+fn build_as_given(points: &[[f64; 2]]) -> Triangulation {
     if points.is_empty() {
         return Triangulation {
             points: Vec::new(),
@@ -581,7 +605,7 @@ mod tests {
 
     /// Valid, and the same triangles (up to relabelling) for a reversed and a shuffled input.
     fn check(points: &[[f64; 2]]) -> Triangulation {
-        let tri = build(points);
+        let tri = build(points, Some(0));
         if let Err(e) = tri.validate() {
             panic!("{e}");
         }
@@ -592,7 +616,7 @@ mod tests {
         }
         let reversed: Vec<[f64; 2]> = points.iter().rev().copied().collect();
         for other in [shuffled, reversed] {
-            let t = build(&other);
+            let t = build(&other, Some(0));
             assert_eq!(by_coordinates(&t), by_coordinates(&tri));
             let hull = |t: &Triangulation| -> Vec<[f64; 2]> {
                 t.hull.iter().map(|&v| t.points[v as usize]).collect()

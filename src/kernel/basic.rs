@@ -7,25 +7,47 @@
 //! Both are inlined into their callers, so that a comparison of the answer (`== Positive`)
 //! folds into the filter's branches.
 //!
-//! The bounds assume no intermediate underflow or overflow, which the input envelope of a
-//! triangulation guarantees: coordinate differences are 0 or in [2^-194, 2^202], so products
-//! of up to four of them and their sums stay between 2^-776 and 2^812. Outside the envelope
-//! (the public predicates take any `f64`) the filters may fail to decide but never decide
-//! wrongly: an overflowing bound is infinite and a NaN compares false, so the exact stage
-//! answers.
+//! Shewchuk's bounds assume that no product underflows. Inputs of any finite magnitude are
+//! accepted here, so each bound carries an absolute term for underflow (below): with it a
+//! filter never decides wrongly, and where it cannot decide the exact stage answers, by
+//! `robust` inside its exact range and otherwise by `super::wide` (a power-of-two rescale
+//! into that range, or integers). Overflow needs no term: it makes the value or the bound
+//! infinite or NaN, and such a comparison fails, so the exact stage answers.
+//!
+//! # The underflow terms
+//!
+//! In the model of `super::filter` (`fl(x·y) = x·y·(1 + ε) + η'`, `|η'| ≤ η = 2^-1075`, sums
+//! exact in the subnormal range), every rounding that Shewchuk's analysis accounts for is
+//! relative, and each product adds an absolute `η'` that his bound does not cover. Carried
+//! to the root (Lemma 1 there: `|v̂ − v| ≤ γ_K·(Π + Λ)`, `Λ` the sum of the `λ = 2^-1022`
+//! monomials), it adds at most `γ_K·Λ`:
+//!
+//! * orientation, `K = 4`: two products, `Λ = 2λ`, so `γ_4·2λ < 9η`; the bound's own
+//!   product may underflow by another `η`. [`ORIENT_SLACK`] `= 2^-1069 = 64η` covers both.
+//! * in-circle, `K = 11`: each of the six cross products `bdx·cdy, …` is multiplied by a
+//!   lift (`λ·A`, with `A, B, C` the lifts `adx² + ady²`, …), each of the six squares by a
+//!   cross difference, itself at most the sum of the other two lifts
+//!   (`|bdx·cdy| ≤ (bdx² + cdy²)/2`), and the three top products add `λ` each:
+//!   `Λ ≤ λ·(6·(A + B + C) + 4)` and `γ_11·Λ < (2^-1068·(A + B + C) + 2^-1069)`. The
+//!   computed lifts are within a factor `1 + 4u` (plus underflows of `η`) of the exact ones,
+//!   and [`INCIRCLE_SLACK`] `= 2^-1066` per unit of the computed `A + B + C` and once more
+//!   absolutely leaves a margin of four over both.
+//!
+//! Both terms are far below Shewchuk's relative bound unless the determinant's permanent is
+//! within a few powers of two of `2^-1000`: ordinary input is decided exactly as before.
 
 use super::lattice::lattice_incircle;
-use super::Sign;
+use super::{wide, Sign};
 
 /// 2^-53: half an ulp of 1.
 const EPSILON: f64 = 1.0 / 9_007_199_254_740_992.0;
 pub(super) const CCW_BOUND: f64 = (3.0 + 16.0 * EPSILON) * EPSILON;
 pub(super) const INCIRCLE_BOUND: f64 = (10.0 + 96.0 * EPSILON) * EPSILON;
-
-#[inline]
-fn coord(p: [f64; 2]) -> robust::Coord<f64> {
-    robust::Coord { x: p[0], y: p[1] }
-}
+/// `2^-1069`: the absolute underflow term of the orientation bound (module docs).
+pub(super) const ORIENT_SLACK: f64 = 1.6e-322;
+/// `2^-1066`: the underflow term of the in-circle bound, per unit of the sum of the three
+/// lifts and once absolutely (module docs).
+pub(super) const INCIRCLE_SLACK: f64 = 1.265e-321;
 
 /// The sign of the orientation determinant of `a → b → c`: `Positive` iff `c` lies strictly
 /// left of the directed line `a → b` (counterclockwise), `Zero` iff collinear.
@@ -34,7 +56,7 @@ pub(crate) fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
     let left = (a[0] - c[0]) * (b[1] - c[1]);
     let right = (a[1] - c[1]) * (b[0] - c[0]);
     let det = left - right;
-    let bound = CCW_BOUND * (left.abs() + right.abs());
+    let bound = CCW_BOUND * (left.abs() + right.abs()) + ORIENT_SLACK;
     if det > bound {
         Sign::Positive
     } else if -det > bound {
@@ -46,7 +68,7 @@ pub(crate) fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
 
 #[inline(never)]
 fn exact_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
-    Sign::of_f64(robust::orient2d(coord(a), coord(b), coord(c)))
+    wide::orient(a, b, c)
 }
 
 /// Shewchuk's floating-point in-circle determinant and its error bound: when `|det|`
@@ -74,7 +96,8 @@ fn incircle_with_bound(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> (f
     let permanent = (bdxcdy.abs() + cdxbdy.abs()) * alift
         + (cdxady.abs() + adxcdy.abs()) * blift
         + (adxbdy.abs() + bdxady.abs()) * clift;
-    (det, INCIRCLE_BOUND * permanent)
+    let slack = (alift + blift + clift) * INCIRCLE_SLACK + INCIRCLE_SLACK;
+    (det, INCIRCLE_BOUND * permanent + slack)
 }
 
 /// The sign of the in-circle determinant: `Positive` iff `d` lies strictly inside the circle
@@ -96,7 +119,7 @@ pub(crate) fn incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Si
 fn exact_incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Sign {
     match lattice_incircle(a, b, c, d) {
         Some(det) => Sign::of_f64(det.signum() as f64),
-        None => Sign::of_f64(robust::incircle(coord(a), coord(b), coord(c), coord(d))),
+        None => wide::incircle(a, b, c, d),
     }
 }
 
@@ -105,6 +128,16 @@ mod tests {
     use super::*;
     use crate::kernel::static_filter::{Lifted, StaticFilter};
     use crate::predicates::{CirclePosition, Orientation};
+
+    fn coord(p: [f64; 2]) -> robust::Coord<f64> {
+        robust::Coord { x: p[0], y: p[1] }
+    }
+
+    #[test]
+    fn slack_constants_are_the_powers_of_two() {
+        assert_eq!(ORIENT_SLACK, 2f64.powi(-1069));
+        assert_eq!(INCIRCLE_SLACK, 2f64.powi(-1066));
+    }
 
     // The references: the adaptive predicates alone, without the filters under test.
     fn orient2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Orientation {

@@ -60,10 +60,11 @@ mod lattice;
 pub(crate) mod metric;
 pub(crate) mod mixed;
 mod poly;
-mod scale;
+pub(crate) mod scale;
 mod sign;
 pub(crate) mod static_filter;
 pub(crate) mod stats;
+mod wide;
 
 pub(crate) use basic::{incircle, orient};
 pub use circumcenter::{circumcenter, circumcenter_exact, ExactPoint};

@@ -3,7 +3,7 @@
 //! bounds are those of `basic` (Shewchuk's), evaluated on the box extents; undecided tests go
 //! to [`super::basic`]'s semi-static filter and exact stages.
 
-use super::basic::{orient, CCW_BOUND, INCIRCLE_BOUND};
+use super::basic::{orient, CCW_BOUND, INCIRCLE_BOUND, INCIRCLE_SLACK, ORIENT_SLACK};
 use super::Sign;
 
 /// Error bounds valid for points in a box of width `w` and height `h`.
@@ -11,7 +11,8 @@ use super::Sign;
 /// Rounding is monotone: with every coordinate difference at most the (rounded) box extent
 /// in magnitude, every rounded product, sum and permanent of the evaluation is at most the
 /// same expression evaluated on the extents. So the static bound is at least the semi-static
-/// one of any test inside the box, and deciding with it is as safe.
+/// one of any test inside the box, underflow terms included, and deciding with it is as
+/// safe. Extents that overflow make the bounds infinite: nothing is decided here then.
 #[derive(Debug, Clone, Copy)]
 pub struct StaticFilter {
     ccw: f64,
@@ -26,9 +27,11 @@ impl StaticFilter {
         let lift = w * w + h * h; // bounds Δx² + Δy²
         let pair = wh + wh;
         let permanent = pair * lift + pair * lift + pair * lift;
+        // The underflow terms of `basic`, on the lifts' bound: every test's are at most these.
+        let lifts = lift + lift + lift;
         StaticFilter {
-            ccw: CCW_BOUND * pair,
-            incircle: INCIRCLE_BOUND * permanent,
+            ccw: CCW_BOUND * pair + ORIENT_SLACK,
+            incircle: INCIRCLE_BOUND * permanent + (lifts * INCIRCLE_SLACK + INCIRCLE_SLACK),
         }
     }
 

@@ -436,14 +436,7 @@ fn adversarial_scene(seed: u64) -> Scene {
             .map(|(p, _)| *p)
             .collect();
     }
-    Scene {
-        p: f[0],
-        a: f[1],
-        b: f[2],
-        t1: [f[3], f[4], f[5]],
-        t2: [f[6], f[7], f[8]],
-        hull,
-    }
+    scene_of(&f, hull)
 }
 
 /// A lattice scene at the scale of one ulp far from the origin: every point is
@@ -474,19 +467,16 @@ fn far_scene(seed: u64) -> Scene {
         let up = rng.chance(1, 2);
         pts[i][c] = nudge(pts[i][c], up);
     }
-    let hull: Vec<P> = hull.into_iter().map(f).collect();
-    let hull = if weakly_convex(&hull) {
-        hull
+    scene_of(&pts, mapped_hull(hull, f))
+}
+
+/// A lattice hull mapped by `f`, or a triangle of lattice corners if rounding bent it.
+fn mapped_hull(hull: Vec<I>, f: impl Fn(I) -> P) -> Vec<P> {
+    let mapped: Vec<P> = hull.into_iter().map(&f).collect();
+    if weakly_convex(&mapped) {
+        mapped
     } else {
         vec![f([-99, -99]), f([99, -99]), f([0, 99])]
-    };
-    Scene {
-        p: pts[0],
-        a: pts[1],
-        b: pts[2],
-        t1: [pts[3], pts[4], pts[5]],
-        t2: [pts[6], pts[7], pts[8]],
-        hull,
     }
 }
 
@@ -647,6 +637,18 @@ fn check_circumcenter(
     Ok(())
 }
 
+/// The scene of nine points in the order `p, a, b, t1, t2`.
+fn scene_of(pts: &[P], hull: Vec<P>) -> Scene {
+    Scene {
+        p: pts[0],
+        a: pts[1],
+        b: pts[2],
+        t1: [pts[3], pts[4], pts[5]],
+        t2: [pts[6], pts[7], pts[8]],
+        hull,
+    }
+}
+
 /// A scene anywhere in the exponent range of `f64`, one of five kinds by `seed`: an
 /// adversarial scene scaled by `2^k` for any `k` that keeps it finite (into the subnormals
 /// too, where the scaling rounds); the same with its two halves scaled apart (`1e-300` beside
@@ -701,14 +703,7 @@ fn full_range_scene(seed: u64) -> Scene {
             };
             let point = |rng: &mut Rng| [coord(rng), coord(rng)];
             let pts: Vec<P> = (0..9).map(|_| point(&mut rng)).collect();
-            Scene {
-                p: pts[0],
-                a: pts[1],
-                b: pts[2],
-                t1: [pts[3], pts[4], pts[5]],
-                t2: [pts[6], pts[7], pts[8]],
-                hull: s.hull,
-            }
+            scene_of(&pts, s.hull)
         }
         3 => {
             // Near f64::MAX, a lattice in units of the ulp there (2^971): exact zeros.
@@ -720,34 +715,15 @@ fn full_range_scene(seed: u64) -> Scene {
                     base[1] + q[1] as f64 * pow2(971),
                 ]
             };
-            let hull: Vec<P> = hull.into_iter().map(f).collect();
-            let hull = if weakly_convex(&hull) {
-                hull
-            } else {
-                vec![f([-99, -99]), f([99, -99]), f([0, 99])]
-            };
-            Scene {
-                p: f(p),
-                a: f(a),
-                b: f(b),
-                t1: t1.map(f),
-                t2: t2.map(f),
-                hull,
-            }
+            let pts: Vec<P> = [p, a, b].into_iter().chain(t1).chain(t2).map(f).collect();
+            scene_of(&pts, mapped_hull(hull, f))
         }
         _ => {
             let point = |rng: &mut Rng| {
                 [(rng.unit() * 2.0 - 1.0) * f64::MAX, (rng.unit() * 2.0 - 1.0) * f64::MAX]
             };
             let pts: Vec<P> = (0..9).map(|_| point(&mut rng)).collect();
-            Scene {
-                p: pts[0],
-                a: pts[1],
-                b: pts[2],
-                t1: [pts[3], pts[4], pts[5]],
-                t2: [pts[6], pts[7], pts[8]],
-                hull: s.hull,
-            }
+            scene_of(&pts, s.hull)
         }
     }
 }

@@ -77,8 +77,23 @@ pub fn dist2(p: &RPoint, q: &RPoint) -> BigRational {
 }
 
 /// The sign of `(b − a) × (c − a)`: positive iff `a, b, c` turn counterclockwise.
+///
+/// In integers over unreduced denominators (a `BigRational` reduces by a gcd after every
+/// operation, which dominates the fuzz targets' time on coordinates of wide exponents).
 pub fn ref_orient(a: &RPoint, b: &RPoint, c: &RPoint) -> Sign {
-    sign(&cross(&sub(b, a), &sub(c, a)))
+    // `p − q = (np·dq − nq·dp) / (dp·dq)`, denominators positive.
+    let diff = |p: &BigRational, q: &BigRational| {
+        (
+            p.numer() * q.denom() - q.numer() * p.denom(),
+            p.denom() * q.denom(),
+        )
+    };
+    let (bx, bdx) = diff(&b[0], &a[0]);
+    let (by, bdy) = diff(&b[1], &a[1]);
+    let (cx, cdx) = diff(&c[0], &a[0]);
+    let (cy, cdy) = diff(&c[1], &a[1]);
+    // bx/bdx · cy/cdy − by/bdy · cx/cdx, times the positive bdx·bdy·cdx·cdy.
+    sign(&(bx * cy * (&bdy * &cdx) - by * cx * (bdx * cdy)))
 }
 
 /// [`Orientation`] of a reference sign.
@@ -173,21 +188,17 @@ pub fn exact_hull(points: &[[f64; 2]], keep_collinear: bool) -> Option<Vec<[f64;
     if pts.len() < 3 {
         return None;
     }
-    let r: Vec<RPoint> = pts.iter().map(|&p| rpoint(p)).collect();
-    if (2..r.len()).all(|i| ref_orient(&r[0], &r[1], &r[i]) == Sign::Zero) {
+    // Integers on one grid rather than rationals: points of any magnitude stay cheap.
+    let r = IntPoints::new(&pts);
+    let n = pts.len() as u32;
+    if (2..n).all(|i| r.orient(0, 1, i) == Sign::Zero) {
         return None;
     }
     let pops = |s: Sign| s == Sign::Negative || (!keep_collinear && s == Sign::Zero);
-    let chain = |order: &mut dyn Iterator<Item = usize>| {
-        let mut out: Vec<usize> = Vec::new();
+    let chain = |order: &mut dyn Iterator<Item = u32>| {
+        let mut out: Vec<u32> = Vec::new();
         for i in order {
-            while out.len() >= 2
-                && pops(ref_orient(
-                    &r[out[out.len() - 2]],
-                    &r[out[out.len() - 1]],
-                    &r[i],
-                ))
-            {
+            while out.len() >= 2 && pops(r.orient(out[out.len() - 2], out[out.len() - 1], i)) {
                 out.pop();
             }
             out.push(i);
@@ -195,9 +206,9 @@ pub fn exact_hull(points: &[[f64; 2]], keep_collinear: bool) -> Option<Vec<[f64;
         out.pop();
         out
     };
-    let mut hull = chain(&mut (0..r.len()));
-    hull.extend(chain(&mut (0..r.len()).rev()));
-    Some(hull.into_iter().map(|i| pts[i]).collect())
+    let mut hull = chain(&mut (0..n));
+    hull.extend(chain(&mut (0..n).rev()));
+    Some(hull.into_iter().map(|i| pts[i as usize]).collect())
 }
 
 // ---------------------------------------------------------------------------------------
@@ -417,6 +428,12 @@ impl IntPoints {
 
     fn p(&self, i: u32) -> &[BigInt; 2] {
         &self.coords[i as usize]
+    }
+
+    /// The orientation of points `a → b → c` (`Positive`: counterclockwise).
+    pub fn orient(&self, a: u32, b: u32, c: u32) -> Sign {
+        let (pa, pb, pc) = (self.p(a), self.p(b), self.p(c));
+        sign(&((&pb[0] - &pa[0]) * (&pc[1] - &pa[1]) - (&pb[1] - &pa[1]) * (&pc[0] - &pa[0])))
     }
 
     /// The circumcenter of points `a, b, c`, `None` if collinear.

@@ -86,7 +86,9 @@ fn power_of_two_scaling_changes_nothing() {
     let positions = tri.voronoi().vertex_positions().to_vec();
     let edges: Vec<Vec<[u32; 2]>> = ALGORITHMS.iter().map(|&a| edges_of(&base, a)).collect();
     let mut ks: Vec<i32> = (-1054..=1011).step_by(53).collect();
-    ks.extend([-1054, -1000, -970, -900, -400, -150, -143, 190, 201, 400, 900, 1011]);
+    ks.extend([
+        -1054, -1000, -970, -900, -400, -150, -143, 190, 201, 400, 900, 1011,
+    ]);
     for k in ks {
         let scaled: Vec<P> = base.iter().map(|p| p.map(|x| ldexp(x, k))).collect();
         for (p, q) in base.iter().zip(&scaled) {
@@ -175,7 +177,10 @@ fn assert_delaunay(tri: &Triangulation) {
     assert_eq!(tri.triangle_count(), 2 * distinct - 2 - tri.hull().len());
     for t in 0..tri.triangle_count() {
         let [a, b, c] = tri.triangle_points(t);
-        assert!(orient(a, b, c).is_positive(), "triangle {t} counterclockwise");
+        assert!(
+            orient(a, b, c).is_positive(),
+            "triangle {t} counterclockwise"
+        );
         for i in 0..tri.point_count() as u32 {
             assert!(
                 !incircle(a, b, c, tri.point(i)).is_positive(),
@@ -217,7 +222,10 @@ fn assert_close(got: P, exact: &[BigRational; 2]) {
             assert_eq!(got[i], beyond, "beyond the f64 range");
             continue;
         }
-        assert!(got[i].is_finite(), "{got:?}: finite where the exact value is");
+        assert!(
+            got[i].is_finite(),
+            "{got:?}: finite where the exact value is"
+        );
         if larger.is_finite() {
             let error = (rat(got[i]) - &exact[i]).abs();
             assert!(error <= rat(256.0 * ulp(larger)), "{got:?}");
@@ -258,7 +266,10 @@ fn check_wide(points: &[P]) {
 #[test]
 fn mixed_magnitudes_1e_minus_300_beside_1e300() {
     let base = dyadic_points(24, 5);
-    let mut pts: Vec<P> = base[..24].iter().map(|p| p.map(|x| ldexp(x, -600))).collect();
+    let mut pts: Vec<P> = base[..24]
+        .iter()
+        .map(|p| p.map(|x| ldexp(x, -600)))
+        .collect();
     pts.extend(base[..24].iter().map(|p| p.map(|x| ldexp(x, 600))));
     pts.extend(base[24..].iter().map(|p| p.map(|x| ldexp(x, -1000))));
     pts.push([1e300, -1e300]);
@@ -298,7 +309,12 @@ fn subnormals_beside_normal_values() {
 fn values_near_f64_max() {
     let mut next = uniform(21);
     let mut pts: Vec<P> = (0..20)
-        .map(|_| [(next() * 2.0 - 1.0) * f64::MAX, (next() * 2.0 - 1.0) * f64::MAX])
+        .map(|_| {
+            [
+                (next() * 2.0 - 1.0) * f64::MAX,
+                (next() * 2.0 - 1.0) * f64::MAX,
+            ]
+        })
         .collect();
     pts.extend([
         [f64::MAX, f64::MAX],

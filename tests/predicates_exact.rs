@@ -684,7 +684,11 @@ fn full_range_scene(seed: u64) -> Scene {
         1 => {
             let tiny = rng.range(-1150, -900) as i32 - hi;
             let huge = rng.range(700, 1000) as i32 - hi;
-            let (k1, k2) = if rng.chance(1, 2) { (tiny, huge) } else { (huge, tiny) };
+            let (k1, k2) = if rng.chance(1, 2) {
+                (tiny, huge)
+            } else {
+                (huge, tiny)
+            };
             Scene {
                 p: scale(s.p, k2),
                 a: scale(s.a, k1),
@@ -720,7 +724,10 @@ fn full_range_scene(seed: u64) -> Scene {
         }
         _ => {
             let point = |rng: &mut Rng| {
-                [(rng.unit() * 2.0 - 1.0) * f64::MAX, (rng.unit() * 2.0 - 1.0) * f64::MAX]
+                [
+                    (rng.unit() * 2.0 - 1.0) * f64::MAX,
+                    (rng.unit() * 2.0 - 1.0) * f64::MAX,
+                ]
             };
             let pts: Vec<P> = (0..9).map(|_| point(&mut rng)).collect();
             scene_of(&pts, s.hull)

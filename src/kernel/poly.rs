@@ -172,7 +172,12 @@ pub(super) fn orient_terms_points<T: Arith>(a: &Pt<T>, b: &Pt<T>, c: &Pt<T>) -> 
 /// The in-circle determinant of `a, b, c, d` translated to `d` (degree 4): positive iff `d`
 /// is inside the circle through the counterclockwise `a, b, c`.
 #[inline(always)]
-pub(super) fn incircle_terms_points<T: Arith>(a: &Pt<T>, b: &Pt<T>, c: &Pt<T>, d: &Pt<T>) -> [T; 1] {
+pub(super) fn incircle_terms_points<T: Arith>(
+    a: &Pt<T>,
+    b: &Pt<T>,
+    c: &Pt<T>,
+    d: &Pt<T>,
+) -> [T; 1] {
     let (ad, bd, cd) = (diff(a, d), diff(b, d), diff(c, d));
     [norm2(&ad)
         .mul(&cross(&bd, &cd))

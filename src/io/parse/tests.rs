@@ -357,7 +357,12 @@ fn every_finite_coordinate() {
         ]
     );
     // Decimals that would move the point (round to zero) or overflow are refused.
-    for (token, small) in [("1e-400", true), ("-2e-324", true), ("1e400", false), ("-1e309", false)] {
+    for (token, small) in [
+        ("1e-400", true),
+        ("-2e-324", true),
+        ("1e400", false),
+        ("-1e309", false),
+    ] {
         let err = parse(&format!("0 0\n1 {token}\n")).expect_err(token);
         assert_eq!(err.line, Some(2));
         if small {

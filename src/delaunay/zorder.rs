@@ -54,7 +54,7 @@ impl Grid {
             const TINY: f64 = 1.1830521861667747e-271; // 2^-900
             const PRE: f64 = 4.149515568880993e180; // 2^600
             let extent = hi[k] - lo[k];
-            if !(extent > 0.0) {
+            if extent <= 0.0 {
                 (1.0, 0.0)
             } else if extent == f64::INFINITY {
                 (1.0, CELLS / 2.0 / (hi[k] * 0.5 - lo[k] * 0.5))

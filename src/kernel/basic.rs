@@ -35,6 +35,11 @@
 //!
 //! Both terms are far below Shewchuk's relative bound unless the determinant's permanent is
 //! within a few powers of two of `2^-1000`: ordinary input is decided exactly as before.
+//! Callers that know every coordinate to be zero or of an exponent in
+//! `scale::ADAPTIVE_EXPONENTS` (the construction, on validated or rescaled input) use the
+//! `*_in::<true>` forms, without the terms: there differences are 0 or in [2^-194, 2^202],
+//! so products of up to four of them and their sums stay between 2^-776 and 2^812, no
+//! product underflows and Shewchuk's bounds hold as they are.
 
 use super::lattice::lattice_incircle;
 use super::{wide, Sign};
@@ -53,28 +58,48 @@ pub(super) const INCIRCLE_SLACK: f64 = 1.265e-321;
 /// left of the directed line `a → b` (counterclockwise), `Zero` iff collinear.
 #[inline(always)]
 pub(crate) fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
+    orient_in::<false>(a, b, c)
+}
+
+/// [`orient`]; with `IN_RANGE` the caller guarantees that every coordinate is zero or of
+/// an exponent in the adaptive predicates' range (`scale::ADAPTIVE_EXPONENTS`), and the
+/// exact stage goes to them without checking (the construction on such input, where exact
+/// zeros are frequent).
+#[inline(always)]
+pub(crate) fn orient_in<const IN_RANGE: bool>(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
     let left = (a[0] - c[0]) * (b[1] - c[1]);
     let right = (a[1] - c[1]) * (b[0] - c[0]);
     let det = left - right;
-    let bound = CCW_BOUND * (left.abs() + right.abs()) + ORIENT_SLACK;
+    // In range, the envelope rules out harmful underflow (module docs): no slack needed.
+    let slack = if IN_RANGE { 0.0 } else { ORIENT_SLACK };
+    let bound = CCW_BOUND * (left.abs() + right.abs()) + slack;
     if det > bound {
         Sign::Positive
     } else if -det > bound {
         Sign::Negative
     } else {
-        exact_orient(a, b, c)
+        exact_orient::<IN_RANGE>(a, b, c)
     }
 }
 
 #[inline(never)]
-fn exact_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
-    wide::orient(a, b, c)
+fn exact_orient<const IN_RANGE: bool>(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
+    if IN_RANGE {
+        wide::adaptive_orient(a, b, c)
+    } else {
+        wide::orient(a, b, c)
+    }
 }
 
 /// Shewchuk's floating-point in-circle determinant and its error bound: when `|det|`
 /// exceeds the bound, its sign is the exact one.
 #[inline(always)]
-fn incircle_with_bound(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> (f64, f64) {
+fn incircle_with_bound<const IN_RANGE: bool>(
+    a: [f64; 2],
+    b: [f64; 2],
+    c: [f64; 2],
+    d: [f64; 2],
+) -> (f64, f64) {
     let adx = a[0] - d[0];
     let bdx = b[0] - d[0];
     let cdx = c[0] - d[0];
@@ -96,6 +121,9 @@ fn incircle_with_bound(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> (f
     let permanent = (bdxcdy.abs() + cdxbdy.abs()) * alift
         + (cdxady.abs() + adxcdy.abs()) * blift
         + (adxbdy.abs() + bdxady.abs()) * clift;
+    if IN_RANGE {
+        return (det, INCIRCLE_BOUND * permanent);
+    }
     let slack = (alift + blift + clift) * INCIRCLE_SLACK + INCIRCLE_SLACK;
     (det, INCIRCLE_BOUND * permanent + slack)
 }
@@ -105,20 +133,37 @@ fn incircle_with_bound(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> (f
 /// `a, b, c` the side of their line), `Zero` iff the four points are cocircular.
 #[inline(always)]
 pub(crate) fn incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Sign {
-    let (det, bound) = incircle_with_bound(a, b, c, d);
+    incircle_in::<false>(a, b, c, d)
+}
+
+/// [`incircle`], with `IN_RANGE` as in [`orient_in`].
+#[inline(always)]
+pub(crate) fn incircle_in<const IN_RANGE: bool>(
+    a: [f64; 2],
+    b: [f64; 2],
+    c: [f64; 2],
+    d: [f64; 2],
+) -> Sign {
+    let (det, bound) = incircle_with_bound::<IN_RANGE>(a, b, c, d);
     if det > bound {
         Sign::Positive
     } else if -det > bound {
         Sign::Negative
     } else {
-        exact_incircle(a, b, c, d)
+        exact_incircle::<IN_RANGE>(a, b, c, d)
     }
 }
 
 #[inline(never)]
-fn exact_incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Sign {
+fn exact_incircle<const IN_RANGE: bool>(
+    a: [f64; 2],
+    b: [f64; 2],
+    c: [f64; 2],
+    d: [f64; 2],
+) -> Sign {
     match lattice_incircle(a, b, c, d) {
         Some(det) => Sign::of_f64(det.signum() as f64),
+        None if IN_RANGE => wide::adaptive_incircle(a, b, c, d),
         None => wide::incircle(a, b, c, d),
     }
 }
@@ -141,7 +186,7 @@ mod tests {
 
     // The references: the adaptive predicates alone, without the filters under test.
     fn orient2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Orientation {
-        exact_orient(a, b, c).into()
+        exact_orient::<false>(a, b, c).into()
     }
 
     fn incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> CirclePosition {
@@ -195,7 +240,7 @@ mod tests {
             let pts = [pick(), pick(), pick(), pick()];
             let lo = |k: usize| pts.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min);
             let hi = |k: usize| pts.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max);
-            let f = StaticFilter::for_box(hi(0) - lo(0), hi(1) - lo(1));
+            let f = StaticFilter::<true>::for_box(hi(0) - lo(0), hi(1) - lo(1));
             let [a, b, c, d] = pts;
             let exact = orient2d(a, b, c);
             assert_eq!(Orientation::from(f.orient(a, b, c)), exact);

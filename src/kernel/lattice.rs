@@ -10,20 +10,21 @@
 /// zeros, which the adaptive predicate reaches only after its most expensive stages.
 pub(super) fn lattice_incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Option<i128> {
     let coords = [a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]];
-    // value = mantissa · 2^exponent: with the implicit bit for normal numbers, without it
-    // (and the exponent of the smallest normal binade) for subnormal ones.
+    // value = mantissa · 2^(exponent − 1075) with the implicit bit in the mantissa, for
+    // normal values; subnormal ones (exponent field 0) are declined below.
     let parts = |x: f64| {
         let bits = x.to_bits();
-        let fraction = bits & ((1 << 52) - 1);
-        match ((bits >> 52) & 0x7FF) as i32 {
-            0 => (fraction, -1074),
-            biased => (fraction | (1 << 52), biased - 1075),
-        }
+        let mantissa = (bits & ((1 << 52) - 1)) | (1 << 52);
+        let exponent = ((bits >> 52) & 0x7FF) as i32 - 1075;
+        (mantissa, exponent)
     };
     let mut g = i32::MAX;
     for &x in &coords {
         if x != 0.0 {
             let (m, e) = parts(x);
+            if e == -1075 {
+                return None; // subnormal: the parts above would be wrong
+            }
             g = g.min(e + m.trailing_zeros() as i32);
         }
     }

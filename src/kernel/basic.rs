@@ -23,18 +23,25 @@
 //! monomials), it adds at most `γ_K·Λ`:
 //!
 //! * orientation, `K = 4`: two products, `Λ = 2λ`, so `γ_4·2λ < 9η`; the bound's own
-//!   product may underflow by another `η`. [`ORIENT_SLACK`] `= 2^-1069 = 64η` covers both.
+//!   product may underflow by another `η`. So `10η` suffice.
 //! * in-circle, `K = 11`: each of the six cross products `bdx·cdy, …` is multiplied by a
 //!   lift (`λ·A`, with `A, B, C` the lifts `adx² + ady²`, …), each of the six squares by a
 //!   cross difference, itself at most the sum of the other two lifts
 //!   (`|bdx·cdy| ≤ (bdx² + cdy²)/2`), and the three top products add `λ` each:
 //!   `Λ ≤ λ·(6·(A + B + C) + 4)` and `γ_11·Λ < (2^-1068·(A + B + C) + 2^-1069)`. The
 //!   computed lifts are within a factor `1 + 4u` (plus underflows of `η`) of the exact ones,
-//!   and [`INCIRCLE_SLACK`] `= 2^-1066` per unit of the computed `A + B + C` and once more
-//!   absolutely leaves a margin of four over both.
+//!   and the computation of the term itself may lose `η`s to underflow.
 //!
-//! Both terms are far below Shewchuk's relative bound unless the determinant's permanent is
-//! within a few powers of two of `2^-1000`: ordinary input is decided exactly as before.
+//! The terms used are far larger than these, and normal numbers: arithmetic on subnormal
+//! constants costs a microcode assist per operation on x86 (a 4× slower in-circle filter,
+//! measured), and a larger term only makes the filter decline a little more often:
+//! [`ORIENT_SLACK`] `= λ = 2^-1022` (`2^53·η`) for orientation, and for in-circle
+//! [`INCIRCLE_SLACK`] `= 2^-960` per unit of the computed `A + B + C` plus `λ`. Both are far
+//! below Shewchuk's relative bound (`≈ 10u` of the permanent) unless the determinant is
+//! within `2^-900` of its permanent's scale or the permanent itself is near `2^-970`: such
+//! tests are nearly degenerate and go to the exact stage anyway; ordinary input is decided
+//! exactly as before. A product `S·2^-960` is subnormal only for lifts below `2^-62`
+//! (coordinates differing by less than `2^-31`), where its cost is paid.
 //! Callers that know every coordinate to be zero or of an exponent in
 //! `scale::ADAPTIVE_EXPONENTS` (the construction, on validated or rescaled input) use the
 //! `*_in::<true>` forms, without the terms: there differences are 0 or in [2^-194, 2^202],
@@ -48,11 +55,12 @@ use super::{wide, Sign};
 const EPSILON: f64 = 1.0 / 9_007_199_254_740_992.0;
 pub(super) const CCW_BOUND: f64 = (3.0 + 16.0 * EPSILON) * EPSILON;
 pub(super) const INCIRCLE_BOUND: f64 = (10.0 + 96.0 * EPSILON) * EPSILON;
-/// `2^-1069`: the absolute underflow term of the orientation bound (module docs).
-pub(super) const ORIENT_SLACK: f64 = 1.6e-322;
-/// `2^-1066`: the underflow term of the in-circle bound, per unit of the sum of the three
-/// lifts and once absolutely (module docs).
-pub(super) const INCIRCLE_SLACK: f64 = 1.265e-321;
+/// `2^-1022`, the smallest normal `f64`: the absolute underflow term of the orientation
+/// bound, and the absolute part of the in-circle one (module docs).
+pub(super) const ORIENT_SLACK: f64 = f64::MIN_POSITIVE;
+/// `2^-960`: the underflow term of the in-circle bound per unit of the sum of the three
+/// lifts (module docs).
+pub(super) const INCIRCLE_SLACK: f64 = 1.0261342003245941e-289;
 
 /// The sign of the orientation determinant of `a → b → c`: `Positive` iff `c` lies strictly
 /// left of the directed line `a → b` (counterclockwise), `Zero` iff collinear.
@@ -124,7 +132,7 @@ fn incircle_with_bound<const IN_RANGE: bool>(
     if IN_RANGE {
         return (det, INCIRCLE_BOUND * permanent);
     }
-    let slack = (alift + blift + clift) * INCIRCLE_SLACK + INCIRCLE_SLACK;
+    let slack = (alift + blift + clift) * INCIRCLE_SLACK + ORIENT_SLACK;
     (det, INCIRCLE_BOUND * permanent + slack)
 }
 
@@ -180,8 +188,9 @@ mod tests {
 
     #[test]
     fn slack_constants_are_the_powers_of_two() {
-        assert_eq!(ORIENT_SLACK, 2f64.powi(-1069));
-        assert_eq!(INCIRCLE_SLACK, 2f64.powi(-1066));
+        assert_eq!(ORIENT_SLACK, 2f64.powi(-1022));
+        assert_eq!(INCIRCLE_SLACK, 2f64.powi(-960));
+        assert!(ORIENT_SLACK.is_normal() && INCIRCLE_SLACK.is_normal());
     }
 
     // The references: the adaptive predicates alone, without the filters under test.

@@ -43,7 +43,7 @@ impl<const IN_RANGE: bool> StaticFilter<IN_RANGE> {
         let lifts = lift + lift + lift;
         StaticFilter {
             ccw: CCW_BOUND * pair + ORIENT_SLACK,
-            incircle: INCIRCLE_BOUND * permanent + (lifts * INCIRCLE_SLACK + INCIRCLE_SLACK),
+            incircle: INCIRCLE_BOUND * permanent + (lifts * INCIRCLE_SLACK + ORIENT_SLACK),
         }
     }
 

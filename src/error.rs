@@ -1,14 +1,24 @@
 //! The one error type of the library.
+//!
+//! Every finite `f64` coordinate is accepted: the predicates are exact on all of them (see
+//! the crate docs, "Exactness"). Only NaN, infinities and more points than 32-bit indices
+//! address are refused.
 
 use std::fmt;
 
-/// Smallest non-zero coordinate magnitude accepted: 2^-142.
+use crate::kernel::scale::Magnitudes;
+
+/// 2^-142: the smallest non-zero coordinate magnitude at which the adaptive predicates run
+/// on the input as given.
 ///
-/// Below it the adaptive predicates could underflow and lose exactness.
+/// Not a limit on input: smaller magnitudes are triangulated exactly as well, after an exact
+/// power-of-two rescale or in wide-exponent exact arithmetic.
 pub const MIN_MAGNITUDE: f64 = 1.793662034335766e-43; // 2^-142
-/// Largest coordinate magnitude accepted: 2^201.
+/// 2^201: the largest coordinate magnitude at which the adaptive predicates run on the
+/// input as given.
 ///
-/// Above it the adaptive predicates could overflow.
+/// Not a limit on input: larger (finite) magnitudes are triangulated exactly as well, after
+/// an exact power-of-two rescale or in wide-exponent exact arithmetic.
 pub const MAX_MAGNITUDE: f64 = 3.2138760885179806e60; // 2^201
 
 /// Everything that can go wrong in the library. No public function panics instead.
@@ -23,6 +33,9 @@ pub enum Error {
         value: f64,
     },
     /// A non-zero coordinate is smaller in magnitude than [`MIN_MAGNITUDE`].
+    ///
+    /// No longer returned: every finite coordinate is accepted. Kept so that code matching
+    /// on it still compiles.
     TooSmall {
         /// Index of the point in the caller's slice.
         index: usize,
@@ -30,6 +43,9 @@ pub enum Error {
         value: f64,
     },
     /// A coordinate is larger in magnitude than [`MAX_MAGNITUDE`].
+    ///
+    /// No longer returned: every finite coordinate is accepted. Kept so that code matching
+    /// on it still compiles.
     TooLarge {
         /// Index of the point in the caller's slice.
         index: usize,
@@ -66,34 +82,37 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
-/// Checks one coordinate against the exact envelope: finite and zero or within
-/// [`MIN_MAGNITUDE`]..=[`MAX_MAGNITUDE`] in magnitude.
+/// Checks one coordinate: every finite value is accepted, NaN and infinities are
+/// [`Error::NotFinite`].
 pub fn check_coordinate(index: usize, value: f64) -> Result<(), Error> {
-    if !value.is_finite() {
-        return Err(Error::NotFinite { index, value });
+    if value.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::NotFinite { index, value })
     }
-    let magnitude = value.abs();
-    if magnitude != 0.0 && magnitude < MIN_MAGNITUDE {
-        return Err(Error::TooSmall { index, value });
-    }
-    if magnitude > MAX_MAGNITUDE {
-        return Err(Error::TooLarge { index, value });
-    }
-    Ok(())
 }
 
 /// Checks every coordinate of every point; the first failure names its point.
 pub fn check_points(points: &[[f64; 2]]) -> Result<(), Error> {
+    scan_points(points).map(|_| ())
+}
+
+/// [`check_points`], and the magnitudes of the coordinates: whether and how the
+/// construction rescales them.
+pub(crate) fn scan_points(points: &[[f64; 2]]) -> Result<Magnitudes, Error> {
     if points.len() > (u32::MAX - 1) as usize {
         return Err(Error::TooManyPoints {
             count: points.len(),
         });
     }
+    let mut magnitudes = Magnitudes::NONE;
     for (index, p) in points.iter().enumerate() {
         check_coordinate(index, p[0])?;
         check_coordinate(index, p[1])?;
+        magnitudes.include(p[0]);
+        magnitudes.include(p[1]);
     }
-    Ok(())
+    Ok(magnitudes)
 }
 
 #[cfg(test)]
@@ -101,25 +120,25 @@ mod tests {
     use super::*;
 
     #[test]
-    fn envelope_constants_are_the_powers_of_two() {
+    fn magnitude_constants_are_the_powers_of_two() {
         assert_eq!(MIN_MAGNITUDE, 2f64.powi(-142));
         assert_eq!(MAX_MAGNITUDE, 2f64.powi(201));
     }
 
     #[test]
-    fn envelope_boundaries() {
-        assert!(check_coordinate(0, 0.0).is_ok());
-        assert!(check_coordinate(0, -0.0).is_ok());
-        assert!(check_coordinate(0, MIN_MAGNITUDE).is_ok());
-        assert!(check_coordinate(0, -MAX_MAGNITUDE).is_ok());
-        assert!(matches!(
-            check_coordinate(3, MIN_MAGNITUDE / 2.0),
-            Err(Error::TooSmall { index: 3, .. })
-        ));
-        assert!(matches!(
-            check_coordinate(4, MAX_MAGNITUDE * 2.0),
-            Err(Error::TooLarge { index: 4, .. })
-        ));
+    fn every_finite_coordinate_is_accepted() {
+        for x in [
+            0.0,
+            -0.0,
+            f64::from_bits(1),
+            -f64::MIN_POSITIVE,
+            MIN_MAGNITUDE / 2.0,
+            MAX_MAGNITUDE * 2.0,
+            f64::MAX,
+            f64::MIN,
+        ] {
+            assert_eq!(check_coordinate(7, x), Ok(()), "{x:e}");
+        }
         assert!(matches!(
             check_coordinate(5, f64::NAN),
             Err(Error::NotFinite { index: 5, .. })

@@ -2,7 +2,9 @@
 //! independently written rational reference, on random input and on adversarial input built
 //! to hit exact zeros (lattice points on circles, right angles, shared circumcenters,
 //! circumcenters on hull edges), the same perturbed by one ulp, translated far from the
-//! origin and scaled by 2^k over the whole input envelope.
+//! origin and scaled by 2^k over the whole exponent range of `f64`: subnormals, `1e-300`
+//! beside `1e300`, values near `f64::MAX` whose differences overflow. Orientation and
+//! in-circle of input points are checked on the same scenes.
 
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
@@ -13,7 +15,7 @@ use wdm_crust::predicates::{
 };
 #[cfg(feature = "predicate-stats")]
 use wdm_crust::predicates::{fallback_counts, FallbackCounts, PredicateCounts};
-use wdm_crust::predicates::{orient2d, Orientation};
+use wdm_crust::predicates::{incircle, orient2d, CirclePosition, Orientation};
 
 type P = [f64; 2];
 type T = [P; 3];
@@ -64,6 +66,29 @@ mod reference {
             Sign::Positive => Orientation::CounterClockwise,
             Sign::Negative => Orientation::Clockwise,
             Sign::Zero => Orientation::Collinear,
+        }
+    }
+
+    /// Orientation of three input points.
+    pub fn orient_points(a: P, b: P, c: P) -> Orientation {
+        orient(a, b, &[rat(c[0]), rat(c[1])])
+    }
+
+    /// Position of `d` relative to the circle through the counterclockwise `a, b, c`
+    /// (mirrored for clockwise ones), from the lifted 3×3 determinant.
+    pub fn incircle(a: P, b: P, c: P, d: P) -> CirclePosition {
+        let row = |p: P| {
+            let (x, y) = (rat(p[0]) - rat(d[0]), rat(p[1]) - rat(d[1]));
+            let lift = &x * &x + &y * &y;
+            (x, y, lift)
+        };
+        let ((ax, ay, al), (bx, by, bl), (cx, cy, cl)) = (row(a), row(b), row(c));
+        let det = &al * (&bx * &cy - &by * &cx) - &bl * (&ax * &cy - &ay * &cx)
+            + &cl * (&ax * &by - &ay * &bx);
+        match sign(&det) {
+            Sign::Positive => CirclePosition::Inside,
+            Sign::Negative => CirclePosition::Outside,
+            Sign::Zero => CirclePosition::On,
         }
     }
 
@@ -140,8 +165,32 @@ impl Rng {
 }
 
 fn pow2(k: i32) -> f64 {
-    assert!((-1022..=1023).contains(&k));
-    f64::from_bits(((k + 1023) as u64) << 52)
+    assert!((-1074..=1023).contains(&k));
+    if k >= -1022 {
+        f64::from_bits(((k + 1023) as u64) << 52)
+    } else {
+        f64::from_bits(1 << (k + 1074))
+    }
+}
+
+/// `x · 2^k` in steps of at most `2^±1000` (exact unless a step leaves the normal range:
+/// the callers that need exactness check it).
+fn ldexp(mut x: f64, mut k: i32) -> f64 {
+    while k != 0 {
+        let step = k.clamp(-1000, 1000);
+        x *= pow2(step);
+        k -= step;
+    }
+    x
+}
+
+/// Whether `y = x · 2^k` exactly.
+fn is_scaled(x: f64, k: i32, y: f64) -> bool {
+    y.is_finite() && ldexp(y, -k) == x && (x == 0.0) == (y == 0.0) && {
+        let power = BigRational::from_integer(num_bigint::BigInt::from(1u8) << k.unsigned_abs());
+        let factor = if k >= 0 { power } else { power.recip() };
+        rat(x) * factor == rat(y)
+    }
 }
 
 type I = [i64; 2];
@@ -387,14 +436,7 @@ fn adversarial_scene(seed: u64) -> Scene {
             .map(|(p, _)| *p)
             .collect();
     }
-    Scene {
-        p: f[0],
-        a: f[1],
-        b: f[2],
-        t1: [f[3], f[4], f[5]],
-        t2: [f[6], f[7], f[8]],
-        hull,
-    }
+    scene_of(&f, hull)
 }
 
 /// A lattice scene at the scale of one ulp far from the origin: every point is
@@ -425,19 +467,16 @@ fn far_scene(seed: u64) -> Scene {
         let up = rng.chance(1, 2);
         pts[i][c] = nudge(pts[i][c], up);
     }
-    let hull: Vec<P> = hull.into_iter().map(f).collect();
-    let hull = if weakly_convex(&hull) {
-        hull
+    scene_of(&pts, mapped_hull(hull, f))
+}
+
+/// A lattice hull mapped by `f`, or a triangle of lattice corners if rounding bent it.
+fn mapped_hull(hull: Vec<I>, f: impl Fn(I) -> P) -> Vec<P> {
+    let mapped: Vec<P> = hull.into_iter().map(&f).collect();
+    if weakly_convex(&mapped) {
+        mapped
     } else {
         vec![f([-99, -99]), f([99, -99]), f([0, 99])]
-    };
-    Scene {
-        p: pts[0],
-        a: pts[1],
-        b: pts[2],
-        t1: [pts[3], pts[4], pts[5]],
-        t2: [pts[6], pts[7], pts[8]],
-        hull,
     }
 }
 
@@ -482,8 +521,9 @@ fn random_scene_of(seed: u64, wide: bool) -> Scene {
 // ----------------------------------------------------------------------------------------
 // The checks.
 
+/// The gap above `|x|` (for `f64::MAX`, the gap below: the same binade).
 fn ulp(x: f64) -> f64 {
-    let a = x.abs();
+    let a = x.abs().min(f64::from_bits(f64::MAX.to_bits() - 1));
     f64::from_bits(a.to_bits() + 1) - a
 }
 
@@ -491,8 +531,35 @@ fn reversed(t: T) -> T {
     [t[0], t[2], t[1]]
 }
 
+/// Orientation and in-circle of the scene's input points agree with the reference; the
+/// triangles of the scenes share circles and lines by construction.
+fn check_points(s: &Scene) -> Result<(), TestCaseError> {
+    for (a, b, c) in [
+        (s.a, s.b, s.p),
+        (s.t1[0], s.t1[1], s.t1[2]),
+        (s.t1[0], s.t2[1], s.a),
+        (s.p, s.t2[0], s.t2[2]),
+    ] {
+        prop_assert_eq!(orient2d(a, b, c), reference::orient_points(a, b, c));
+        prop_assert_eq!(orient2d(b, c, a), reference::orient_points(a, b, c));
+    }
+    for (t, d) in [
+        (s.t1, s.t2[0]),
+        (s.t1, s.t2[1]),
+        (s.t2, s.t1[2]),
+        (s.t1, s.p),
+        ([s.a, s.b, s.t1[0]], s.t2[1]),
+    ] {
+        let expected = reference::incircle(t[0], t[1], t[2], d);
+        prop_assert_eq!(incircle(t[0], t[1], t[2], d), expected);
+        prop_assert_eq!(incircle(t[1], t[2], t[0], d), expected);
+    }
+    Ok(())
+}
+
 /// Every predicate on the scene agrees with the reference.
 fn check(s: &Scene) -> Result<(), TestCaseError> {
+    check_points(s)?;
     let o1 = reference::circumcenter(s.t1);
     let o2 = reference::circumcenter(s.t2);
     let (Some(o1), Some(o2)) = (o1, o2) else {
@@ -541,7 +608,9 @@ fn check(s: &Scene) -> Result<(), TestCaseError> {
 }
 
 /// `circumcenter` is within its documented bound of the exact circumcenter (256 ulps of the
-/// larger coordinate), and `rounded`, from `ExactPoint::to_f64`, within half an ulp.
+/// larger coordinate), and `rounded`, from `ExactPoint::to_f64`, within half an ulp; a
+/// coordinate is infinite exactly where the correctly rounded one is (the exact value lies
+/// beyond the `f64` range).
 fn check_circumcenter(
     t: T,
     rounded: &[f64; 2],
@@ -549,18 +618,137 @@ fn check_circumcenter(
 ) -> Result<(), TestCaseError> {
     let got = circumcenter(t[0], t[1], t[2]).expect("not collinear");
     let two = BigRational::from_integer(2.into());
-    let tolerance = rat(256.0 * ulp(got[0].abs().max(got[1].abs())));
+    let larger = got[0].abs().max(got[1].abs());
     for i in 0..2 {
-        prop_assert!(got[i].is_finite());
+        if rounded[i].is_infinite() {
+            prop_assert_eq!(got[i], rounded[i]);
+            continue;
+        }
+        prop_assert!(got[i].is_finite(), "{:?} vs exact {:?}", got, rounded);
         prop_assert!((rat(rounded[i]) - &exact[i]).abs() * &two <= rat(ulp(rounded[i])));
-        prop_assert!(
-            (rat(got[i]) - &exact[i]).abs() <= tolerance,
-            "{:?} vs exact {:?}",
-            got,
-            rounded
-        );
+        if larger.is_finite() {
+            prop_assert!(
+                (rat(got[i]) - &exact[i]).abs() <= rat(256.0 * ulp(larger)),
+                "{:?} vs exact {:?}",
+                got,
+                rounded
+            );
+        }
     }
     Ok(())
+}
+
+/// The hull scaled by `2^k` where that is exact, else as it is: a rounded hull may repeat a
+/// vertex or bend, and the hull predicate requires a convex polygon.
+fn scaled_hull(hull: &[P], k: i32) -> Vec<P> {
+    let scaled: Vec<P> = hull.iter().map(|q| q.map(|x| ldexp(x, k))).collect();
+    let exact = hull
+        .iter()
+        .zip(&scaled)
+        .all(|(p, q)| (0..2).all(|i| is_scaled(p[i], k, q[i])));
+    if exact {
+        scaled
+    } else {
+        hull.to_vec()
+    }
+}
+
+/// The scene of nine points in the order `p, a, b, t1, t2`.
+fn scene_of(pts: &[P], hull: Vec<P>) -> Scene {
+    Scene {
+        p: pts[0],
+        a: pts[1],
+        b: pts[2],
+        t1: [pts[3], pts[4], pts[5]],
+        t2: [pts[6], pts[7], pts[8]],
+        hull,
+    }
+}
+
+/// A scene anywhere in the exponent range of `f64`, one of five kinds by `seed`: an
+/// adversarial scene scaled by `2^k` for any `k` that keeps it finite (into the subnormals
+/// too, where the scaling rounds); the same with its two halves scaled apart (`1e-300` beside
+/// `1e300`); independent random exponents from the subnormals to `2^1023`, zeros included;
+/// a lattice scene a few ulps apart near `f64::MAX`; random points of magnitude up to
+/// `f64::MAX`, whose differences overflow.
+fn full_range_scene(seed: u64) -> Scene {
+    let mut rng = Rng::new(seed ^ 0x0f0f_1234);
+    let s = adversarial_scene(seed);
+    let hi = [s.p, s.a, s.b]
+        .into_iter()
+        .chain(s.t1)
+        .chain(s.t2)
+        .chain(s.hull.iter().copied())
+        .flatten()
+        .filter(|&x| x != 0.0)
+        .map(exponent)
+        .max()
+        .unwrap_or(0);
+    let scale = |p: P, k: i32| [ldexp(p[0], k), ldexp(p[1], k)];
+    match seed % 5 {
+        0 => {
+            let k = rng.range(-1200 - i64::from(hi), 1023 - i64::from(hi)) as i32;
+            Scene {
+                p: scale(s.p, k),
+                a: scale(s.a, k),
+                b: scale(s.b, k),
+                t1: s.t1.map(|q| scale(q, k)),
+                t2: s.t2.map(|q| scale(q, k)),
+                hull: scaled_hull(&s.hull, k),
+            }
+        }
+        1 => {
+            let tiny = rng.range(-1150, -900) as i32 - hi;
+            let huge = rng.range(700, 1000) as i32 - hi;
+            let (k1, k2) = if rng.chance(1, 2) {
+                (tiny, huge)
+            } else {
+                (huge, tiny)
+            };
+            Scene {
+                p: scale(s.p, k2),
+                a: scale(s.a, k1),
+                b: scale(s.b, k2),
+                t1: s.t1.map(|q| scale(q, k1)),
+                t2: [scale(s.t2[0], k1), scale(s.t2[1], k2), scale(s.t2[2], k2)],
+                hull: scaled_hull(&s.hull, k2),
+            }
+        }
+        2 => {
+            let coord = |rng: &mut Rng| match rng.range(0, 9) {
+                0 => 0.0,
+                1 => f64::from_bits(rng.range(1, 1 << 20) as u64),
+                2 => f64::MAX * if rng.chance(1, 2) { 1.0 } else { -1.0 },
+                _ => ldexp(rng.unit() * 2.0 - 1.0, rng.range(-1074, 1023) as i32),
+            };
+            let point = |rng: &mut Rng| [coord(rng), coord(rng)];
+            let pts: Vec<P> = (0..9).map(|_| point(&mut rng)).collect();
+            scene_of(&pts, s.hull)
+        }
+        3 => {
+            // Near f64::MAX, a lattice in units of the ulp there (2^971): exact zeros.
+            let (p, a, b, t1, t2, hull) = lattice_scene(&mut rng);
+            let base = [1.5 * pow2(1023), -1.5 * pow2(1023)];
+            let f = |q: I| {
+                [
+                    base[0] + q[0] as f64 * pow2(971),
+                    base[1] + q[1] as f64 * pow2(971),
+                ]
+            };
+            let pts: Vec<P> = [p, a, b].into_iter().chain(t1).chain(t2).map(f).collect();
+            scene_of(&pts, mapped_hull(hull, f))
+        }
+        _ => {
+            let point = |rng: &mut Rng| {
+                [
+                    (rng.unit() * 2.0 - 1.0) * f64::MAX,
+                    (rng.unit() * 2.0 - 1.0) * f64::MAX,
+                ]
+            };
+            let pts: Vec<P> = (0..9).map(|_| point(&mut rng)).collect();
+            scene_of(&pts, s.hull)
+        }
+    }
 }
 
 proptest! {
@@ -583,23 +771,46 @@ proptest! {
         check(&wide_scene(seed))?;
     }
 
-    /// The same triangle pair at every scale of the envelope gives the same answers.
+    /// Every predicate agrees with the reference anywhere in the exponent range of `f64`.
+    #[test]
+    fn predicates_match_reference_on_every_finite_input(seed in any::<u64>()) {
+        check(&full_range_scene(seed))?;
+    }
+
+    /// The same scene at every scale `2^k` that represents it exactly, from the subnormals
+    /// to the top of the `f64` range, gives the same answers.
     #[test]
     fn answers_are_scale_invariant(seed in any::<u64>(), fraction in 0.0f64..1.0) {
         let s = adversarial_scene(seed);
-        // Scale by 2^k with every coordinate staying in the envelope [2^-142, 2^201].
-        let exponent = |x: f64| ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
-        let all = [s.p, s.a, s.b].into_iter().chain(s.t1).chain(s.t2).flatten().filter(|&x| x != 0.0);
-        let (lo, hi) = all.fold((i32::MAX, i32::MIN), |(lo, hi), x| (lo.min(exponent(x)), hi.max(exponent(x))));
-        prop_assume!(lo <= hi);
-        let (kmin, kmax) = (-142 - lo, 200 - hi);
-        let k = kmin + ((kmax - kmin + 1) as f64 * fraction) as i32;
-        let k = k.min(kmax);
-        let f = |p: P| [p[0] * pow2(k), p[1] * pow2(k)];
+        let all: Vec<f64> = [s.p, s.a, s.b].into_iter().chain(s.t1).chain(s.t2).flatten().collect();
+        let nonzero = all.iter().copied().filter(|&x| x != 0.0);
+        let (lo, hi) = nonzero.fold((i32::MAX, i32::MIN), |(lo, hi), x| (lo.min(exponent(x)), hi.max(exponent(x))));
+        prop_assert!(lo <= hi, "lattice scenes have non-zero coordinates");
+        // Lowest bit of any coordinate: scaling keeps it at or above 2^-1074.
+        let low_bit = all.iter().filter(|&&x| x != 0.0).map(|&x| {
+            let m = x.to_bits() & ((1 << 52) - 1) | (1 << 52);
+            exponent(x) - 52 + m.trailing_zeros() as i32
+        }).min().unwrap();
+        let (kmin, kmax) = (-1074 - low_bit, 1023 - hi);
+        let k = (kmin + ((kmax - kmin + 1) as f64 * fraction) as i32).min(kmax);
+        let f = |p: P| [ldexp(p[0], k), ldexp(p[1], k)];
+        for (&x, y) in all.iter().zip([s.p, s.a, s.b].into_iter().chain(s.t1).chain(s.t2).flat_map(f)) {
+            prop_assert!(is_scaled(x, k, y), "{} at 2^{}", x, k);
+        }
         let (t1, t2) = (s.t1.map(f), s.t2.map(f));
         prop_assert_eq!(orient2d_circumcenter(f(s.a), f(s.b), t1), orient2d_circumcenter(s.a, s.b, s.t1));
         prop_assert_eq!(dot_sign_circumcenters(f(s.p), t1, t2), dot_sign_circumcenters(s.p, s.t1, s.t2));
         prop_assert_eq!(compare_circumradius(t1, t2), compare_circumradius(s.t1, s.t2));
+        prop_assert_eq!(orient2d(f(s.a), f(s.b), f(s.p)), orient2d(s.a, s.b, s.p));
+        prop_assert_eq!(incircle(t1[0], t1[1], t1[2], t2[0]), incircle(s.t1[0], s.t1[1], s.t1[2], s.t2[0]));
+        prop_assert_eq!(incircle(t1[0], t1[1], t1[2], f(s.p)), incircle(s.t1[0], s.t1[1], s.t1[2], s.p));
+        let exact = |t: T| circumcenter_exact(t[0], t[1], t[2]).map(|o| o.to_f64());
+        if let (Some(o), Some(scaled)) = (exact(s.t1), exact(t1)) {
+            // Correctly rounded circumcenters scale with the input where both are normal.
+            if o.iter().chain(&scaled).all(|x| x.is_normal() || *x == 0.0) {
+                prop_assert_eq!(scaled, f(o));
+            }
+        }
     }
 }
 

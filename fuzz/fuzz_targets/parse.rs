@@ -1,6 +1,6 @@
 //! `wdm_crust::io::read_points` on arbitrary bytes, in every input format (given or detected):
-//! an error with a plausible line number or points, never a panic. Accepted points are inside
-//! the exact envelope (so `triangulate` accepts them); the result does not depend on how the
+//! an error with a plausible line number or points, never a panic. Accepted points are finite
+//! (so `triangulate` accepts them); the result does not depend on how the
 //! reader splits its buffer; detection on the fly agrees with `detect_format`; and the points
 //! survive a round trip through plain text.
 #![no_main]

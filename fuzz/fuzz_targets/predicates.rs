@@ -2,8 +2,9 @@
 //! and on circumcenters `orient2d_circumcenter`, `dot_sign_circumcenters`,
 //! `compare_circumradius`, `circumcenter_in_convex_hull`; `circumcenter_exact` is exact and
 //! `circumcenter` within 256 ulps of it. Points come from a structured scene (lattices,
-//! circles, lines, both ends of the envelope, ulp nudges), so exact zeros and near-zeros are
-//! common; outside the envelope only "no panic" is required.
+//! circles, lines, every scale from the subnormals to the top of the `f64` range, ulp
+//! nudges), so exact zeros and near-zeros are common. Every finite input is checked against
+//! the reference; for NaN and infinities only "no panic" is required.
 #![no_main]
 
 use arbitrary::Arbitrary;

@@ -4,17 +4,31 @@
 //! and full grids (cocircular everywhere), collinear lattice points, lattice points of circles
 //! `x² + y² = r²` (many cocircular points), sampled curves (realistic input for the
 //! reconstruction), exact duplicates and ulp-nudged copies of earlier points, and raw `f64`
-//! bit patterns (NaN, infinities, subnormals, the envelope boundaries). Placements rotate
-//! exactly (quarter turns, Pythagorean rotations) or inexactly (an `f64` angle), scale by a
-//! power of two chosen near either end of the exact envelope `|x| ∈ {0} ∪ [2^-142, 2^201]`,
-//! stretch one axis by another power of two and translate (exactly or with rounding, which
-//! leaves nearly degenerate configurations). The fuzzer mutates the structure, not the noise.
+//! bit patterns (NaN, infinities, subnormals, the ends of the `f64` range, and the bounds
+//! `2^-142`, `2^201` of the adaptive predicates' range, where the kernel changes path).
+//! Placements rotate exactly (quarter turns, Pythagorean rotations) or inexactly (an `f64`
+//! angle), scale by a power of two anywhere from the subnormals to `2^1023`, biased towards
+//! the ends of the range and the kernel's path boundaries, stretch one axis by another power
+//! of two and translate (exactly or with rounding, which leaves nearly degenerate
+//! configurations). No input is filtered: every finite coordinate must be handled exactly.
+//! The fuzzer mutates the structure, not the noise.
 
 use arbitrary::Arbitrary;
 
 /// `2^k` for `k` in the normal range `-1022..=1023` (clamped).
 pub fn pow2(k: i32) -> f64 {
     f64::from_bits(((k.clamp(-1022, 1023) + 1023) as u64) << 52)
+}
+
+/// `x · 2^k` for any `k` (in normal-range steps; rounds only where the result is subnormal,
+/// overflows only where it is beyond the `f64` range).
+pub fn ldexp(mut x: f64, mut k: i32) -> f64 {
+    while k != 0 && x != 0.0 && x.is_finite() {
+        let step = k.clamp(-1000, 1000);
+        x *= pow2(step);
+        k -= step;
+    }
+    x
 }
 
 /// `x` moved by `steps` units in the last place (towards +∞ for positive steps).
@@ -131,18 +145,18 @@ pub enum RawCoord {
     Bits(u64),
     /// A value from [`SPECIAL_VALUES`].
     Special(u8),
-    /// A value with an exponent inside the envelope: `±(1 + m/2^52) · 2^e`.
-    InEnvelope {
+    /// A finite value: `±(1 + m/2^52) · 2^e`, rounded where that is subnormal.
+    Finite {
         /// Mantissa bits (low 52 used).
         mantissa: u64,
-        /// Exponent, reduced to `-142..=200`.
+        /// Exponent, reduced to `-1080..=1023`.
         exponent: i16,
         /// Sign.
         negative: bool,
     },
 }
 
-/// Coordinates at and around the edges of the envelope and of `f64`.
+/// Coordinates at and around the ends of `f64` and of the adaptive predicates' range.
 pub const SPECIAL_VALUES: [f64; 16] = [
     0.0,
     -0.0,
@@ -194,18 +208,23 @@ pub enum Rotation {
     Float(u16),
 }
 
-/// A power of two, biased towards the ends of the envelope.
+/// A power of two, biased towards the ends of the `f64` range and the bounds of the
+/// adaptive predicates' range.
 #[derive(Debug, Clone, Copy, Arbitrary)]
 pub enum Exponent {
     /// `2^0`.
     Unit,
     /// `2^(k mod 17 − 8)`.
     Small(i8),
-    /// Near the small end: `2^(−144 + k mod 24)`.
+    /// Around the small bound of the adaptive range: `2^(−144 + k mod 24)`.
     Tiny(u8),
-    /// Near the large end: `2^(170 + k mod 36)`; large lattice points may leave the envelope.
+    /// Around the large bound of the adaptive range: `2^(170 + k mod 36)`.
     Huge(u8),
-    /// Anywhere in `2^(−160..=220)`.
+    /// Into the subnormals: `2^(−1090 + k mod 80)`.
+    Subnormal(u8),
+    /// Near the top of the `f64` range: `2^(960 + k mod 64)`; large points may overflow.
+    Top(u8),
+    /// Anywhere in `2^(−1090..=1023)`.
     Any(i16),
 }
 
@@ -217,7 +236,9 @@ impl Exponent {
             Exponent::Small(k) => i32::from(k).rem_euclid(17) - 8,
             Exponent::Tiny(k) => -144 + i32::from(k % 24),
             Exponent::Huge(k) => 170 + i32::from(k % 36),
-            Exponent::Any(k) => i32::from(k).rem_euclid(381) - 160,
+            Exponent::Subnormal(k) => -1090 + i32::from(k % 80),
+            Exponent::Top(k) => 960 + i32::from(k % 64),
+            Exponent::Any(k) => i32::from(k).rem_euclid(2114) - 1090,
         }
     }
 }
@@ -293,12 +314,12 @@ impl Placement {
         }
         let k = self.scale.value();
         let ky = k + self.stretch.map_or(0, |s| i32::from(s).clamp(-8, 8));
-        x *= pow2(k);
-        y *= pow2(ky);
+        x = ldexp(x, k);
+        y = ldexp(y, ky);
         if let Some(shift) = self.shift {
             let j = i32::from(shift.j).clamp(-60, 60);
-            x += f64::from(shift.m[0]) * pow2(k + j);
-            y += f64::from(shift.m[1]) * pow2(ky + j);
+            x += ldexp(f64::from(shift.m[0]), k + j);
+            y += ldexp(f64::from(shift.m[1]), ky + j);
         }
         [x, y]
     }
@@ -333,14 +354,14 @@ impl RawCoord {
         match self {
             RawCoord::Bits(b) => f64::from_bits(b),
             RawCoord::Special(k) => SPECIAL_VALUES[k as usize % SPECIAL_VALUES.len()],
-            RawCoord::InEnvelope {
+            RawCoord::Finite {
                 mantissa,
                 exponent,
                 negative,
             } => {
-                let e = i32::from(exponent).rem_euclid(343) - 142;
+                let e = i32::from(exponent).rem_euclid(2104) - 1080;
                 let m = 1.0 + (mantissa & ((1 << 52) - 1)) as f64 / pow2(52);
-                let v = m * pow2(e);
+                let v = ldexp(m, e);
                 if negative {
                     -v
                 } else {

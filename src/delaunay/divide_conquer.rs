@@ -23,13 +23,42 @@
 use super::mesh::{prev, Mesh, GHOST};
 use super::triangulation::{Triangulation, NO_TWIN};
 use super::zorder::{lexicographic, order, Grid};
+use crate::kernel::basic::orient_in;
+use crate::kernel::scale::shift_by;
 use crate::kernel::static_filter::{Lifted, StaticFilter};
-use crate::kernel::{incircle, orient, Sign};
-use crate::predicates::{orient2d, Orientation};
+use crate::kernel::Sign;
+use crate::predicates::Orientation;
 
-/// Triangulates validated points (finite, inside the exact envelope). The result keeps the
-/// points in the order the construction leaves them in (Z order, see the module docs).
-pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
+/// Triangulates validated (finite) points. The result keeps the points in the order the
+/// construction leaves them in (Z order, see the module docs).
+///
+/// `shift` is the power of two that brings every non-zero coordinate into the adaptive
+/// predicates' range (`kernel::scale::Magnitudes::adaptive_shift`): where it is not zero
+/// the construction runs on the points times `2^shift`, exactly and so with the same
+/// decisions, at the speed of ordinary input, and the result gets the caller's coordinates
+/// back. Where it is `None` (exponents spread wider than that range) it runs on the points
+/// as given, its predicates taking their wide-exponent exact stage where needed.
+pub(super) fn build(points: &[[f64; 2]], shift: Option<i32>) -> Triangulation {
+    match shift {
+        Some(s) if s != 0 => {
+            let scaled: Vec<[f64; 2]> = points.iter().map(|p| p.map(|x| shift_by(x, s))).collect();
+            let mut tri = build_as_given::<true>(&scaled);
+            drop(scaled);
+            for (p, &input) in tri.points.iter_mut().zip(&tri.input_of) {
+                *p = points[input as usize];
+            }
+            tri
+        }
+        Some(_) => build_as_given::<true>(points),
+        None => build_as_given::<false>(points),
+    }
+}
+
+/// [`build`] on the points as they are; `IN_RANGE` tells whether every coordinate is zero
+/// or in the adaptive predicates' range, so that the exact stages of the construction's
+/// predicates skip their range check and underflow terms (a monomorphised construction: no
+/// test of the mode in the inner loop).
+fn build_as_given<const IN_RANGE: bool>(points: &[[f64; 2]]) -> Triangulation {
     if points.is_empty() {
         return Triangulation {
             points: Vec::new(),
@@ -49,7 +78,7 @@ pub(super) fn build(points: &[[f64; 2]]) -> Triangulation {
     let mut halfedges = Vec::new();
     let hull;
     if n >= 2 {
-        let mut dc = DivideConquer {
+        let mut dc = DivideConquer::<IN_RANGE> {
             pts: &mut pts,
             items: &mut items,
             grid,
@@ -163,7 +192,7 @@ struct Candidate {
     cross: f64,
 }
 
-struct DivideConquer<'a> {
+struct DivideConquer<'a, const IN_RANGE: bool> {
     /// Distinct points; a subproblem may reorder its own range before recursing.
     pts: &'a mut [[f64; 2]],
     /// Z-order item (key and input index) of every point, reordered with it.
@@ -173,7 +202,7 @@ struct DivideConquer<'a> {
     scratch: Vec<([f64; 2], u64)>,
 }
 
-impl DivideConquer<'_> {
+impl<const IN_RANGE: bool> DivideConquer<'_, IN_RANGE> {
     #[inline]
     fn p(&self, v: u32) -> [f64; 2] {
         self.pts[v as usize]
@@ -188,7 +217,7 @@ impl DivideConquer<'_> {
     #[inline(always)]
     fn settle_candidate(
         &mut self,
-        f: &StaticFilter,
+        f: &StaticFilter<IN_RANGE>,
         side: Side,
         ghost: Option<u32>,
         (pl, pr, rel_r): ([f64; 2], [f64; 2], &Lifted),
@@ -198,7 +227,10 @@ impl DivideConquer<'_> {
         let mut cross = rel_r.cross(&rel);
         let mut valid = false;
         if let Some(g) = ghost {
-            valid = f.orientation(cross).unwrap_or_else(|| orient(p, pl, pr)) == Sign::Positive;
+            valid = f
+                .orientation(cross)
+                .unwrap_or_else(|| f.orient_fallback(p, pl, pr))
+                == Sign::Positive;
             if valid {
                 let mut flipped = false;
                 loop {
@@ -210,7 +242,7 @@ impl DivideConquer<'_> {
                     let rel_x = Lifted::new(px, pl);
                     let delete = f
                         .in_circle(rel_r, &rel, &rel_x, cross)
-                        .unwrap_or_else(|| incircle(pl, pr, p, px))
+                        .unwrap_or_else(|| f.incircle_fallback(pl, pr, p, px))
                         == Sign::Positive;
                     if !delete {
                         break;
@@ -224,8 +256,10 @@ impl DivideConquer<'_> {
                     flipped = true;
                 }
                 if flipped {
-                    valid =
-                        f.orientation(cross).unwrap_or_else(|| orient(p, pl, pr)) == Sign::Positive;
+                    valid = f
+                        .orientation(cross)
+                        .unwrap_or_else(|| f.orient_fallback(p, pl, pr))
+                        == Sign::Positive;
                 }
             }
         }
@@ -357,7 +391,11 @@ impl DivideConquer<'_> {
             self.mesh.pair(s, v[0], v[1]);
             ghosts = [s, s, s];
         } else {
-            match orient2d(self.p(v[0]), self.p(v[1]), self.p(v[2])) {
+            match Orientation::from(orient_in::<IN_RANGE>(
+                self.p(v[0]),
+                self.p(v[1]),
+                self.p(v[2]),
+            )) {
                 Orientation::CounterClockwise => {
                     self.mesh.triangle(s, v[0], v[1], v[2]);
                     ghosts = [s + 1, s + 1, s + 2];
@@ -440,7 +478,7 @@ impl DivideConquer<'_> {
             ),
         };
         // Every point of the merge lies in the bounding box of the extreme points.
-        let f = StaticFilter::for_box(
+        let f = StaticFilter::<IN_RANGE>::for_box(
             self.p(e.max_x.v)[0] - self.p(e.min_x.v)[0],
             self.p(e.max_y.v)[1] - self.p(e.min_y.v)[1],
         );
@@ -511,7 +549,7 @@ impl DivideConquer<'_> {
             let take_right = !l_valid
                 || (r_valid
                     && f.in_circle(&rel_r, &rel_lc, &rel_rc, cross_l)
-                        .unwrap_or_else(|| incircle(pl, pr, plc, prc))
+                        .unwrap_or_else(|| f.incircle_fallback(pl, pr, plc, prc))
                         == Sign::Positive);
             if let (true, Some(b_ghost)) = (take_right, b) {
                 let next;
@@ -581,7 +619,7 @@ mod tests {
 
     /// Valid, and the same triangles (up to relabelling) for a reversed and a shuffled input.
     fn check(points: &[[f64; 2]]) -> Triangulation {
-        let tri = build(points);
+        let tri = build(points, Some(0));
         if let Err(e) = tri.validate() {
             panic!("{e}");
         }
@@ -592,7 +630,7 @@ mod tests {
         }
         let reversed: Vec<[f64; 2]> = points.iter().rev().copied().collect();
         for other in [shuffled, reversed] {
-            let t = build(&other);
+            let t = build(&other, Some(0));
             assert_eq!(by_coordinates(&t), by_coordinates(&tri));
             let hull = |t: &Triangulation| -> Vec<[f64; 2]> {
                 t.hull.iter().map(|&v| t.points[v as usize]).collect()

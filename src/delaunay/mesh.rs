@@ -171,7 +171,7 @@ impl Mesh {
     /// Deletes the edge between `l` and `c` on the left side of a merge by flipping it with
     /// the ghost `a = [c, l, GHOST]`: the real triangle `[l, c, x]` behind it and `a` become the
     /// ghosts `[x, l]` (still slot `a`) and `[c, x]`. Returns `x`.
-    #[inline]
+    #[inline(always)] // into both monomorphisations of the merge
     pub fn flip_left(&mut self, a: u32) -> u32 {
         let h = self.twin[(3 * a) as usize]; // l → c
         let (hn, hp) = (next(h), prev(h)); // c → x, x → l
@@ -193,7 +193,7 @@ impl Mesh {
     /// Mirror of [`Self::flip_left`] on the right side: the ghost `b = [r, c, GHOST]` and the
     /// real triangle `[c, r, z]` behind it become the ghosts `[r, z]` (still slot `b`) and
     /// `[z, c]`. Returns `z`.
-    #[inline]
+    #[inline(always)] // into both monomorphisations of the merge
     pub fn flip_right(&mut self, b: u32) -> u32 {
         let h = self.twin[(3 * b) as usize]; // c → r
         let (hn, hp) = (next(h), prev(h)); // r → z, z → c

@@ -23,7 +23,7 @@ pub use locate::{Location, Locator};
 pub use triangulation::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
 pub use validate::ValidationError;
 
-use crate::error::{check_points, Error};
+use crate::error::{scan_points, Error};
 
 /// Exact Delaunay triangulation of `points`.
 ///
@@ -32,9 +32,17 @@ use crate::error::{check_points, Error};
 /// With fewer than three distinct points, or all of them on one line, there are no triangles
 /// and the hull is the chain of points along the line.
 ///
+/// Every finite coordinate is accepted, subnormals and values near `f64::MAX` included, and
+/// the result is exact for all of them: input whose magnitudes lie outside the adaptive
+/// predicates' range ([`crate::error::MIN_MAGNITUDE`] ..= [`crate::error::MAX_MAGNITUDE`]) is
+/// triangulated on a copy scaled by a power of two (exact, and the triangles are the same),
+/// or, where no single power of two brings all of it into that range (`1e-300` beside
+/// `1e300`), with predicates that fall back to wide-exponent integer arithmetic. The
+/// triangulation keeps the caller's coordinates.
+///
 /// # Errors
-/// A coordinate that is NaN, infinite or outside the exact envelope (see [`crate::error`])
-/// gives an [`Error`] naming the point.
+/// A coordinate that is NaN or infinite gives [`Error::NotFinite`] naming the point; more
+/// than `2^32 − 2` points give [`Error::TooManyPoints`].
 ///
 /// ```
 /// let points = [[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [0.0, 0.0]];
@@ -45,6 +53,6 @@ use crate::error::{check_points, Error};
 /// # Ok::<(), wdm_crust::Error>(())
 /// ```
 pub fn triangulate(points: &[[f64; 2]]) -> Result<Triangulation, Error> {
-    check_points(points)?;
-    Ok(divide_conquer::build(points))
+    let magnitudes = scan_points(points)?;
+    Ok(divide_conquer::build(points, magnitudes.adaptive_shift()))
 }

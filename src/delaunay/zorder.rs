@@ -22,6 +22,8 @@ const DIGIT_BITS: u32 = 11;
 #[derive(Debug, Clone, Copy)]
 pub struct Grid {
     min: [f64; 2],
+    /// 1, or for an extent below 2^-900 the power of two that makes `2^32 / extent` finite.
+    pre: [f64; 2],
     scale: [f64; 2],
     index_bits: u32,
 }
@@ -44,19 +46,29 @@ impl Grid {
                 hi[k] = hi[k].max(p[k]);
             }
         }
-        // 2^32 / extent cannot overflow: the extent is 0 or at least 2^-194 (coordinates are
-        // 0 or at least 2^-142 in magnitude). A zero extent puts everything in cell 0.
-        let scale = |k: usize| {
+        // Any finite coordinates: an extent that overflows is taken in halves, and a tiny
+        // one (subnormal coordinates) is scaled up before 2^32 / extent is formed. A zero
+        // extent puts everything in cell 0.
+        let axis = |k: usize| -> (f64, f64) {
+            const CELLS: f64 = 4_294_967_296.0; // 2^32
+            const TINY: f64 = 1.1830521861667747e-271; // 2^-900
+            const PRE: f64 = 4.149515568880993e180; // 2^600
             let extent = hi[k] - lo[k];
-            if extent > 0.0 {
-                4_294_967_296.0 / extent
+            if extent <= 0.0 {
+                (1.0, 0.0)
+            } else if extent == f64::INFINITY {
+                (1.0, CELLS / 2.0 / (hi[k] * 0.5 - lo[k] * 0.5))
+            } else if extent < TINY {
+                (PRE, CELLS / (extent * PRE))
             } else {
-                0.0
+                (1.0, CELLS / extent)
             }
         };
+        let (x, y) = (axis(0), axis(1));
         Grid {
             min: lo,
-            scale: [scale(0), scale(1)],
+            pre: [x.0, y.0],
+            scale: [x.1, y.1],
             index_bits,
         }
     }
@@ -65,7 +77,7 @@ impl Grid {
     /// `cell(a) < cell(b)` implies `a[k] < b[k]`.
     #[inline]
     pub fn cell(&self, p: [f64; 2], k: usize) -> u32 {
-        ((p[k] - self.min[k]) * self.scale[k]) as u32
+        ((p[k] - self.min[k]) * self.pre[k] * self.scale[k]) as u32
     }
 
     /// The sorted part of the Morton key (the low `index_bits` zero).

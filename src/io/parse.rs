@@ -45,9 +45,10 @@
 //!
 //! Every problem is a [`ParseError`] carrying the 1-based number of the offending line: a
 //! token that is not a number, a line with only one number, a row with the wrong number of
-//! columns, a header without `x` and `y`, NaN or infinity, a coordinate outside the exact
-//! envelope ([`crate::error::check_coordinate`]), binary data, a `.node` header that does not
-//! match its points, or an I/O error.
+//! columns, a header without `x` and `y`, NaN or infinity, a decimal that rounds to zero or
+//! overflows as an `f64` (every finite `f64` itself is accepted, see
+//! [`crate::error::check_coordinate`]), binary data, a `.node` header that does not match its
+//! points, or an I/O error.
 
 use std::fmt;
 use std::fs::File;
@@ -62,7 +63,7 @@ use self::columns::{looks_like_header, Columns};
 use self::fields::is_blank_char;
 use self::node::{node_header_candidate, parse_node_header, NodeHeader, NodeState};
 use super::lines::LineReader;
-use crate::error::{check_coordinate, Error as CoordinateError};
+use crate::error::check_coordinate;
 
 /// The point-file formats understood by [`read_points`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -143,15 +144,14 @@ pub enum ParseErrorKind {
         /// The token as found.
         token: String,
     },
-    /// A non-zero coordinate is smaller in magnitude than 2^-142
-    /// ([`crate::error::MIN_MAGNITUDE`]), or so small that it rounds to zero.
+    /// A non-zero decimal so small that it rounds to zero as an `f64` (the point would move).
     TooSmall {
         /// The coordinate.
         axis: Axis,
         /// The token as found.
         token: String,
     },
-    /// A coordinate is larger in magnitude than 2^201 ([`crate::error::MAX_MAGNITUDE`]).
+    /// A decimal so large that it overflows an `f64`.
     TooLarge {
         /// The coordinate.
         axis: Axis,
@@ -255,13 +255,13 @@ impl fmt::Display for ParseErrorKind {
             }
             ParseErrorKind::TooSmall { axis, token } => write!(
                 f,
-                "{axis} coordinate {token:?} is non-zero but smaller in magnitude than 2^-142 (about 1.8e-43), \
-                 the smallest that the exact predicates support"
+                "{axis} coordinate {token:?} is non-zero but rounds to zero as a 64-bit float \
+                 (its magnitude is below about 2.5e-324)"
             ),
             ParseErrorKind::TooLarge { axis, token } => write!(
                 f,
-                "{axis} coordinate {token:?} is larger in magnitude than 2^201 (about 3.2e60), \
-                 the largest that the exact predicates support"
+                "{axis} coordinate {token:?} overflows a 64-bit float (its magnitude is above \
+                 about 1.8e308)"
             ),
             ParseErrorKind::NodeHeader { reason } => write!(
                 f,
@@ -581,7 +581,7 @@ fn strip_comment(line: &str) -> &str {
     line.trim_matches(is_blank_char)
 }
 
-/// Parses one coordinate and checks it against the exact envelope.
+/// Parses one coordinate: any decimal that is a finite `f64` without rounding to zero.
 #[inline]
 pub(super) fn parse_coordinate(token: &str, axis: Axis) -> Result<f64, ParseErrorKind> {
     let value = token
@@ -606,14 +606,6 @@ pub(super) fn parse_coordinate(token: &str, axis: Axis) -> Result<f64, ParseErro
     }
     match check_coordinate(0, value) {
         Ok(()) => Ok(value),
-        Err(CoordinateError::TooSmall { .. }) => Err(ParseErrorKind::TooSmall {
-            axis,
-            token: shorten(token),
-        }),
-        Err(CoordinateError::TooLarge { .. }) => Err(ParseErrorKind::TooLarge {
-            axis,
-            token: shorten(token),
-        }),
         Err(_) => Err(ParseErrorKind::NotFinite {
             axis,
             token: shorten(token),

@@ -10,8 +10,8 @@
 /// zeros, which the adaptive predicate reaches only after its most expensive stages.
 pub(super) fn lattice_incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Option<i128> {
     let coords = [a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]];
-    // Coordinates are zero or normal (the envelope excludes subnormals): value =
-    // mantissa · 2^(exponent − 1075) with the implicit bit in the mantissa.
+    // value = mantissa · 2^(exponent − 1075) with the implicit bit in the mantissa, for
+    // normal values; subnormal ones (exponent field 0) are declined below.
     let parts = |x: f64| {
         let bits = x.to_bits();
         let mantissa = (bits & ((1 << 52) - 1)) | (1 << 52);
@@ -22,6 +22,9 @@ pub(super) fn lattice_incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2
     for &x in &coords {
         if x != 0.0 {
             let (m, e) = parts(x);
+            if e == -1075 {
+                return None; // subnormal: the parts above would be wrong
+            }
             g = g.min(e + m.trailing_zeros() as i32);
         }
     }

@@ -16,7 +16,9 @@
 //!    bounds propagated through every operation) catches exact zeros whose operations were
 //!    all exact in `f64`. The crust's mixed predicates start at the running-error filter.
 //! 2. **Exact evaluation.** For orientation and in-circle of input points: the `robust`
-//!    crate's adaptive predicates (after an `i128` evaluation for lattice input, `lattice`).
+//!    crate's adaptive predicates (after an `i128` evaluation for lattice input, `lattice`)
+//!    on inputs in their exact range, or after a power-of-two rescale into it; inputs spread
+//!    wider than that range go to the integers below (`wide`).
 //!    For everything else: every `f64` is a dyadic rational, so the inputs of one call are
 //!    integers in units of one power of two and the polynomial is evaluated in `BigInt`
 //!    without any fraction (`exact`).
@@ -42,6 +44,13 @@
 //!
 //! `Zero` is always the exact degenerate case (collinear, cocircular, equal).
 //!
+//! # Every finite input
+//!
+//! All predicates are exact on every finite `f64`: each filter's bound covers underflow
+//! (an absolute term) and fails on overflow (an infinite or NaN bound never certifies), and
+//! each exact stage works at any exponent. See `basic` for the terms added to Shewchuk's
+//! bounds and `wide` for the exact stage of orientation and in-circle.
+//!
 //! # Why hand-written
 //!
 //! Exactness: every answer is the one exact real arithmetic on the `f64` inputs gives, which
@@ -62,10 +71,11 @@ mod lattice;
 pub(crate) mod metric;
 pub(crate) mod mixed;
 mod poly;
-mod scale;
+pub(crate) mod scale;
 mod sign;
 pub(crate) mod static_filter;
 pub(crate) mod stats;
+mod wide;
 
 pub(crate) use basic::{incircle, orient};
 pub(crate) use box_side::{

@@ -158,3 +158,29 @@ pub(super) fn dot_points_terms<T: Arith>(p: &Pt<T>, s: &Pt<T>, q: &Pt<T>) -> [T;
     let (sp, qp) = (diff(s, p), diff(q, p));
     [sp[0].mul(&qp[0]).add(&sp[1].mul(&qp[1]))]
 }
+
+// ---------------------------------------------------------------------------------------
+// Orientation and in-circle of input points, for their exact stage outside the range of the
+// adaptive predicates (`super::wide`).
+
+/// `(a − c) × (b − c)` (degree 2): positive iff `a → b → c` is counterclockwise.
+#[inline(always)]
+pub(super) fn orient_terms_points<T: Arith>(a: &Pt<T>, b: &Pt<T>, c: &Pt<T>) -> [T; 1] {
+    [cross(&diff(a, c), &diff(b, c))]
+}
+
+/// The in-circle determinant of `a, b, c, d` translated to `d` (degree 4): positive iff `d`
+/// is inside the circle through the counterclockwise `a, b, c`.
+#[inline(always)]
+pub(super) fn incircle_terms_points<T: Arith>(
+    a: &Pt<T>,
+    b: &Pt<T>,
+    c: &Pt<T>,
+    d: &Pt<T>,
+) -> [T; 1] {
+    let (ad, bd, cd) = (diff(a, d), diff(b, d), diff(c, d));
+    [norm2(&ad)
+        .mul(&cross(&bd, &cd))
+        .add(&norm2(&bd).mul(&cross(&cd, &ad)))
+        .add(&norm2(&cd).mul(&cross(&ad, &bd)))]
+}

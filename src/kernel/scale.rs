@@ -75,3 +75,91 @@ pub(super) fn normalize<const N: usize>(points: [[f64; 2]; N]) -> ([[f64; 2]; N]
         None => (points, 0),
     }
 }
+
+/// `floor(log2 |x|)` for a finite non-zero `x`, subnormals included.
+pub(super) fn log2_floor(x: f64) -> i32 {
+    let bits = x.to_bits() & !(1u64 << 63);
+    let biased = (bits >> 52) as i32;
+    if biased == 0 {
+        // Subnormal: x = fraction · 2^-1074, its leading bit gives the exponent.
+        63 - bits.leading_zeros() as i32 - 1074
+    } else {
+        biased - 1023
+    }
+}
+
+/// The exponents `floor(log2 |x|)` of non-zero coordinates for which the adaptive
+/// predicates of `robust` are exact (no underflow or overflow in their expansions): the
+/// bounds of [`crate::error::MIN_MAGNITUDE`] and, one binade short, of
+/// [`crate::error::MAX_MAGNITUDE`].
+pub(super) const ADAPTIVE_EXPONENTS: (i32, i32) = (-142, 200);
+
+/// The smallest non-zero and the largest coordinate magnitude of a set of finite points:
+/// what decides whether they fit the adaptive predicates' range, after which power of two.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Magnitudes {
+    /// Smallest non-zero `|x|` (infinite if every coordinate is zero).
+    min: f64,
+    /// Largest `|x|`.
+    max: f64,
+}
+
+impl Magnitudes {
+    /// No coordinate yet.
+    pub(crate) const NONE: Magnitudes = Magnitudes {
+        min: f64::INFINITY,
+        max: 0.0,
+    };
+
+    /// Takes one finite coordinate into account.
+    #[inline(always)]
+    pub(crate) fn include(&mut self, x: f64) {
+        let a = x.abs();
+        if a != 0.0 && a < self.min {
+            self.min = a;
+        }
+        if a > self.max {
+            self.max = a;
+        }
+    }
+
+    /// Of a few points.
+    pub(super) fn of<const N: usize>(points: &[[f64; 2]; N]) -> Magnitudes {
+        let mut m = Magnitudes::NONE;
+        for &x in points.iter().flatten() {
+            m.include(x);
+        }
+        m
+    }
+
+    /// The power of two `2^s` that brings every non-zero magnitude into the adaptive
+    /// predicates' exponent range [`ADAPTIVE_EXPONENTS`]: `Some(0)` if they already lie in
+    /// it, otherwise the shift that centres the exponents in the range, or `None` if their
+    /// spread is wider than the range. Multiplying by that `2^s` is exact: every product is
+    /// normal and finite, at least `2^-142` and below `2^201`.
+    pub(crate) fn adaptive_shift(&self) -> Option<i32> {
+        if self.max == 0.0 || !self.max.is_finite() {
+            return (self.max == 0.0).then_some(0);
+        }
+        let (lo, hi) = (log2_floor(self.min), log2_floor(self.max));
+        let (min_e, max_e) = ADAPTIVE_EXPONENTS;
+        if lo >= min_e && hi <= max_e {
+            return Some(0);
+        }
+        if hi - lo > max_e - min_e {
+            return None;
+        }
+        // Centre [lo, hi] in [min_e, max_e]; the floor division keeps both ends inside.
+        Some((min_e + max_e - lo - hi).div_euclid(2))
+    }
+}
+
+/// `x · 2^s` for a shift from [`Magnitudes::adaptive_shift`] (exact there).
+#[inline(always)]
+pub(crate) fn shift_by(x: f64, s: i32) -> f64 {
+    // 2^s may itself be outside the f64 range (s up to ±1100): apply it in two halves,
+    // each exact, since the final product is normal and every intermediate lies between
+    // the input and the result.
+    let half = s / 2;
+    x * pow2(half) * pow2(s - half)
+}

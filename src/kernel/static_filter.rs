@@ -3,7 +3,9 @@
 //! bounds are those of `basic` (Shewchuk's), evaluated on the box extents; undecided tests go
 //! to [`super::basic`]'s semi-static filter and exact stages.
 
-use super::basic::{orient, CCW_BOUND, INCIRCLE_BOUND};
+use super::basic::{
+    incircle_in, orient_in, CCW_BOUND, INCIRCLE_BOUND, INCIRCLE_SLACK, ORIENT_SLACK,
+};
 use super::Sign;
 
 /// Error bounds valid for points in a box of width `w` and height `h`.
@@ -11,28 +13,54 @@ use super::Sign;
 /// Rounding is monotone: with every coordinate difference at most the (rounded) box extent
 /// in magnitude, every rounded product, sum and permanent of the evaluation is at most the
 /// same expression evaluated on the extents. So the static bound is at least the semi-static
-/// one of any test inside the box, and deciding with it is as safe.
+/// one of any test inside the box, underflow terms included, and deciding with it is as
+/// safe. Extents that overflow make the bounds infinite: nothing is decided here then.
+///
+/// `IN_RANGE`: every coordinate is zero or of an exponent in the adaptive predicates' range
+/// (`scale::ADAPTIVE_EXPONENTS`); then no product underflows, the bounds need no underflow
+/// terms and the fallbacks skip the exact stage's range check (`basic::orient_in`).
 #[derive(Debug, Clone, Copy)]
-pub struct StaticFilter {
+pub struct StaticFilter<const IN_RANGE: bool> {
     ccw: f64,
     incircle: f64,
 }
 
-impl StaticFilter {
+impl<const IN_RANGE: bool> StaticFilter<IN_RANGE> {
     /// `w`, `h`: the extents `max − min` of the coordinates, evaluated in floating point.
     #[inline]
-    pub fn for_box(w: f64, h: f64) -> StaticFilter {
+    pub fn for_box(w: f64, h: f64) -> StaticFilter<IN_RANGE> {
         let wh = w * h; // bounds |Δx·Δy| for any two differences
         let lift = w * w + h * h; // bounds Δx² + Δy²
         let pair = wh + wh;
         let permanent = pair * lift + pair * lift + pair * lift;
+        if IN_RANGE {
+            return StaticFilter {
+                ccw: CCW_BOUND * pair,
+                incircle: INCIRCLE_BOUND * permanent,
+            };
+        }
+        // The underflow terms of `basic`, on the lifts' bound: every test's are at most these.
+        let lifts = lift + lift + lift;
         StaticFilter {
-            ccw: CCW_BOUND * pair,
-            incircle: INCIRCLE_BOUND * permanent,
+            ccw: CCW_BOUND * pair + ORIENT_SLACK,
+            incircle: INCIRCLE_BOUND * permanent + (lifts * INCIRCLE_SLACK + ORIENT_SLACK),
         }
     }
 
-    /// [`orient`] for points in the box.
+    /// [`super::basic::orient`] for points of this filter's input: the fallback of the
+    /// static tests.
+    #[inline(always)]
+    pub fn orient_fallback(&self, a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
+        orient_in::<IN_RANGE>(a, b, c)
+    }
+
+    /// [`super::basic::incircle`] for points of this filter's input.
+    #[inline(always)]
+    pub fn incircle_fallback(&self, a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Sign {
+        incircle_in::<IN_RANGE>(a, b, c, d)
+    }
+
+    /// [`super::basic::orient`] for points in the box.
     #[inline(always)]
     pub fn orient(&self, a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
         let det = (a[0] - c[0]) * (b[1] - c[1]) - (a[1] - c[1]) * (b[0] - c[0]);
@@ -41,7 +69,7 @@ impl StaticFilter {
         } else if -det > self.ccw {
             Sign::Negative
         } else {
-            orient(a, b, c)
+            self.orient_fallback(a, b, c)
         }
     }
 

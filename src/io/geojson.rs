@@ -19,7 +19,7 @@
 //! Rings are closed (the first position repeated last). Coordinates are the input's, not
 //! reprojected, written in the shortest form that reads back to the same `f64`; medial-axis
 //! vertices are circumcenters rounded to `f64` (a segment whose rounded end overflowed to an
-//! infinity, possible only for coordinates near the envelope's top, is left out: GeoJSON has
+//! infinity, possible only for coordinates near the top of the `f64` range, is left out: GeoJSON has
 //! no infinite positions).
 //!
 //! ```text

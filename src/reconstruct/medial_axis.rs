@@ -157,12 +157,25 @@ fn inside_faces(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
         let (a, b) = (tri.org(e as usize), tri.dest(e as usize));
         edges.binary_search(&[a.min(b), a.max(b)]).is_ok()
     };
-    let mut inside = vec![false; n];
+    parity_from_infinity(vor, seen, on_loop)
+}
+
+/// Every Voronoi vertex not marked in `blocked`: is it separated from infinity by an odd
+/// number of the Delaunay edges `crosses` accepts (breadth first from the rays)? Blocked
+/// vertices, and those reached only through them, are `false`. Well defined when the
+/// accepted edges form disjoint closed loops whose every crossing is a Voronoi edge.
+pub(super) fn parity_from_infinity(
+    vor: &Voronoi<'_>,
+    mut blocked: Vec<bool>,
+    crosses: impl Fn(u32) -> bool,
+) -> Vec<bool> {
+    let seen = &mut blocked;
+    let mut inside = vec![false; vor.vertex_count()];
     let mut queue = std::collections::VecDeque::new();
     for (e, v, _) in vor.rays() {
         if !seen[v as usize] {
             seen[v as usize] = true;
-            inside[v as usize] = on_loop(e);
+            inside[v as usize] = crosses(e);
             queue.push_back(v);
         }
     }
@@ -171,7 +184,7 @@ fn inside_faces(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
             if let EdgeEnd::Vertex(u) = edge.to {
                 if !seen[u as usize] {
                     seen[u as usize] = true;
-                    inside[u as usize] = inside[v as usize] ^ on_loop(edge.halfedge);
+                    inside[u as usize] = inside[v as usize] ^ crosses(edge.halfedge);
                     queue.push_back(u);
                 }
             }

@@ -553,3 +553,43 @@ fn the_pruned_axis_does_not_depend_on_the_input_order() {
         assert_eq!(segments(&permuted), base, "{}", shape.name);
     }
 }
+
+/// Points evenly spaced on the boundary of an axis-parallel rectangle, counterclockwise.
+fn rectangle(x0: f64, y0: f64, w: f64, h: f64, per_unit: f64) -> Vec<[f64; 2]> {
+    let corners = [[x0, y0], [x0 + w, y0], [x0 + w, y0 + h], [x0, y0 + h]];
+    let mut out = Vec::new();
+    for k in 0..4 {
+        let (p, q) = (corners[k], corners[(k + 1) % 4]);
+        let n = (dist(p, q) * per_unit).round() as usize;
+        for i in 0..n {
+            let t = i as f64 / n as f64;
+            out.push([p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]);
+        }
+    }
+    out
+}
+
+/// Lattice points on rectangles are full of exactly cocircular quadruples (merged faces):
+/// the axis is still one tree per shape, with one cycle around a hole. (No curve edge is a
+/// chord of a merged face here; that path of the parity is not exercised.)
+#[test]
+fn cocircular_rectangles_give_a_tree_and_a_cycle() {
+    let outer = rectangle(0.0, 0.0, 8.0, 4.0, 4.0);
+    let rec = reconstruct_with(&outer, &Options::new()).expect("valid points");
+    assert_eq!(rec.curves().len(), 1);
+    let axis = rec.medial_axis();
+    assert!(axis.edges.len() > 4, "{} segments", axis.edges.len());
+    assert_eq!(topology(axis), (1, 0));
+
+    let mut ring = rectangle(0.0, 0.0, 12.0, 12.0, 2.0);
+    ring.extend(rectangle(4.0, 4.0, 4.0, 4.0, 2.0));
+    let rec = reconstruct_with(&ring, &Options::new()).expect("valid points");
+    assert_eq!(rec.curves().iter().filter(|c| c.closed).count(), 2);
+    let axis = rec.medial_axis();
+    assert_eq!(topology(axis), (1, 1));
+    // Every vertex lies between the two squares.
+    for &[x, y] in &axis.vertices {
+        let outside_hole = !(4.0..=8.0).contains(&x) || !(4.0..=8.0).contains(&y);
+        assert!((0.0..=12.0).contains(&x) && (0.0..=12.0).contains(&y) && outside_hole);
+    }
+}

@@ -63,7 +63,7 @@ fuzz_target!(|scene: Scene| {
     }
     let pruned = match wdm_crust::reconstruct(&points) {
         Ok(rec) => rec,
-        Err(e) => return fail("reconstruct (pruned axis)", &points, &format!("{e}")),
+        Err(e) => fail("reconstruct (pruned axis)", &points, &format!("{e}")),
     };
     let perm = permutation(points.len(), scene.order);
     let shuffled = permute(&points, &perm);

@@ -22,9 +22,10 @@
 //!    put a curve edge inside a merged face, where no Voronoi edge crosses it: such a face
 //!    lies on the curve and is taken as neither inside nor a path for the parity.)
 //! 3. **Pruning leaves.** Leaves are taken off one at a time, the one with the smallest ball
-//!    first (ties by position), in rounds until a round removes nothing. A leaf `u` goes
+//!    first (ties by position); a leaf is tested again when its branch grows (a junction near
+//!    it loses a branch), until no leaf goes. A leaf `u` goes
 //!    when its ball is *covered*: some ball `B_w` among the vertices of its branch (up to the
-//!    first junction) and the 32 nearest beyond that junction in the tree satisfies
+//!    first junction) and the nearest beyond that junction in the tree, 64 in all, satisfies
 //!
 //!    ```text
 //!    |c_u − c_w| ≤ s · (r_w − r_u),   s = 1 / cos(θ/2)      (c circumcenters, r radii)
@@ -92,8 +93,8 @@ use crate::voronoi::{EdgeEnd, Voronoi};
 /// out of its ball at least at the rate `cos(θ/2)` of the distance (see the module docs).
 const PRUNE_ANGLE_DEGREES: f64 = 60.0;
 
-/// How many vertices beyond a branch's junction its leaf is compared with.
-const NEIGHBOURHOOD: usize = 32;
+/// How many vertices (along its branch, then beyond the junction) a leaf is compared with.
+const NEIGHBOURHOOD: usize = 64;
 
 /// The pruned medial axis of the closed curves among `curves` (caller indices of `tri`'s
 /// points); empty when there are none. See the module docs.
@@ -253,37 +254,37 @@ impl Graph {
     fn pruned(mut self) -> Graph {
         let scale = 1.0 / (PRUNE_ANGLE_DEGREES.to_radians() / 2.0).cos();
         let mut tree = Pruning::new(&self);
-        // A branch grows when the branch beside it goes and its junction becomes a plain
-        // path vertex: its leaf is then tested again, in the next round.
-        loop {
-            let mut heap: BinaryHeap<Leaf> = (0..self.centre.len() as u32)
-                .filter(|&v| tree.degree[v as usize] == 1)
-                .map(|v| Leaf::new(v, &self))
-                .collect();
-            let mut pruned_any = false;
-            while let Some(Leaf { vertex: u, .. }) = heap.pop() {
-                let Some((e, v)) = tree.leaf_edge(u, &self.edges) else {
-                    continue;
-                };
-                // The last edge of a component stays: pruning removes branches, not shapes.
-                if tree.degree[v as usize] == 1 {
-                    continue;
-                }
-                let covered = self.beyond[u as usize]
-                    || tree
-                        .neighbourhood(u, &self.edges)
-                        .iter()
-                        .any(|&w| self.covers(w, u, scale));
-                if covered {
-                    tree.remove(e, &self.edges);
-                    pruned_any = true;
-                    if tree.degree[v as usize] == 1 {
-                        heap.push(Leaf::new(v, &self));
+        let mut heap: BinaryHeap<Leaf> = (0..self.centre.len() as u32)
+            .filter(|&v| tree.degree[v as usize] == 1)
+            .map(|v| Leaf::new(v, &self))
+            .collect();
+        while let Some(Leaf { vertex: u, .. }) = heap.pop() {
+            let Some((e, v)) = tree.leaf_edge(u, &self.edges) else {
+                continue;
+            };
+            // The last edge of a component stays: pruning removes branches, not shapes.
+            if tree.degree[v as usize] == 1 {
+                continue;
+            }
+            let covered = self.beyond[u as usize]
+                || tree
+                    .neighbourhood(u, &self.edges)
+                    .iter()
+                    .any(|&w| self.covers(w, u, scale));
+            if !covered {
+                continue;
+            }
+            tree.remove(e, &self.edges);
+            match tree.degree[v as usize] {
+                1 => heap.push(Leaf::new(v, &self)),
+                // A junction became a path vertex: the branches through it grew, and the
+                // leaves that see it are tested again.
+                2 => {
+                    for leaf in tree.leaves_through(v, &self.edges) {
+                        heap.push(Leaf::new(leaf, &self));
                     }
                 }
-            }
-            if !pruned_any {
-                break;
+                _ => {}
             }
         }
         let mut kept = tree.removed.iter().map(|&r| !r);
@@ -377,29 +378,54 @@ impl Pruning {
     }
 
     /// The balls a leaf's ball is tested against: its branch up to the junction, then the
-    /// nearest [`NEIGHBOURHOOD`] vertices beyond it in the tree (breadth first), where
-    /// the trunk passes the whisker's foot.
+    /// nearest vertices beyond it in the tree (breadth first), where the trunk passes the
+    /// whisker's foot; [`NEIGHBOURHOOD`] vertices in all, so that a test costs O(1).
     fn neighbourhood(&self, u: u32, edges: &[[u32; 2]]) -> Vec<u32> {
-        let mut found: Vec<u32> = self.branch(u, edges).collect();
-        let Some(&junction) = found.last() else {
+        let mut found: Vec<u32> = self.branch(u, edges).take(NEIGHBOURHOOD).collect();
+        let Some(&last) = found.last() else {
             return found;
         };
-        let limit = found.len() + NEIGHBOURHOOD;
-        let prev = found.len().checked_sub(2).map_or(u, |i| found[i]);
-        let mut seen = std::collections::HashSet::from([u, prev, junction]);
-        let mut queue = std::collections::VecDeque::from([junction]);
-        while let Some(v) = queue.pop_front() {
-            if found.len() >= limit {
-                break;
-            }
+        let before = found.len().checked_sub(2).map_or(u, |i| found[i]);
+        // Breadth first away from the branch; in a tree nothing is met twice (around a hole
+        // a vertex may be, which changes nothing but the count).
+        let mut queue = std::collections::VecDeque::from([(last, before)]);
+        while let Some((v, parent)) = queue.pop_front() {
             for (_, w) in self.around(v, edges) {
-                if found.len() < limit && seen.insert(w) {
+                if found.len() >= NEIGHBOURHOOD {
+                    return found;
+                }
+                if w != parent {
                     found.push(w);
-                    queue.push_back(w);
+                    queue.push_back((w, v));
                 }
             }
         }
         found
+    }
+
+    /// The leaves within [`NEIGHBOURHOOD`] steps of the path vertex `v` along plain paths.
+    fn leaves_through(&self, v: u32, edges: &[[u32; 2]]) -> Vec<u32> {
+        let mut leaves = Vec::new();
+        for (_, first) in self.around(v, edges) {
+            let (mut prev, mut cur) = (v, first);
+            for _ in 0..NEIGHBOURHOOD {
+                match self.degree[cur as usize] {
+                    1 => {
+                        leaves.push(cur);
+                        break;
+                    }
+                    2 => {
+                        let Some((_, next)) = self.around(cur, edges).find(|&(_, w)| w != prev)
+                        else {
+                            break;
+                        };
+                        (prev, cur) = (cur, next);
+                    }
+                    _ => break,
+                }
+            }
+        }
+        leaves
     }
 
     fn remove(&mut self, e: u32, edges: &[[u32; 2]]) {

@@ -9,7 +9,7 @@
 #[path = "../fuzz/src/checks.rs"]
 mod checks;
 
-use wdm_crust::reconstruct::{reconstruct_with, Options};
+use wdm_crust::reconstruct::{reconstruct_with, MedialAxisMode, Options};
 
 /// Every check of the `triangulate` and `reconstruct` targets, on `points` and on `points`
 /// reversed.
@@ -18,15 +18,24 @@ fn check_everything(points: &[[f64; 2]]) {
     checks::check_triangulate(points, &result).unwrap();
     let Ok(tri) = result else { return };
     checks::check_voronoi(&tri.voronoi()).unwrap();
-    let single_options = Options::new().with_peeling(false);
+    // The oracles check the paper's WDM_MAT; the pruned axis is checked under permutation.
+    let raw = Options::new().with_medial_axis(MedialAxisMode::Raw);
+    let single_options = raw.with_peeling(false);
     let single = reconstruct_with(points, &single_options).unwrap();
-    let full = wdm_crust::reconstruct(points).unwrap();
+    let full = reconstruct_with(points, &raw).unwrap();
     checks::check_single_pass(points, &single).unwrap();
     checks::check_peeled(points, &single, &full).unwrap();
     let perm: Vec<usize> = (0..points.len()).rev().collect();
     let reversed = checks::permute(points, &perm);
     let other = reconstruct_with(&reversed, &single_options).unwrap();
     checks::check_permuted(points, &perm, &single, &other, false, true).unwrap();
+    let pruned = wdm_crust::reconstruct(points).unwrap();
+    let pruned_reversed = wdm_crust::reconstruct(&reversed).unwrap();
+    assert_eq!(
+        checks::axis_segments(&pruned),
+        checks::axis_segments(&pruned_reversed),
+        "pruned medial axis under reversal"
+    );
 }
 
 /// Sorted vertex positions of the Voronoi diagram, as bits.

@@ -7,7 +7,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use wdm_crust::reconstruct::{reconstruct_with, Options};
+use wdm_crust::reconstruct::{reconstruct_with, MedialAxisMode, Options};
 use wdm_crust_fuzz::checks::{
     check_peeled, check_permuted, check_single_pass, expected_error, permute, same_error,
 };
@@ -28,9 +28,11 @@ const KNOWN_MERGED_FACE_ORDER_ISSUE: bool = false;
 
 fuzz_target!(|scene: Scene| {
     let points = scene.points(MAX_POINTS);
-    let single_options = Options::new().with_peeling(false);
+    // The oracles check the paper's WDM_MAT; the pruned axis is checked under permutation.
+    let raw = Options::new().with_medial_axis(MedialAxisMode::Raw);
+    let single_options = raw.with_peeling(false);
     let single = reconstruct_with(&points, &single_options);
-    let full = wdm_crust::reconstruct(&points);
+    let full = reconstruct_with(&points, &raw);
     let (single, full) = match (single, full, expected_error(&points)) {
         (Err(a), Err(b), Some(x)) => {
             if !same_error(&a, &x) || !same_error(&b, &x) {
@@ -59,11 +61,16 @@ fuzz_target!(|scene: Scene| {
     if let Err(e) = check_peeled(&points, &single, &full) {
         fail("reconstruct (peeling)", &points, &e);
     }
+    let pruned = match wdm_crust::reconstruct(&points) {
+        Ok(rec) => rec,
+        Err(e) => fail("reconstruct (pruned axis)", &points, &format!("{e}")),
+    };
     let perm = permutation(points.len(), scene.order);
     let shuffled = permute(&points, &perm);
     for (options, rec, what) in [
         (single_options, &single, "single pass"),
-        (Options::default(), &full, "peeling"),
+        (raw, &full, "peeling"),
+        (Options::default(), &pruned, "pruned axis"),
     ] {
         let strict = !KNOWN_MERGED_FACE_ORDER_ISSUE;
         let axis = strict || !options.peeling();

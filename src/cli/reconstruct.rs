@@ -91,7 +91,8 @@ impl From<AlgorithmArg> for Algorithm {
 /// Which medial axis to return.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum MedialAxisArg {
-    /// WDM_MAT without the spurious branches noise grows (the documented pruning rule).
+    /// The medial axis of the closed curves, without the branches noise grows (the rule is
+    /// documented in ARCHITECTURE.md).
     Pruned,
     /// The paper's WDM_MAT: every finite Voronoi edge between two inner vertices.
     Raw,
@@ -151,8 +152,9 @@ pub struct ReconstructArgs {
     #[arg(long, value_name = "N", default_value_t = Options::default().peeling_budget())]
     peeling_budget: usize,
 
-    /// WDM: the medial axis returned: `pruned` (spurious branches removed) or `raw` (the
-    /// paper's WDM_MAT).
+    /// WDM: the medial axis returned: `pruned` (default: the axis of the closed curves, one
+    /// tree per simply connected shape, noise branches removed) or `raw` (the paper's
+    /// WDM_MAT: every Voronoi edge between two inner vertices).
     #[arg(long, value_enum, default_value_t = MedialAxisArg::Pruned)]
     medial_axis: MedialAxisArg,
 

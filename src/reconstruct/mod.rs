@@ -14,6 +14,7 @@
 pub mod crust;
 mod curves;
 mod extract;
+mod medial_axis;
 pub mod nn_crust;
 mod options;
 mod peel;

@@ -4,10 +4,11 @@
 
 use super::curves::{assemble_named, Adjacency, Curve};
 use super::extract::wdm_crust_edges;
+use super::medial_axis::parity_from_infinity;
 use super::options::Options;
 use super::wdm;
 use crate::delaunay::{triangulate, Triangulation, NO_TWIN};
-use crate::voronoi::{EdgeEnd, Voronoi};
+use crate::voronoi::Voronoi;
 
 /// How close to a curve already found a left-over point may lie and still be taken for a
 /// sample of another curve: its distance to a curve edge, in units of that edge's length.
@@ -354,27 +355,5 @@ pub(super) fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> 
             .iter()
             .any(|&(_, q)| q == b)
     };
-    let n = vor.vertex_count();
-    let mut inside = vec![false; n];
-    let mut seen = vec![false; n];
-    let mut queue = std::collections::VecDeque::new();
-    for (e, v, _) in vor.rays() {
-        if !seen[v as usize] {
-            seen[v as usize] = true;
-            inside[v as usize] = is_crust(e);
-            queue.push_back(v);
-        }
-    }
-    while let Some(v) = queue.pop_front() {
-        for edge in vor.vertex_edges_local(v) {
-            if let EdgeEnd::Vertex(u) = edge.to {
-                if !seen[u as usize] {
-                    seen[u as usize] = true;
-                    inside[u as usize] = inside[v as usize] ^ is_crust(edge.halfedge);
-                    queue.push_back(u);
-                }
-            }
-        }
-    }
-    inside
+    parity_from_infinity(vor, vec![false; vor.vertex_count()], is_crust)
 }

@@ -2,7 +2,8 @@
 
 use super::curves;
 use super::extract::{chain_edges, medial_axis, wdm_crust_edges};
-use super::options::{Algorithm, Options};
+use super::medial_axis::pruned_medial_axis;
+use super::options::{Algorithm, MedialAxisMode, Options};
 use super::peel::{hole_edges, parity_inside, peel, Peeling};
 use super::result::{MedialAxis, Reconstruction};
 use super::wdm::{self, Label};
@@ -134,7 +135,9 @@ pub fn reconstruct_observed(
         } else {
             Vec::new()
         };
-        let axis = if holes.is_empty() {
+        let axis = if options.medial_axis() == MedialAxisMode::Pruned {
+            pruned_medial_axis(&triangulation, &curves)
+        } else if holes.is_empty() {
             medial_axis(&vor, &flow.labels, &later_pass)
         } else {
             // A vertex is inside the shape when it is inner in the first pass and not

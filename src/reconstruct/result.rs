@@ -5,12 +5,12 @@ use super::options::Algorithm;
 use super::wdm::Label;
 use crate::delaunay::Triangulation;
 
-/// The medial axis approximation: segments between inner Voronoi vertices.
+/// The medial axis approximation: segments between Voronoi vertices inside the shape.
 #[derive(Debug, Clone, Default, PartialEq)]
 #[non_exhaustive]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MedialAxis {
-    /// Circumcenters (rounded to f64) of the inner vertices that have a medial-axis edge.
+    /// Circumcenters (rounded to f64) of the vertices that have a medial-axis edge.
     pub vertices: Vec<[f64; 2]>,
     /// Segments as index pairs into `vertices`, `[a, b]` with `a < b`, sorted.
     pub edges: Vec<[u32; 2]>,
@@ -53,7 +53,9 @@ impl Reconstruction {
         self.budget_exhausted
     }
 
-    /// WDM_MAT: segments between inner Voronoi vertices.
+    /// The medial axis: by default that of the closed curves, pruned of noise branches; with
+    /// [`MedialAxisMode::Raw`](super::MedialAxisMode::Raw) the paper's WDM_MAT (segments
+    /// between inner Voronoi vertices).
     pub fn medial_axis(&self) -> &MedialAxis {
         &self.medial_axis
     }

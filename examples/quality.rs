@@ -28,8 +28,8 @@ use std::time::Instant;
 
 use wdm_crust::reconstruct::{reconstruct_with, Algorithm, LabelRule, Options};
 use wdm_crust_testkit::{
-    ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Sample, SampleConfig, Similarity,
-    Star, Superellipse,
+    segment_distance, ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Sample,
+    SampleConfig, Similarity, Star, Superellipse,
 };
 
 const ALGORITHMS: [Algorithm; 3] = [Algorithm::Wdm, Algorithm::Crust, Algorithm::NnCrust];
@@ -295,7 +295,7 @@ impl SegmentGrid {
                     }
                     for &s in &self.cells[y * self.size[0] + x] {
                         let [a, b] = self.segments[s as usize];
-                        best = best.min(point_segment(p, a, b));
+                        best = best.min(segment_distance(p, a, b));
                     }
                 }
             }
@@ -306,18 +306,6 @@ impl SegmentGrid {
         }
         best
     }
-}
-
-fn point_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let len2 = dx * dx + dy * dy;
-    let t = if len2 > 0.0 {
-        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let (x, y) = (a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
-    (x * x + y * y).sqrt()
 }
 
 fn bbox(points: impl Iterator<Item = [f64; 2]>) -> ([f64; 2], [f64; 2]) {

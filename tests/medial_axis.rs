@@ -19,8 +19,8 @@
 use wdm_crust::reconstruct::{MedialAxis, MedialAxisMode, Options};
 use wdm_crust::reconstruct_with;
 use wdm_crust_testkit::{
-    medial_balls, ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Similarity, Star,
-    Superellipse,
+    medial_balls, segment_distance, ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng,
+    Similarity, Star, Superellipse,
 };
 
 const DENSE: usize = 20_000;
@@ -140,17 +140,6 @@ fn diameter(points: &[[f64; 2]]) -> f64 {
 
 fn dist(p: [f64; 2], q: [f64; 2]) -> f64 {
     (p[0] - q[0]).hypot(p[1] - q[1])
-}
-
-fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let len2 = dx * dx + dy * dy;
-    let t = if len2 > 0.0 {
-        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    dist(p, [a[0] + t * dx, a[1] + t * dy])
 }
 
 /// A uniform grid over points for nearest-point queries.

@@ -67,3 +67,21 @@ pub(crate) fn bbox(points: impl IntoIterator<Item = P2>) -> (P2, P2) {
     }
     (lo, hi)
 }
+
+/// Distance from `p` to the segment `ab` (to `a` when the segment is a point).
+///
+/// ```
+/// use wdm_crust_testkit::segment_distance;
+/// assert_eq!(segment_distance([1.0, 1.0], [0.0, 0.0], [2.0, 0.0]), 1.0);
+/// assert_eq!(segment_distance([3.0, 0.0], [0.0, 0.0], [2.0, 0.0]), 1.0);
+/// ```
+pub fn segment_distance(p: P2, a: P2, b: P2) -> f64 {
+    let d = sub(b, a);
+    let len2 = norm2(d);
+    let t = if len2 > 0.0 {
+        (dot(sub(p, a), d) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    dist(p, add(a, mul(d, t)))
+}

@@ -28,7 +28,7 @@ use std::time::Instant;
 
 use wdm_crust::reconstruct::{reconstruct_with, Algorithm, LabelRule, Options};
 use wdm_crust_testkit::{
-    segment_distance, ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Sample,
+    bbox, segment_distance, ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Sample,
     SampleConfig, Similarity, Star, Superellipse,
 };
 
@@ -306,18 +306,6 @@ impl SegmentGrid {
         }
         best
     }
-}
-
-fn bbox(points: impl Iterator<Item = [f64; 2]>) -> ([f64; 2], [f64; 2]) {
-    let mut lo = [f64::INFINITY; 2];
-    let mut hi = [f64::NEG_INFINITY; 2];
-    for p in points {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    (lo, hi)
 }
 
 /// `(Hausdorff, RMS)` in % of the truth's bounding-box diagonal: Hausdorff is symmetric

@@ -57,4 +57,4 @@ pub use noise::{add_gaussian_noise, uniform_outliers};
 pub use rng::Rng;
 pub use shapes::{Ellipse, Peanut, Star, Superellipse};
 pub use svg::{parse_path_data, parse_svg, svg_dense_curves, Segment, SvgError, SvgSubpath};
-pub use vec2::segment_distance;
+pub use vec2::{bbox, segment_distance};

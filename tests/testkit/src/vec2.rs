@@ -56,7 +56,7 @@ pub(crate) fn angle_between(a: P2, b: P2) -> f64 {
 }
 
 /// Axis-aligned bounding box `(min, max)` of a non-empty point set.
-pub(crate) fn bbox(points: impl IntoIterator<Item = P2>) -> (P2, P2) {
+pub fn bbox(points: impl IntoIterator<Item = P2>) -> (P2, P2) {
     let mut lo = [f64::INFINITY; 2];
     let mut hi = [f64::NEG_INFINITY; 2];
     for p in points {

@@ -9,6 +9,8 @@
 //! Point sets (`n` points each, in shuffled order, seed fixed):
 //! * `uniform`: uniform in the unit square;
 //! * `curve`: on a smooth closed star-shaped curve `r = 1 + 0.3 cos 5t`, random parameters;
+//! * `even-curve`: the benches' workload: that star squashed to 0.7 in y, at jittered even
+//!   spacing, with radial noise of a tenth of the spacing;
 //! * `circle`: on the unit circle, random angles (nearly cocircular: exact fallbacks galore);
 //! * `grid`: the integer grid `⌈√n⌉ × ⌈√n⌉` truncated to `n` (every cell cocircular);
 //! * `two-lines`: half on `y = 0`, half on `y = 1`, integer x (every quad cocircular);
@@ -25,7 +27,7 @@
 
 use std::time::Instant;
 
-use wdm_crust::reconstruct::{reconstruct_with, Options};
+use wdm_crust::reconstruct::{reconstruct_observed, Options};
 use wdm_crust_testkit::Rng;
 
 fn main() {
@@ -34,7 +36,7 @@ fn main() {
         args.first(),
         args.get(1).and_then(|s| s.parse::<usize>().ok()),
     ) else {
-        eprintln!("usage: stress <uniform|curve|circle|grid|two-lines|crossing-lines|dup3|collinear> <n> [points,triangulate,voronoi,single,reconstruct]");
+        eprintln!("usage: stress <uniform|curve|even-curve|circle|grid|two-lines|crossing-lines|dup3|collinear> <n> [points,triangulate,voronoi,single,reconstruct]");
         std::process::exit(2);
     };
     let stages: Vec<&str> = args
@@ -86,7 +88,16 @@ fn main() {
         }
         let options = Options::new().with_peeling(peeling);
         let t = Instant::now();
-        let rec = reconstruct_with(&points, &options).expect("valid points");
+        let (mut phases, mut peaks) = (Vec::new(), Vec::new());
+        let rec = reconstruct_observed(&points, &options, &mut |phase, time| {
+            phases.push(format!("{} {:.3}", phase.name(), time.as_secs_f64()));
+            peaks.push(format!(
+                "{} {}",
+                phase.name(),
+                peak_rss_kib() * 1024 / n.max(1) as u64
+            ));
+        })
+        .expect("valid points");
         println!(
             "{name}: {:.2}s, {} edges, {} curves, {} passes{}, {} untouched, {} medial-axis segments",
             t.elapsed().as_secs_f64(),
@@ -101,6 +112,8 @@ fn main() {
             rec.untouched_points().len(),
             rec.medial_axis().edges.len()
         );
+        println!("  phases (s): {}", phases.join(", "));
+        println!("  peak RSS after each phase (B/pt): {}", peaks.join(", "));
     }
     let peak = peak_rss_kib();
     println!(
@@ -136,6 +149,18 @@ fn generate(set: &str, n: usize) -> Option<Vec<[f64; 2]>> {
                 [r * t.cos(), r * t.sin()]
             })
             .collect(),
+        "even-curve" => {
+            // The benches' reconstruction workload: the squashed star at jittered even
+            // spacing with radial noise of a tenth of the spacing.
+            let spacing = tau / n as f64;
+            (0..n)
+                .map(|i| {
+                    let t = (i as f64 + 0.5 * rng.f64()) * spacing;
+                    let r = 1.0 + 0.3 * (5.0 * t).cos() + 0.1 * spacing * rng.normal();
+                    [r * t.cos(), 0.7 * r * t.sin()]
+                })
+                .collect()
+        }
         "circle" => (0..n)
             .map(|_| {
                 let t = rng.range(0.0, tau);

@@ -201,6 +201,13 @@ impl<'a> Voronoi<'a> {
         })
     }
 
+    /// Frees the positions [`vertex_positions`](Voronoi::vertex_positions) computed (they are
+    /// computed again on the next call): for a caller done with them before a
+    /// memory-hungry step.
+    pub(crate) fn forget_positions(&mut self) {
+        self.positions.take();
+    }
+
     /// Circumcenter of vertex `v`, rounded to f64: within 256 ulps of the exact one, see
     /// [`crate::predicates::circumcenter`].
     pub fn vertex_position(&self, v: u32) -> [f64; 2] {

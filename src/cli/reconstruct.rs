@@ -207,9 +207,15 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
         .with_medial_axis(args.medial_axis.into());
     let n = points.len();
     timings.begin(|| format!("triangulating {n} points"));
-    // The library reports each phase as it ends; the next one begins right then.
-    let rec = wdm_crust::reconstruct_observed(&points, &options, &mut |phase, _| {
-        timings.phase(phase.name(), String::new);
+    // The library reports each phase as it ends; the next one begins right then. The
+    // phases after the labels are printed as one, `extract`, with their split in its note.
+    let mut extract_parts: Vec<(Phase, std::time::Duration)> = Vec::new();
+    let rec = wdm_crust::reconstruct_observed(&points, &options, &mut |phase, time| {
+        if matches!(phase, Phase::Triangulate | Phase::Voronoi | Phase::Label) {
+            timings.phase(phase.name(), String::new);
+        } else {
+            extract_parts.push((phase, time));
+        }
         if let Some(next) = next_phase(options.algorithm(), phase) {
             timings.begin(|| match next {
                 Phase::Voronoi => "building the Voronoi diagram".to_string(),
@@ -219,15 +225,20 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
         }
     })
     .map_err(|e| input.library_error(&e))?;
-    timings.note(|| {
+    timings.phase("extract", || {
         let closed = rec.curves().iter().filter(|c| c.closed).count();
+        let split: Vec<String> = extract_parts
+            .iter()
+            .map(|(phase, time)| format!("{} {:.1}", phase.name(), time.as_secs_f64() * 1e3))
+            .collect();
         format!(
-            "{} edges, {} closed curves, {} open chains, {} medial-axis edges, {} passes",
+            "{} edges, {} closed curves, {} open chains, {} medial-axis edges, {} passes (ms: {})",
             rec.edges().len(),
             closed,
             rec.curves().len() - closed,
             rec.medial_axis().edges.len(),
-            rec.passes()
+            rec.passes(),
+            split.join(", ")
         )
     });
 

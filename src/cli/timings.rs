@@ -76,13 +76,6 @@ impl Timings {
         }
     }
 
-    /// Replaces the note of the last phase recorded (for a summary known only afterwards).
-    pub fn note(&mut self, note: impl FnOnce() -> String) {
-        if let Some(last) = self.phases.last_mut() {
-            last.2 = note();
-        }
-    }
-
     /// Prints one line per phase and the total to standard error, if enabled.
     pub fn report(&self) {
         if !self.enabled {

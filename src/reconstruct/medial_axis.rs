@@ -85,7 +85,8 @@ use std::collections::BinaryHeap;
 
 use super::curves::Curve;
 use super::result::MedialAxis;
-use crate::delaunay::{triangulate, Triangulation};
+use crate::delaunay::triangulate;
+use crate::delaunay::NO_TWIN;
 use crate::predicates::{orient2d_circumcenter, Orientation};
 use crate::voronoi::{EdgeEnd, Voronoi};
 
@@ -96,10 +97,24 @@ const PRUNE_ANGLE_DEGREES: f64 = 60.0;
 /// How many vertices (along its branch, then beyond the junction) a leaf is compared with.
 const NEIGHBOURHOOD: usize = 64;
 
-/// The pruned medial axis of the closed curves among `curves` (caller indices of `tri`'s
-/// points); empty when there are none. See the module docs.
-pub(super) fn pruned_medial_axis(tri: &Triangulation, curves: &[Curve]) -> MedialAxis {
+/// The pruned medial axis of the closed curves among `curves` (caller indices of the
+/// points of `vor`); empty when there are none. See the module docs.
+///
+/// When the loops leave points out, their own triangulation is built: `vor`'s vertex
+/// positions are freed first (the caller has no more use for them), so that the two sets
+/// of positions never coexist at the memory peak.
+pub(super) fn pruned_medial_axis(vor: &mut Voronoi<'_>, curves: &[Curve]) -> MedialAxis {
+    let tri = vor.triangulation();
     let loops: Vec<&Curve> = curves.iter().filter(|c| c.closed).collect();
+    let loop_points: usize = loops.iter().map(|c| c.points.len()).sum();
+    // The loops are vertex-disjoint: when they use every distinct point, the subset is the
+    // whole set and its diagram is `vor` (the common case of clean samples, and the one
+    // where a second triangulation would double the cost of the run).
+    if loop_points == tri.distinct_point_count() {
+        let edges = loop_edges(&loops, |i| tri.local_index(i));
+        return axis_inside(vor, &edges);
+    }
+    vor.forget_positions();
     let points: Vec<[f64; 2]> = loops
         .iter()
         .flat_map(|c| c.points.iter().map(|&i| tri.point(i)))
@@ -111,54 +126,93 @@ pub(super) fn pruned_medial_axis(tri: &Triangulation, curves: &[Curve]) -> Media
     if sub.is_degenerate() {
         return MedialAxis::default();
     }
-    // Loop edges in the subset's local indices: the subset's caller indices are positions
-    // in `points`, which lists the loops one after the other.
-    let mut edges = Vec::with_capacity(points.len());
-    let mut start = 0u32;
-    for c in &loops {
-        let n = c.points.len() as u32;
+    // The subset's caller indices are positions in `points`, which lists the loops one
+    // after the other.
+    let mut position = 0u32;
+    let renumbered: Vec<Curve> = loops
+        .iter()
+        .map(|c| {
+            let points = (position..position + c.points.len() as u32).collect();
+            position += c.points.len() as u32;
+            Curve {
+                points,
+                closed: true,
+            }
+        })
+        .collect();
+    let renumbered: Vec<&Curve> = renumbered.iter().collect();
+    let edges = loop_edges(&renumbered, |i| sub.local_index(i));
+    axis_inside(&sub.voronoi(), &edges)
+}
+
+/// The edges of `loops` as sorted pairs of local indices (`local` maps a caller index).
+fn loop_edges(loops: &[&Curve], local: impl Fn(u32) -> u32) -> Vec<[u32; 2]> {
+    let mut edges = Vec::with_capacity(loops.iter().map(|c| c.points.len()).sum());
+    for c in loops {
+        let n = c.points.len();
         for k in 0..n {
-            let (a, b) = (start + k, start + (k + 1) % n);
-            let (a, b) = (sub.local_index(a), sub.local_index(b));
+            let (a, b) = (local(c.points[k]), local(c.points[(k + 1) % n]));
             edges.push([a.min(b), a.max(b)]);
         }
-        start += n;
     }
     edges.sort_unstable();
-    let vor = sub.voronoi();
-    let inside = inside_faces(&vor, &edges);
-    let axis = Graph::inside_edges(&vor, &inside, &edges);
+    edges
+}
+
+/// The pruned axis inside the closed loops `edges` (sorted local pairs, Delaunay edges of
+/// `vor`'s points, covering the points the loops use).
+fn axis_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> MedialAxis {
+    let marks = LoopMarks::new(vor, edges);
+    let inside = marks.inside_faces(vor);
+    let axis = Graph::inside_edges(vor, &inside, &marks);
     axis.pruned().into_medial_axis()
 }
 
-/// Every Voronoi vertex of `vor`: inside the closed loops `edges` (sorted local index
-/// pairs, each a Delaunay edge of `vor`'s points)? A face holding a loop edge without a dual
-/// (a chord of a merged cocircular face) lies on the loop: it is neither inside nor passed
-/// through, so the parity of every other face is still well defined.
-fn inside_faces(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
-    let tri = vor.triangulation();
-    let n = vor.vertex_count();
-    let mut seen = vec![false; n];
-    for &[a, b] in edges {
-        match vor.delaunay_halfedge(a, b) {
-            Some(e) if vor.has_dual(e) => {}
-            Some(e) => seen[vor.vertex_of_halfedge(e) as usize] = true,
-            // Not an edge of this triangulation: it crosses the merged face that holds
-            // both ends (two faces sharing two corners share the edge between them).
-            None => {
-                for v in vor.cell_local(a) {
-                    if vor.cell_local(b).any(|w| w == v) {
-                        seen[v as usize] = true;
+/// Which Delaunay half-edges lie on a loop (both directions), and which faces hold a loop
+/// edge without a dual (a chord of a merged cocircular face): marks per half-edge, so that
+/// the walks below test an edge in O(1).
+struct LoopMarks {
+    on_loop: Vec<bool>,
+    on_chord: Vec<bool>,
+}
+
+impl LoopMarks {
+    fn new(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> LoopMarks {
+        let tri = vor.triangulation();
+        let halfedges = tri.halfedges();
+        let mut on_loop = vec![false; halfedges.len()];
+        let mut on_chord = vec![false; vor.vertex_count()];
+        for &[a, b] in edges {
+            match vor.delaunay_halfedge(a, b) {
+                Some(e) => {
+                    on_loop[e as usize] = true;
+                    if let Some(&twin) = halfedges.get(e as usize).filter(|&&t| t != NO_TWIN) {
+                        on_loop[twin as usize] = true;
+                    }
+                    if !vor.has_dual(e) {
+                        on_chord[vor.vertex_of_halfedge(e) as usize] = true;
+                    }
+                }
+                // Not an edge of this triangulation: it crosses the merged face that holds
+                // both ends (two faces sharing two corners share the edge between them).
+                None => {
+                    for v in vor.cell_local(a) {
+                        if vor.cell_local(b).any(|w| w == v) {
+                            on_chord[v as usize] = true;
+                        }
                     }
                 }
             }
         }
+        LoopMarks { on_loop, on_chord }
     }
-    let on_loop = |e: u32| {
-        let (a, b) = (tri.org(e as usize), tri.dest(e as usize));
-        edges.binary_search(&[a.min(b), a.max(b)]).is_ok()
-    };
-    parity_from_infinity(vor, seen, on_loop)
+
+    /// Every Voronoi vertex: inside the loops? A face holding a loop edge without a dual
+    /// lies on the loop: it is neither inside nor passed through, so the parity of every
+    /// other face is still well defined.
+    fn inside_faces(&self, vor: &Voronoi<'_>) -> Vec<bool> {
+        parity_from_infinity(vor, self.on_chord.clone(), |e| self.on_loop[e as usize])
+    }
 }
 
 /// Every Voronoi vertex not marked in `blocked`: is it separated from infinity by an odd
@@ -210,7 +264,7 @@ struct Graph {
 impl Graph {
     /// The finite Voronoi edges between two inside vertices, the vertices numbered in the
     /// order the edges (by dual half-edge) first use them.
-    fn inside_edges(vor: &Voronoi<'_>, inside: &[bool], loops: &[[u32; 2]]) -> Graph {
+    fn inside_edges(vor: &Voronoi<'_>, inside: &[bool], loops: &LoopMarks) -> Graph {
         let tri = vor.triangulation();
         let mut index = vec![u32::MAX; vor.vertex_count()];
         let mut graph = Graph {
@@ -225,7 +279,7 @@ impl Graph {
             let face = vor.vertex_triangle(v);
             vor.vertex_edges_local(v).any(|edge| {
                 let [a, b] = edge.sites;
-                loops.binary_search(&[a.min(b), a.max(b)]).is_ok()
+                loops.on_loop[edge.halfedge as usize]
                     && orient2d_circumcenter(tri.points[a as usize], tri.points[b as usize], face)
                         == Orientation::Clockwise
             })
@@ -254,11 +308,14 @@ impl Graph {
     fn pruned(mut self) -> Graph {
         let scale = 1.0 / (PRUNE_ANGLE_DEGREES.to_radians() / 2.0).cos();
         let mut tree = Pruning::new(&self);
-        let mut heap: BinaryHeap<Leaf> = (0..self.centre.len() as u32)
-            .filter(|&v| tree.degree[v as usize] == 1)
-            .map(|v| Leaf::new(v, &self))
-            .collect();
-        while let Some(Leaf { vertex: u, .. }) = heap.pop() {
+        let mut queue = std::collections::VecDeque::new();
+        let mut leaves = LeafQueue::new(
+            (0..self.centre.len() as u32)
+                .filter(|&v| tree.degree[v as usize] == 1)
+                .map(|v| Leaf::new(v, &self))
+                .collect(),
+        );
+        while let Some(Leaf { vertex: u, .. }) = leaves.pop() {
             let Some((e, v)) = tree.leaf_edge(u, &self.edges) else {
                 continue;
             };
@@ -268,20 +325,18 @@ impl Graph {
             }
             let covered = self.beyond[u as usize]
                 || tree
-                    .neighbourhood(u, &self.edges)
-                    .iter()
-                    .any(|&w| self.covers(w, u, scale));
+                    .any_in_neighbourhood(u, &self.edges, &mut queue, |w| self.covers(w, u, scale));
             if !covered {
                 continue;
             }
             tree.remove(e, &self.edges);
             match tree.degree[v as usize] {
-                1 => heap.push(Leaf::new(v, &self)),
+                1 => leaves.push(Leaf::new(v, &self)),
                 // A junction became a path vertex: the branches through it grew, and the
                 // leaves that see it are tested again.
                 2 => {
                     for leaf in tree.leaves_through(v, &self.edges) {
-                        heap.push(Leaf::new(leaf, &self));
+                        leaves.push(Leaf::new(leaf, &self));
                     }
                 }
                 _ => {}
@@ -320,21 +375,40 @@ impl Graph {
 
 /// The axis graph while leaves are taken off: removed edges are marked, not taken out.
 struct Pruning {
-    incident: Vec<Vec<u32>>,
-    degree: Vec<usize>,
+    /// `incident[first[v]..first[v + 1]]`: the edges at `v` (one flat array: the walks
+    /// below touch many vertices, and one allocation per vertex cost a cache miss each).
+    first: Vec<u32>,
+    incident: Vec<u32>,
+    degree: Vec<u32>,
     removed: Vec<bool>,
 }
 
 impl Pruning {
     fn new(graph: &Graph) -> Pruning {
-        let mut incident: Vec<Vec<u32>> = vec![Vec::new(); graph.centre.len()];
+        let mut degree = vec![0u32; graph.centre.len()];
+        for &[a, b] in &graph.edges {
+            degree[a as usize] += 1;
+            degree[b as usize] += 1;
+        }
+        let mut first = Vec::with_capacity(degree.len() + 1);
+        let mut total = 0u32;
+        first.push(0);
+        for &d in &degree {
+            total += d;
+            first.push(total);
+        }
+        let mut fill = first.clone();
+        let mut incident = vec![0u32; total as usize];
         for (i, &[a, b]) in graph.edges.iter().enumerate() {
-            incident[a as usize].push(i as u32);
-            incident[b as usize].push(i as u32);
+            for v in [a, b] {
+                incident[fill[v as usize] as usize] = i as u32;
+                fill[v as usize] += 1;
+            }
         }
         Pruning {
-            degree: incident.iter().map(Vec::len).collect(),
+            first,
             incident,
+            degree,
             removed: vec![false; graph.edges.len()],
         }
     }
@@ -345,7 +419,7 @@ impl Pruning {
         v: u32,
         edges: &'p [[u32; 2]],
     ) -> impl Iterator<Item = (u32, u32)> + 'p {
-        self.incident[v as usize]
+        self.incident[self.first[v as usize] as usize..self.first[v as usize + 1] as usize]
             .iter()
             .filter(|&&e| !self.removed[e as usize])
             .map(move |&e| {
@@ -377,30 +451,53 @@ impl Pruning {
         })
     }
 
-    /// The balls a leaf's ball is tested against: its branch up to the junction, then the
-    /// nearest vertices beyond it in the tree (breadth first), where the trunk passes the
-    /// whisker's foot; [`NEIGHBOURHOOD`] vertices in all, so that a test costs O(1).
-    fn neighbourhood(&self, u: u32, edges: &[[u32; 2]]) -> Vec<u32> {
-        let mut found: Vec<u32> = self.branch(u, edges).take(NEIGHBOURHOOD).collect();
-        let Some(&last) = found.last() else {
-            return found;
+    /// Whether `hit` holds for one of the balls a leaf's ball is tested against: its branch
+    /// up to the junction, then the nearest vertices beyond it in the tree (breadth first),
+    /// where the trunk passes the whisker's foot; [`NEIGHBOURHOOD`] vertices in all, so that
+    /// a test costs O(1). Stops at the first hit: on noisy input the first ball tested
+    /// nearly always covers, and the walk is then a step or two (the whole neighbourhood,
+    /// visited for every leaf, was most of the run at 10^6 points: cache misses).
+    fn any_in_neighbourhood(
+        &self,
+        u: u32,
+        edges: &[[u32; 2]],
+        queue: &mut std::collections::VecDeque<(u32, u32)>,
+        mut hit: impl FnMut(u32) -> bool,
+    ) -> bool {
+        let mut count = 0;
+        let (mut before, mut last) = (u, None);
+        for v in self.branch(u, edges).take(NEIGHBOURHOOD) {
+            if hit(v) {
+                return true;
+            }
+            count += 1;
+            if let Some(previous) = last {
+                before = previous;
+            }
+            last = Some(v);
+        }
+        let Some(last) = last else {
+            return false;
         };
-        let before = found.len().checked_sub(2).map_or(u, |i| found[i]);
         // Breadth first away from the branch; in a tree nothing is met twice (around a hole
         // a vertex may be, which changes nothing but the count).
-        let mut queue = std::collections::VecDeque::from([(last, before)]);
+        queue.clear();
+        queue.push_back((last, before));
         while let Some((v, parent)) = queue.pop_front() {
             for (_, w) in self.around(v, edges) {
-                if found.len() >= NEIGHBOURHOOD {
-                    return found;
+                if count >= NEIGHBOURHOOD {
+                    return false;
                 }
                 if w != parent {
-                    found.push(w);
+                    if hit(w) {
+                        return true;
+                    }
+                    count += 1;
                     queue.push_back((w, v));
                 }
             }
         }
-        found
+        false
     }
 
     /// The leaves within [`NEIGHBOURHOOD`] steps of the path vertex `v` along plain paths.
@@ -436,7 +533,41 @@ impl Pruning {
     }
 }
 
-/// A leaf waiting to be pruned: the heap pops the smallest radius first, ties by position.
+/// The leaves waiting to be tested, smallest ball first: the leaves of the whole axis,
+/// sorted once, and a heap of the leaves pushed while pruning; a pop takes the smaller of
+/// the two heads, so the order is that of one heap over everything. (One heap of all the
+/// leaves was a third of the run at 10^6 noisy points: a pop's sift-down misses the cache
+/// at every level, where a sorted list is read in order.)
+struct LeafQueue {
+    sorted: std::iter::Peekable<std::vec::IntoIter<Leaf>>,
+    pushed: BinaryHeap<Leaf>,
+}
+
+impl LeafQueue {
+    fn new(mut leaves: Vec<Leaf>) -> LeafQueue {
+        // `Leaf`'s order is reversed for the max-heap: sorting by it descending puts the
+        // smallest ball first.
+        leaves.sort_unstable_by(|a, b| b.cmp(a));
+        LeafQueue {
+            sorted: leaves.into_iter().peekable(),
+            pushed: BinaryHeap::new(),
+        }
+    }
+
+    fn push(&mut self, leaf: Leaf) {
+        self.pushed.push(leaf);
+    }
+
+    fn pop(&mut self) -> Option<Leaf> {
+        match (self.sorted.peek(), self.pushed.peek()) {
+            (Some(a), Some(b)) if b > a => self.pushed.pop(),
+            (Some(_), _) => self.sorted.next(),
+            (None, _) => self.pushed.pop(),
+        }
+    }
+}
+
+/// A leaf waiting to be pruned: the queue pops the smallest radius first, ties by position.
 struct Leaf {
     radius: f64,
     centre: [f64; 2],
@@ -486,4 +617,54 @@ impl Ord for Leaf {
 
 fn distance(p: [f64; 2], q: [f64; 2]) -> f64 {
     (p[0] - q[0]).hypot(p[1] - q[1])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use wdm_crust_testkit::Rng;
+
+    /// Points on two separate closed curves (a squashed star and a circle), in scrambled
+    /// order, with the loops through them.
+    fn two_shapes(rng: &mut Rng, n: usize) -> (Vec<[f64; 2]>, Vec<Curve>) {
+        let mut points = Vec::new();
+        let mut curves = Vec::new();
+        for (centre, star) in [([0.0, 0.0], true), ([4.0, 0.5], false)] {
+            let start = points.len() as u32;
+            for i in 0..n {
+                let t = (i as f64 + 0.3 * rng.f64()) / n as f64 * std::f64::consts::TAU;
+                let r = if star {
+                    1.0 + 0.3 * (5.0 * t).cos()
+                } else {
+                    0.8
+                };
+                points.push([centre[0] + r * t.cos(), centre[1] + 0.7 * r * t.sin()]);
+            }
+            curves.push(Curve {
+                closed: true,
+                points: (start..start + n as u32).collect(),
+            });
+        }
+        (points, curves)
+    }
+
+    /// The axis is that of the loops' points alone: on the full diagram when the loops use
+    /// every point, on a triangulation of their points when others are left out (here
+    /// scattered points inside and around the shapes). Both paths give the same axis.
+    #[test]
+    fn points_off_the_loops_do_not_change_the_axis() {
+        let mut rng = Rng::new(5);
+        for round in 0..10 {
+            let (points, curves) = two_shapes(&mut rng, 60 + 20 * round);
+            let tri = triangulate(&points).unwrap();
+            let direct = pruned_medial_axis(&mut tri.voronoi(), &curves);
+            assert!(direct.edges.len() > 20, "round {round}");
+
+            let mut noisy = points.clone();
+            noisy.extend((0..15).map(|_| [rng.range(-2.0, 6.0), rng.range(-1.5, 1.5)]));
+            let tri = triangulate(&noisy).unwrap();
+            let via_subset = pruned_medial_axis(&mut tri.voronoi(), &curves);
+            assert_eq!(direct, via_subset, "round {round}");
+        }
+    }
 }

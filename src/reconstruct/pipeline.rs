@@ -5,7 +5,7 @@ use super::extract::{chain_edges, medial_axis, wdm_crust_edges};
 use super::medial_axis::pruned_medial_axis;
 use super::options::{Algorithm, MedialAxisMode, Options};
 use super::peel::{hole_edges, parity_inside, peel, Peeling};
-use super::result::{MedialAxis, Reconstruction};
+use super::result::{untouched_points, MedialAxis, Reconstruction};
 use super::wdm::{self, Label};
 use super::{crust, nn_crust};
 use crate::delaunay::{triangulate, Triangulation};
@@ -47,8 +47,14 @@ pub enum Phase {
     Voronoi,
     /// The water flow and the inner/outer labels.
     Label,
-    /// Crust edges, peeling passes, medial axis and curve assembly (or a baseline's edges).
+    /// The crust edges of the first pass (or a baseline's edges).
     Extract,
+    /// Further passes for nested curves (WDM with peeling).
+    Peel,
+    /// Curve assembly, the translation to caller indices and the unassigned points.
+    Curves,
+    /// The medial axis (WDM).
+    MedialAxis,
 }
 
 impl Phase {
@@ -59,6 +65,9 @@ impl Phase {
             Phase::Voronoi => "voronoi",
             Phase::Label => "label",
             Phase::Extract => "extract",
+            Phase::Peel => "peel",
+            Phase::Curves => "curves",
+            Phase::MedialAxis => "medial-axis",
         }
     }
 }
@@ -87,39 +96,43 @@ pub fn reconstruct_observed(
         } else {
             nn_crust::nn_crust_edges_local(&triangulation)
         };
+        lap(Phase::Extract);
         let curves = assemble(&triangulation, &edges);
         let edges = triangulation.to_input_edges(edges);
-        let mut rec = Reconstruction {
+        let unassigned = untouched_points(&triangulation, &edges);
+        lap(Phase::Curves);
+        return Ok(Reconstruction {
             algorithm: options.algorithm(),
             triangulation,
             labels: Vec::new(),
             edges,
             curves,
             medial_axis: MedialAxis::default(),
-            unassigned: Vec::new(),
+            unassigned,
             passes: 1,
             budget_exhausted: false,
-        };
-        rec.unassigned = rec.untouched_points();
-        lap(Phase::Extract);
-        return Ok(rec);
+        });
     }
-    let (labels, edges, curves, medial_axis, peeling) = {
-        let vor = triangulation.voronoi();
+    let (labels, edges, curves, medial_axis, peeling, unassigned) = {
+        let mut vor = triangulation.voronoi();
         lap(Phase::Voronoi);
-        let flow = wdm::label_vertices_local(&vor, options.label_rule());
+        // Only the labels go on: the sources and the visit marks are freed here (10 bytes per
+        // point at the memory peak, which is later).
+        let labels = wdm::label_vertices_local(&vor, options.label_rule()).labels;
         lap(Phase::Label);
         let mut edges = if triangulation.is_degenerate() {
             chain_edges(&triangulation)
         } else {
-            wdm_crust_edges(&vor, &flow.labels)
+            wdm_crust_edges(&vor, &labels)
         };
         let first_pass_len = edges.len();
+        lap(Phase::Extract);
         let peeling = if options.peeling() {
             peel(&vor, &mut edges, options)
         } else {
             Peeling::done(0)
         };
+        lap(Phase::Peel);
         let holes_possible = peeling.extra_passes > 0;
         let (mut first_pass, mut later_pass) = (Vec::new(), Vec::new());
         if holes_possible {
@@ -130,21 +143,22 @@ pub fn reconstruct_observed(
         }
         let curves = assemble(&triangulation, &edges);
         let edges = triangulation.to_input_edges(edges);
+        let unassigned = untouched_points(&triangulation, &edges);
         let holes = if holes_possible {
             hole_edges(&vor, &curves, &first_pass)
         } else {
             Vec::new()
         };
+        lap(Phase::Curves);
         let axis = if options.medial_axis() == MedialAxisMode::Pruned {
-            pruned_medial_axis(&triangulation, &curves)
+            pruned_medial_axis(&mut vor, &curves)
         } else if holes.is_empty() {
-            medial_axis(&vor, &flow.labels, &later_pass)
+            medial_axis(&vor, &labels, &later_pass)
         } else {
             // A vertex is inside the shape when it is inner in the first pass and not
             // inside a hole: an even number of hole loops separate it from infinity.
             let in_hole = parity_inside(&vor, &holes);
-            let combined: Vec<Label> = flow
-                .labels
+            let combined: Vec<Label> = labels
                 .iter()
                 .zip(&in_hole)
                 .map(|(&l, &h)| {
@@ -157,22 +171,20 @@ pub fn reconstruct_observed(
                 .collect();
             medial_axis(&vor, &combined, &later_pass)
         };
-        (flow.labels, edges, curves, axis, peeling)
+        lap(Phase::MedialAxis);
+        (labels, edges, curves, axis, peeling, unassigned)
     };
-    let mut rec = Reconstruction {
+    Ok(Reconstruction {
         algorithm: options.algorithm(),
         triangulation,
         labels,
         edges,
         curves,
         medial_axis,
-        unassigned: Vec::new(),
+        unassigned,
         passes: 1 + peeling.extra_passes,
         budget_exhausted: peeling.budget_exhausted,
-    };
-    rec.unassigned = rec.untouched_points();
-    lap(Phase::Extract);
-    Ok(rec)
+    })
 }
 
 /// The curves of distinct local `edges`, in caller indices (see

@@ -79,15 +79,7 @@ impl Reconstruction {
 
     /// Distinct points that no reconstructed edge touches.
     pub fn untouched_points(&self) -> Vec<u32> {
-        let tri = &self.triangulation;
-        let mut touched = vec![false; tri.point_count()];
-        for &[a, b] in &self.edges {
-            touched[a as usize] = true;
-            touched[b as usize] = true;
-        }
-        (0..tri.point_count() as u32)
-            .filter(|&i| !touched[i as usize] && !tri.is_duplicate(i))
-            .collect()
+        untouched_points(&self.triangulation, &self.edges)
     }
 
     /// Distinct points on no reconstructed curve (outliers, leftovers of noise), sorted, in
@@ -100,4 +92,17 @@ impl Reconstruction {
     pub fn passes(&self) -> usize {
         self.passes
     }
+}
+
+/// The distinct points of `tri` (caller indices, sorted) that no edge of `edges` (caller
+/// indices) touches.
+pub(super) fn untouched_points(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<u32> {
+    let mut touched = vec![false; tri.point_count()];
+    for &[a, b] in edges {
+        touched[a as usize] = true;
+        touched[b as usize] = true;
+    }
+    (0..tri.point_count() as u32)
+        .filter(|&i| !touched[i as usize] && !tri.is_duplicate(i))
+        .collect()
 }

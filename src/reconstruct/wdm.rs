@@ -9,6 +9,7 @@
 
 use std::cmp::Ordering;
 
+use crate::kernel::dot_sign_rounded;
 use crate::predicates::{
     circumcenter_in_convex_hull, compare_circumradius, dot_sign_circumcenters, HullPosition, Sign,
 };
@@ -74,6 +75,9 @@ pub(crate) fn label_vertices_local(vor: &Voronoi<'_>, rule: LabelRule) -> WaterF
     let mut activated = vec![!complement; vertex_count];
     let mut visited = vec![false; vertex_count];
     let mut sources: Vec<Option<u32>> = vec![None; tri.points.len()];
+    // Every vertex of a watered cell is tested against the cell's source: round each
+    // circumcenter once (kept in the diagram for the medial axis and the output).
+    let positions = vor.vertex_positions();
 
     for inlet in inlets(vor, &mut activated, complement) {
         if complement {
@@ -93,7 +97,7 @@ pub(crate) fn label_vertices_local(vor: &Voronoi<'_>, rule: LabelRule) -> WaterF
             for p in vor.vertex_sites_local(v) {
                 if vor.is_cell_bounded_local(p) && sources[p as usize].is_none() {
                     sources[p as usize] = Some(v);
-                    transition(vor, p, v, &mut activated, complement);
+                    transition(vor, positions, p, v, &mut activated, complement);
                 }
             }
             // Pushed in reverse so the neighbours are taken counterclockwise.
@@ -167,14 +171,27 @@ fn lexicographic(a: [f64; 2], b: [f64; 2]) -> Ordering {
 /// Definition 3 on the cell of `p` with source `source`: vertices strictly on the other side
 /// of `L` are deactivated (or, in the complement convention, vertices strictly on the
 /// source's side are marked outer).
-fn transition(vor: &Voronoi<'_>, p: u32, source: u32, activated: &mut [bool], complement: bool) {
+///
+/// The test is decided on the rounded circumcenters where their error bound allows (nearly
+/// always), and by the exact predicate on the triangles otherwise.
+fn transition(
+    vor: &Voronoi<'_>,
+    positions: &[[f64; 2]],
+    p: u32,
+    source: u32,
+    activated: &mut [bool],
+    complement: bool,
+) {
     let point = vor.triangulation().points[p as usize];
-    let source_triangle = vor.vertex_triangle(source);
+    let source_position = positions[source as usize];
     for v in vor.cell_local(p) {
         if v == source {
             continue;
         }
-        let side = dot_sign_circumcenters(point, source_triangle, vor.vertex_triangle(v));
+        let side =
+            dot_sign_rounded(point, source_position, positions[v as usize]).unwrap_or_else(|| {
+                dot_sign_circumcenters(point, vor.vertex_triangle(source), vor.vertex_triangle(v))
+            });
         if complement {
             if side == Sign::Positive {
                 activated[v as usize] = true;

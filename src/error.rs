@@ -21,6 +21,15 @@ pub const MIN_MAGNITUDE: f64 = 1.793662034335766e-43; // 2^-142
 /// an exact power-of-two rescale or in wide-exponent exact arithmetic.
 pub const MAX_MAGNITUDE: f64 = 3.2138760885179806e60; // 2^201
 
+/// The most points one call accepts: `(2^32 − 4) / 6`, 715 827 882.
+///
+/// Points, triangles and half-edges are numbered with `u32` (half the memory of `usize`
+/// indices, and the store's speed). The construction's store holds `2n − 2` triangles, ghosts
+/// included, so `6n − 6` half-edges, and `u32::MAX` is reserved ("no twin", "no vertex"):
+/// every half-edge index stays below it up to this count. Larger input is refused with
+/// [`Error::TooManyPoints`] before anything is allocated; it never wraps around.
+pub const MAX_POINTS: usize = 715_827_882;
+
 /// Everything that can go wrong in the library. No public function panics instead.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
@@ -52,7 +61,8 @@ pub enum Error {
         /// The offending value.
         value: f64,
     },
-    /// The input has more points than the 32-bit indices used internally can address.
+    /// The input has more than [`MAX_POINTS`] points, more than the 32-bit indices used
+    /// internally can address.
     TooManyPoints {
         /// Number of points given.
         count: usize,
@@ -73,9 +83,10 @@ impl fmt::Display for Error {
                 f,
                 "point {index}: coordinate {value:e} is above 2^201, where exact predicates could overflow"
             ),
-            Error::TooManyPoints { count } => {
-                write!(f, "{count} points are more than the 2^32 - 2 supported")
-            }
+            Error::TooManyPoints { count } => write!(
+                f,
+                "{count} points are more than the {MAX_POINTS} one run supports (32-bit indices)"
+            ),
         }
     }
 }
@@ -92,6 +103,15 @@ pub fn check_coordinate(index: usize, value: f64) -> Result<(), Error> {
     }
 }
 
+/// Checks that `count` points fit the 32-bit indices: at most [`MAX_POINTS`].
+pub(crate) fn check_count(count: usize) -> Result<(), Error> {
+    if count > MAX_POINTS {
+        Err(Error::TooManyPoints { count })
+    } else {
+        Ok(())
+    }
+}
+
 /// Checks every coordinate of every point; the first failure names its point.
 pub fn check_points(points: &[[f64; 2]]) -> Result<(), Error> {
     scan_points(points).map(|_| ())
@@ -100,11 +120,7 @@ pub fn check_points(points: &[[f64; 2]]) -> Result<(), Error> {
 /// [`check_points`], and the magnitudes of the coordinates: whether and how the
 /// construction rescales them.
 pub(crate) fn scan_points(points: &[[f64; 2]]) -> Result<Magnitudes, Error> {
-    if points.len() > (u32::MAX - 1) as usize {
-        return Err(Error::TooManyPoints {
-            count: points.len(),
-        });
-    }
+    check_count(points.len())?;
     let mut magnitudes = Magnitudes::NONE;
     for (index, p) in points.iter().enumerate() {
         check_coordinate(index, p[0])?;
@@ -118,6 +134,20 @@ pub(crate) fn scan_points(points: &[[f64; 2]]) -> Result<Magnitudes, Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The largest count leaves the number of half-edges of the store (ghosts included),
+    /// and so every index, below the reserved `u32::MAX`; one more point is refused with a
+    /// message naming the limit.
+    #[test]
+    fn the_point_limit_is_the_index_width() {
+        let half_edges = |n: usize| 3 * (2 * n - 2);
+        assert_eq!(6 * MAX_POINTS, (1usize << 32) - 4);
+        assert!(half_edges(MAX_POINTS) < u32::MAX as usize);
+        assert_eq!(check_count(MAX_POINTS), Ok(()));
+        let err = check_count(MAX_POINTS + 1).unwrap_err();
+        assert_eq!(err, Error::TooManyPoints { count: MAX_POINTS + 1 });
+        assert!(err.to_string().contains("715827882"), "{err}");
+    }
 
     #[test]
     fn magnitude_constants_are_the_powers_of_two() {

@@ -42,7 +42,8 @@ use crate::error::{scan_points, Error};
 ///
 /// # Errors
 /// A coordinate that is NaN or infinite gives [`Error::NotFinite`] naming the point; more
-/// than `2^32 − 2` points give [`Error::TooManyPoints`].
+/// than [`crate::error::MAX_POINTS`] points (715 827 882: the 32-bit indices) give
+/// [`Error::TooManyPoints`].
 ///
 /// ```
 /// let points = [[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [0.0, 0.0]];

@@ -145,7 +145,12 @@ mod tests {
         assert!(half_edges(MAX_POINTS) < u32::MAX as usize);
         assert_eq!(check_count(MAX_POINTS), Ok(()));
         let err = check_count(MAX_POINTS + 1).unwrap_err();
-        assert_eq!(err, Error::TooManyPoints { count: MAX_POINTS + 1 });
+        assert_eq!(
+            err,
+            Error::TooManyPoints {
+                count: MAX_POINTS + 1
+            }
+        );
         assert!(err.to_string().contains("715827882"), "{err}");
     }
 

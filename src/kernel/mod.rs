@@ -85,7 +85,7 @@ pub(crate) use box_side::{
 pub use circumcenter::{circumcenter, circumcenter_exact, ExactPoint};
 pub use derived::{circumcenter_in_convex_hull, dot_sign_circumcenters, HullPosition};
 pub(crate) use derived::{compare_circumradius, orient_circumcenter};
-pub(crate) use rounded::dot_sign_rounded;
+pub(crate) use rounded::{compare_radius_rounded, dot_sign_rounded};
 pub use sign::Sign;
 
 #[cfg(test)]

@@ -70,9 +70,39 @@ pub(crate) fn dot_sign_rounded(p: [f64; 2], s: [f64; 2], o: [f64; 2]) -> Option<
     }
 }
 
+/// The sign of `R_1 − R_2`, the circumradii of two triangles, from their circumcenters
+/// `o1`, `o2` rounded by [`circumcenter`](super::circumcenter) and a vertex `a1`, `a2` of
+/// each, if certified: the answer of
+/// [`compare_circumradius`](super::compare_circumradius) on the triangles.
+///
+/// `R_k = |O_k − a_k|` is within `√2·e(ô_k)` of `|ô_k − a_k|`, and the computed
+/// `fl(hypot(fl(ô_k − a_k)))` within a relative `3u` of that (two subtractions and a
+/// correctly rounded hypot, which libm's is to within an ulp: bounded by `4u` here). The
+/// difference is certified when it exceeds the sum of both bounds with the margin.
+#[inline]
+pub(crate) fn compare_radius_rounded(
+    o1: [f64; 2],
+    a1: [f64; 2],
+    o2: [f64; 2],
+    a2: [f64; 2],
+) -> Option<Sign> {
+    let r1 = (o1[0] - a1[0]).hypot(o1[1] - a1[1]);
+    let r2 = (o2[0] - a2[0]).hypot(o2[1] - a2[1]);
+    let bound =
+        (1.5 * (position_error(o1) + position_error(o2)) + 4.0 * U * (r1 + r2)) * BOUND_MARGIN;
+    let difference = r1 - r2;
+    if difference > bound {
+        Some(Sign::Positive)
+    } else if -difference > bound {
+        Some(Sign::Negative)
+    } else {
+        None
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::super::{circumcenter, dot_sign_circumcenters};
+    use super::super::{circumcenter, compare_circumradius, dot_sign_circumcenters};
     use super::*;
     use wdm_crust_testkit::Rng;
 
@@ -137,6 +167,47 @@ mod tests {
         for k in [0, 1] {
             assert!(
                 decided[k] * 10 > total[k] * 9,
+                "decided {decided:?} of {total:?}"
+            );
+        }
+    }
+
+    /// Wherever the rounded radius comparison answers, it is the exact one's; it answers
+    /// on nearly every pair of distinct radii of ordinary magnitude.
+    #[test]
+    fn radius_comparison_agrees_with_the_exact_predicate() {
+        let mut rng = Rng::new(23);
+        let (mut decided, mut total) = ([0usize; 5], [0usize; 5]);
+        for round in 0..40_000 {
+            let k = round % 5;
+            let scale = [1.0, 1e-150, 1e150, 1e-300, 3e300][k];
+            let (t1, t2) = (triangle(&mut rng, scale), triangle(&mut rng, scale));
+            // Every other pair shares a circle: equal radii must never be decided.
+            let t2 = if round % 2 == 0 {
+                t2
+            } else {
+                [t1[1], t1[2], t1[0]]
+            };
+            let (Some(o1), Some(o2)) = (
+                circumcenter(t1[0], t1[1], t1[2]),
+                circumcenter(t2[0], t2[1], t2[2]),
+            ) else {
+                continue;
+            };
+            total[k] += 1;
+            if let Some(sign) = compare_radius_rounded(o1, t1[0], o2, t2[0]) {
+                decided[k] += 1;
+                assert_eq!(
+                    sign,
+                    compare_circumradius(t1, t2),
+                    "round {round}: {t1:?} {t2:?}"
+                );
+            }
+        }
+        for k in [0, 1] {
+            // Half the pairs are equal: at most half can be decided.
+            assert!(
+                decided[k] * 20 > total[k] * 9,
                 "decided {decided:?} of {total:?}"
             );
         }

@@ -248,17 +248,23 @@ pub(super) fn parity_from_infinity(
     inside
 }
 
-/// The axis as a graph on the Voronoi vertices it uses: positions, radii, edges.
+/// The axis as a graph on the Voronoi vertices it uses: balls and edges.
 struct Graph {
-    /// Rounded circumcenter of every used vertex.
-    centre: Vec<[f64; 2]>,
+    /// The ball of every used vertex.
+    ball: Vec<Ball>,
+    /// `[a, b]`, `a < b`, indices into `ball`.
+    edges: Vec<[u32; 2]>,
+}
+
+/// What the pruning reads of a vertex, in one record (half a cache line).
+struct Ball {
+    /// Rounded circumcenter.
+    centre: [f64; 2],
     /// Distance from the rounded circumcenter to a corner of the face.
-    radius: Vec<f64>,
+    radius: f64,
     /// Whether the circumcenter lies beyond one of the face's own loop edges, outside the
     /// region (an obtuse triangle on the curve): its ball is no ball of the shape.
-    beyond: Vec<bool>,
-    /// `[a, b]`, `a < b`, indices into `centre`.
-    edges: Vec<[u32; 2]>,
+    beyond: bool,
 }
 
 impl Graph {
@@ -268,9 +274,7 @@ impl Graph {
         let tri = vor.triangulation();
         let mut index = vec![u32::MAX; vor.vertex_count()];
         let mut graph = Graph {
-            centre: Vec::new(),
-            radius: Vec::new(),
-            beyond: Vec::new(),
+            ball: Vec::new(),
             edges: Vec::new(),
         };
         // The face lies on the left of its boundary half-edges; the circumcenter is beyond
@@ -286,12 +290,14 @@ impl Graph {
         };
         let mut renumber = |v: u32, graph: &mut Graph| {
             if index[v as usize] == u32::MAX {
-                index[v as usize] = graph.centre.len() as u32;
-                let c = vor.vertex_position(v);
+                index[v as usize] = graph.ball.len() as u32;
+                let centre = vor.vertex_position(v);
                 let corner = vor.vertex_triangle(v)[0];
-                graph.centre.push(c);
-                graph.radius.push(distance(c, corner));
-                graph.beyond.push(beyond(v));
+                graph.ball.push(Ball {
+                    centre,
+                    radius: distance(centre, corner),
+                    beyond: beyond(v),
+                });
             }
             index[v as usize]
         };
@@ -310,32 +316,31 @@ impl Graph {
         let mut tree = Pruning::new(&self);
         let mut queue = std::collections::VecDeque::new();
         let mut leaves = LeafQueue::new(
-            (0..self.centre.len() as u32)
-                .filter(|&v| tree.degree[v as usize] == 1)
+            (0..self.ball.len() as u32)
+                .filter(|&v| tree.degree(v) == 1)
                 .map(|v| Leaf::new(v, &self))
                 .collect(),
         );
         while let Some(Leaf { vertex: u, .. }) = leaves.pop() {
-            let Some((e, v)) = tree.leaf_edge(u, &self.edges) else {
+            let Some((e, v)) = tree.leaf_edge(u) else {
                 continue;
             };
             // The last edge of a component stays: pruning removes branches, not shapes.
-            if tree.degree[v as usize] == 1 {
+            if tree.degree(v) == 1 {
                 continue;
             }
-            let covered = self.beyond[u as usize]
-                || tree
-                    .any_in_neighbourhood(u, &self.edges, &mut queue, |w| self.covers(w, u, scale));
+            let covered = self.ball[u as usize].beyond
+                || tree.any_in_neighbourhood(u, &mut queue, |w| self.covers(w, u, scale));
             if !covered {
                 continue;
             }
-            tree.remove(e, &self.edges);
-            match tree.degree[v as usize] {
+            tree.remove(e, [u, v]);
+            match tree.degree(v) {
                 1 => leaves.push(Leaf::new(v, &self)),
                 // A junction became a path vertex: the branches through it grew, and the
                 // leaves that see it are tested again.
                 2 => {
-                    for leaf in tree.leaves_through(v, &self.edges) {
+                    for leaf in tree.leaves_through(v) {
                         leaves.push(Leaf::new(leaf, &self));
                     }
                 }
@@ -350,19 +355,19 @@ impl Graph {
     /// `s·B_u ⊂ s·B_w`: the ball of `w` is at least as far ahead of `u`'s, in radius, as
     /// `1/s` of the distance between their centres.
     fn covers(&self, w: u32, u: u32, scale: f64) -> bool {
-        let (u, w) = (u as usize, w as usize);
-        distance(self.centre[u], self.centre[w]) <= scale * (self.radius[w] - self.radius[u])
+        let (u, w) = (&self.ball[u as usize], &self.ball[w as usize]);
+        distance(u.centre, w.centre) <= scale * (w.radius - u.radius)
     }
 
     /// The used vertices renumbered in order of first use, edges sorted.
     fn into_medial_axis(self) -> MedialAxis {
-        let mut index = vec![u32::MAX; self.centre.len()];
+        let mut index = vec![u32::MAX; self.ball.len()];
         let mut axis = MedialAxis::default();
         for &[a, b] in &self.edges {
             let [a, b] = [a, b].map(|v| {
                 if index[v as usize] == u32::MAX {
                     index[v as usize] = axis.vertices.len() as u32;
-                    axis.vertices.push(self.centre[v as usize]);
+                    axis.vertices.push(self.ball[v as usize].centre);
                 }
                 index[v as usize]
             });
@@ -374,73 +379,94 @@ impl Graph {
 }
 
 /// The axis graph while leaves are taken off: removed edges are marked, not taken out.
+///
+/// Laid out for the pruning's access pattern, one leaf after another in order of radius,
+/// so all over the graph: a vertex's record and its adjacency are one cache line each, and
+/// an adjacency entry carries the other end and its removal mark (separate arrays of
+/// degrees, offsets, edges and marks cost a cache miss each per step, measured at 10^6).
 struct Pruning {
-    /// `incident[first[v]..first[v + 1]]`: the edges at `v` (one flat array: the walks
-    /// below touch many vertices, and one allocation per vertex cost a cache miss each).
-    first: Vec<u32>,
-    incident: Vec<u32>,
-    degree: Vec<u32>,
+    node: Vec<Node>,
+    /// `adjacency[node.first..node.first + node.slots]`: `(edge, other end)`, the other end
+    /// [`REMOVED`] once the edge is gone.
+    adjacency: Vec<(u32, u32)>,
     removed: Vec<bool>,
 }
 
+#[derive(Clone, Copy)]
+struct Node {
+    first: u32,
+    slots: u32,
+    /// Edges remaining.
+    degree: u32,
+}
+
+/// The other end of an adjacency entry whose edge was removed.
+const REMOVED: u32 = u32::MAX;
+
 impl Pruning {
     fn new(graph: &Graph) -> Pruning {
-        let mut degree = vec![0u32; graph.centre.len()];
+        let mut node = vec![
+            Node {
+                first: 0,
+                slots: 0,
+                degree: 0
+            };
+            graph.ball.len()
+        ];
         for &[a, b] in &graph.edges {
-            degree[a as usize] += 1;
-            degree[b as usize] += 1;
+            node[a as usize].slots += 1;
+            node[b as usize].slots += 1;
         }
-        let mut first = Vec::with_capacity(degree.len() + 1);
         let mut total = 0u32;
-        first.push(0);
-        for &d in &degree {
-            total += d;
-            first.push(total);
+        for n in &mut node {
+            n.first = total;
+            total += n.slots;
         }
-        let mut fill = first.clone();
-        let mut incident = vec![0u32; total as usize];
+        let mut adjacency = vec![(0u32, REMOVED); total as usize];
         for (i, &[a, b]) in graph.edges.iter().enumerate() {
-            for v in [a, b] {
-                incident[fill[v as usize] as usize] = i as u32;
-                fill[v as usize] += 1;
+            for (v, w) in [(a, b), (b, a)] {
+                let n = &mut node[v as usize];
+                adjacency[(n.first + n.degree) as usize] = (i as u32, w);
+                n.degree += 1;
             }
         }
         Pruning {
-            first,
-            incident,
-            degree,
+            node,
+            adjacency,
             removed: vec![false; graph.edges.len()],
         }
     }
 
+    fn degree(&self, v: u32) -> u32 {
+        self.node[v as usize].degree
+    }
+
+    fn slots(&self, v: u32) -> std::ops::Range<usize> {
+        let n = self.node[v as usize];
+        n.first as usize..(n.first + n.slots) as usize
+    }
+
     /// The remaining edges at `v`, each with its other end.
-    fn around<'p>(
-        &'p self,
-        v: u32,
-        edges: &'p [[u32; 2]],
-    ) -> impl Iterator<Item = (u32, u32)> + 'p {
-        self.incident[self.first[v as usize] as usize..self.first[v as usize + 1] as usize]
+    fn around(&self, v: u32) -> impl Iterator<Item = (u32, u32)> + '_ {
+        self.adjacency[self.slots(v)]
             .iter()
-            .filter(|&&e| !self.removed[e as usize])
-            .map(move |&e| {
-                let [a, b] = edges[e as usize];
-                (e, if a == v { b } else { a })
-            })
+            .filter(|&&(_, w)| w != REMOVED)
+            .copied()
     }
 
     /// The one remaining edge of `u` and its other end, when `u` is a leaf.
-    fn leaf_edge(&self, u: u32, edges: &[[u32; 2]]) -> Option<(u32, u32)> {
-        (self.degree[u as usize] == 1).then(|| self.around(u, edges).next())?
+    fn leaf_edge(&self, u: u32) -> Option<(u32, u32)> {
+        (self.degree(u) == 1).then(|| self.around(u).next())?
     }
 
     /// The vertices after leaf `u` along its branch: up to and including the first one that
     /// is not of degree 2.
-    fn branch<'p>(&'p self, u: u32, edges: &'p [[u32; 2]]) -> impl Iterator<Item = u32> + 'p {
-        let mut step = self.around(u, edges).next().map(|(_, v)| (u, v));
+    fn branch(&self, u: u32) -> impl Iterator<Item = u32> + '_ {
+        let mut step = self.around(u).next().map(|(_, v)| (u, v));
         std::iter::from_fn(move || {
             let (prev, cur) = step?;
-            step = if self.degree[cur as usize] == 2 {
-                self.around(cur, edges)
+            step = if self.degree(cur) == 2 {
+                self.around(cur)
                     .map(|(_, w)| w)
                     .find(|&w| w != prev)
                     .map(|w| (cur, w))
@@ -460,13 +486,12 @@ impl Pruning {
     fn any_in_neighbourhood(
         &self,
         u: u32,
-        edges: &[[u32; 2]],
         queue: &mut std::collections::VecDeque<(u32, u32)>,
         mut hit: impl FnMut(u32) -> bool,
     ) -> bool {
         let mut count = 0;
         let (mut before, mut last) = (u, None);
-        for v in self.branch(u, edges).take(NEIGHBOURHOOD) {
+        for v in self.branch(u).take(NEIGHBOURHOOD) {
             if hit(v) {
                 return true;
             }
@@ -484,7 +509,7 @@ impl Pruning {
         queue.clear();
         queue.push_back((last, before));
         while let Some((v, parent)) = queue.pop_front() {
-            for (_, w) in self.around(v, edges) {
+            for (_, w) in self.around(v) {
                 if count >= NEIGHBOURHOOD {
                     return false;
                 }
@@ -501,19 +526,18 @@ impl Pruning {
     }
 
     /// The leaves within [`NEIGHBOURHOOD`] steps of the path vertex `v` along plain paths.
-    fn leaves_through(&self, v: u32, edges: &[[u32; 2]]) -> Vec<u32> {
+    fn leaves_through(&self, v: u32) -> Vec<u32> {
         let mut leaves = Vec::new();
-        for (_, first) in self.around(v, edges) {
+        for (_, first) in self.around(v) {
             let (mut prev, mut cur) = (v, first);
             for _ in 0..NEIGHBOURHOOD {
-                match self.degree[cur as usize] {
+                match self.degree(cur) {
                     1 => {
                         leaves.push(cur);
                         break;
                     }
                     2 => {
-                        let Some((_, next)) = self.around(cur, edges).find(|&(_, w)| w != prev)
-                        else {
+                        let Some((_, next)) = self.around(cur).find(|&(_, w)| w != prev) else {
                             break;
                         };
                         (prev, cur) = (cur, next);
@@ -525,10 +549,16 @@ impl Pruning {
         leaves
     }
 
-    fn remove(&mut self, e: u32, edges: &[[u32; 2]]) {
+    fn remove(&mut self, e: u32, ends: [u32; 2]) {
         self.removed[e as usize] = true;
-        for v in edges[e as usize] {
-            self.degree[v as usize] -= 1;
+        for v in ends {
+            let slots = self.slots(v);
+            for entry in &mut self.adjacency[slots] {
+                if entry.0 == e {
+                    entry.1 = REMOVED;
+                }
+            }
+            self.node[v as usize].degree -= 1;
         }
     }
 }
@@ -577,8 +607,8 @@ struct Leaf {
 impl Leaf {
     fn new(vertex: u32, graph: &Graph) -> Leaf {
         Leaf {
-            radius: graph.radius[vertex as usize],
-            centre: graph.centre[vertex as usize],
+            radius: graph.ball[vertex as usize].radius,
+            centre: graph.ball[vertex as usize].centre,
             vertex,
         }
     }

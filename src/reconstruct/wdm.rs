@@ -9,7 +9,7 @@
 
 use std::cmp::Ordering;
 
-use crate::kernel::dot_sign_rounded;
+use crate::kernel::{compare_radius_rounded, dot_sign_rounded};
 use crate::predicates::{
     circumcenter_in_convex_hull, compare_circumradius, dot_sign_circumcenters, HullPosition, Sign,
 };
@@ -79,7 +79,7 @@ pub(crate) fn label_vertices_local(vor: &Voronoi<'_>, rule: LabelRule) -> WaterF
     // circumcenter once (kept in the diagram for the medial axis and the output).
     let positions = vor.vertex_positions();
 
-    for inlet in inlets(vor, &mut activated, complement) {
+    for inlet in inlets(vor, positions, &mut activated, complement) {
         if complement {
             activated[inlet as usize] = true;
         }
@@ -136,7 +136,12 @@ pub(crate) fn label_vertices_local(vor: &Voronoi<'_>, rule: LabelRule) -> WaterF
 /// The list L_F: vertices carrying a ray, strictly outside the convex hull, sorted by
 /// circumradius (largest first; ties by the lexicographically smallest site, which does not
 /// depend on the input order). FVVs inside the closed hull are deactivated.
-fn inlets(vor: &Voronoi<'_>, activated: &mut [bool], complement: bool) -> Vec<u32> {
+fn inlets(
+    vor: &Voronoi<'_>,
+    positions: &[[f64; 2]],
+    activated: &mut [bool],
+    complement: bool,
+) -> Vec<u32> {
     let tri = vor.triangulation();
     let hull: Vec<[f64; 2]> = tri.hull.iter().map(|&i| tri.points[i as usize]).collect();
     let mut list: Vec<(u32, [f64; 2])> = Vec::new();
@@ -155,10 +160,16 @@ fn inlets(vor: &Voronoi<'_>, activated: &mut [bool], complement: bool) -> Vec<u3
             activated[v as usize] = false;
         }
     }
-    list.sort_by(|&(a, sa), &(b, sb)| {
-        compare_circumradius(vor.vertex_triangle(b), vor.vertex_triangle(a))
-            .then_with(|| lexicographic(sa, sb))
-    });
+    // Largest circumradius first: decided on the rounded circumcenters where their bound
+    // allows, exactly otherwise (the same total order either way).
+    let radius_order = |a: u32, b: u32| {
+        let (ta, tb) = (vor.vertex_triangle(a), vor.vertex_triangle(b));
+        match compare_radius_rounded(positions[b as usize], tb[0], positions[a as usize], ta[0]) {
+            Some(sign) => sign.into(),
+            None => compare_circumradius(tb, ta),
+        }
+    };
+    list.sort_by(|&(a, sa), &(b, sb)| radius_order(a, b).then_with(|| lexicographic(sa, sb)));
     list.into_iter().map(|(v, _)| v).collect()
 }
 

@@ -6,6 +6,7 @@ mod error;
 mod input;
 mod output;
 mod reconstruct;
+mod threads;
 mod timings;
 mod triangulate;
 mod voronoi;
@@ -63,6 +64,17 @@ enum Command {
     Reconstruct(reconstruct::ReconstructArgs),
 }
 
+impl Command {
+    /// The subcommand's `--threads`.
+    fn threads(&self) -> threads::ThreadsArg {
+        match self {
+            Command::Triangulate(args) => args.threads,
+            Command::Voronoi(args) => args.threads,
+            Command::Reconstruct(args) => args.threads,
+        }
+    }
+}
+
 /// Parses the command line, runs the subcommand and turns the outcome into an exit code,
 /// with at most one line on standard error for a failure.
 pub fn run() -> ExitCode {
@@ -70,11 +82,15 @@ pub fn run() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return clap_exit(&e),
     };
-    let result = match &cli.command {
-        Command::Triangulate(args) => triangulate::run(args),
-        Command::Voronoi(args) => voronoi::run(args),
-        Command::Reconstruct(args) => reconstruct::run(args),
-    };
+    let command = &cli.command;
+    let result = command
+        .threads()
+        .run(|| match command {
+            Command::Triangulate(args) => triangulate::run(args),
+            Command::Voronoi(args) => voronoi::run(args),
+            Command::Reconstruct(args) => reconstruct::run(args),
+        })
+        .and_then(|result| result);
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => e.report(),

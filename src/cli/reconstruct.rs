@@ -12,6 +12,7 @@ use wdm_crust::reconstruct::{Algorithm, MedialAxisMode, Options, Phase};
 
 use super::input::Input;
 use super::output::Output;
+use super::threads::ThreadsArg;
 use super::timings::Timings;
 use super::{write_timed, CliError};
 
@@ -140,6 +141,9 @@ pub struct ReconstructArgs {
     /// Print the wall time of each phase (parse, triangulate, voronoi, label, extract, write) to standard error.
     #[arg(long)]
     timings: bool,
+
+    #[command(flatten)]
+    pub threads: ThreadsArg,
 
     /// WDM: one pass only, as in the paper (curves nested inside others are then lost).
     /// By default WDM reruns on the points no curve reached, to find holes.

@@ -7,6 +7,7 @@ use wdm_crust::io::{write_triangulation_json, write_triangulation_text};
 
 use super::input::Input;
 use super::output::Output;
+use super::threads::ThreadsArg;
 use super::timings::Timings;
 use super::{triangulate_timed, write_timed, CliError};
 
@@ -52,6 +53,9 @@ pub struct TriangulateArgs {
     /// Print the wall time of each phase (parse, triangulate, write) to standard error.
     #[arg(long)]
     timings: bool,
+
+    #[command(flatten)]
+    pub threads: ThreadsArg,
 }
 
 /// Reads, triangulates, writes.

@@ -9,6 +9,7 @@ use wdm_crust::BoundingBox;
 
 use super::input::Input;
 use super::output::Output;
+use super::threads::ThreadsArg;
 use super::timings::Timings;
 use super::{triangulate_timed, write_timed, CliError};
 
@@ -85,6 +86,9 @@ pub struct VoronoiArgs {
     /// error.
     #[arg(long)]
     timings: bool,
+
+    #[command(flatten)]
+    pub threads: ThreadsArg,
 }
 
 impl VoronoiArgs {

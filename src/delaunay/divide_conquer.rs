@@ -20,7 +20,7 @@
 //! is broken by coordinates, never by input position: a permutation of the input gives the
 //! same triangles. The hull starts at the lexicographically smallest point.
 
-use super::mesh::{prev, Mesh, GHOST};
+use super::mesh::{prev, Mesh, MeshPart, GHOST};
 use super::triangulation::{Triangulation, NO_TWIN};
 use super::zorder::{lexicographic, order, Grid};
 use crate::kernel::basic::orient_in;
@@ -28,6 +28,9 @@ use crate::kernel::scale::shift_by;
 use crate::kernel::static_filter::{Lifted, StaticFilter};
 use crate::kernel::Sign;
 use crate::predicates::Orientation;
+
+#[cfg(feature = "parallel")]
+mod parallel;
 
 /// Triangulates validated (finite) points. The result keeps the points in the order the
 /// construction leaves them in (Z order, see the module docs).
@@ -78,24 +81,17 @@ fn build_as_given<const IN_RANGE: bool>(points: &[[f64; 2]]) -> Triangulation {
     let mut halfedges = Vec::new();
     let hull;
     if n >= 2 {
-        let mut dc = DivideConquer::<IN_RANGE> {
-            pts: &mut pts,
-            items: &mut items,
-            grid,
-            mesh: Mesh::for_points(n),
-            scratch: Vec::new(),
-        };
-        let extremes = dc.triangulate(0, n, true);
-        let mesh = dc.mesh;
-        let start = extremes.min_x;
-        let collinear = (0..mesh.tri.len() as u32).all(|t| mesh.is_ghost(t));
+        let mut mesh = Mesh::for_points(n);
+        let start = construct::<IN_RANGE>(&mut pts, &mut items, grid, &mut mesh).min_x;
+        let collinear = mesh.tri.iter().all(|t| t[2] == GHOST);
         if collinear {
             hull = collinear_chain(&pts);
         } else {
-            let g = if mesh.tri[start.ghost as usize][1] == start.v {
+            let ring = mesh.whole::<false>();
+            let g = if ring.corners(start.ghost)[1] == start.v {
                 start.ghost
             } else {
-                mesh.ring_next(start.ghost)
+                ring.ring_next(start.ghost)
             };
             let done = mesh.finish(g, NO_TWIN);
             (triangles, halfedges, hull) = (done.triangles, done.halfedges, done.hull);
@@ -124,6 +120,23 @@ fn build_as_given<const IN_RANGE: bool>(points: &[[f64; 2]]) -> Triangulation {
         local_of,
         duplicates: ordered.duplicates,
     }
+}
+
+/// The divide and conquer over all `pts` (at least two) into the empty `mesh`: on several
+/// threads where that pays (see [`parallel`]), else on this one. Both give the same arrays.
+fn construct<const IN_RANGE: bool>(
+    pts: &mut [[f64; 2]],
+    items: &mut [u64],
+    grid: Grid,
+    mesh: &mut Mesh,
+) -> Extremes {
+    let n = pts.len();
+    #[cfg(feature = "parallel")]
+    if parallel::pays(n) {
+        return DivideConquer::<IN_RANGE, true>::new(pts, items, grid, mesh.whole())
+            .triangulate(0, n, true);
+    }
+    DivideConquer::<IN_RANGE, false>::new(pts, items, grid, mesh.whole()).triangulate(0, n, true)
 }
 
 /// Collinear points in lexicographic order (their order along the line).
@@ -192,20 +205,60 @@ struct Candidate {
     cross: f64,
 }
 
-struct DivideConquer<'a, const IN_RANGE: bool> {
-    /// Distinct points; a subproblem may reorder its own range before recursing.
+/// The construction of one range of points (all of them at the top) and the slots it
+/// owns. With `SHIFTED` (the parallel top of the recursion, see [`parallel`]) point and slot
+/// ids are global and the slices start at point `first` and its slots; without it the range
+/// starts at 0 (the whole input, or a subproblem built with local ids and relocated after).
+struct DivideConquer<'a, const IN_RANGE: bool, const SHIFTED: bool> {
+    /// Distinct points from `first` on; a subproblem may reorder its own range before
+    /// recursing.
     pts: &'a mut [[f64; 2]],
     /// Z-order item (key and input index) of every point, reordered with it.
     items: &'a mut [u64],
+    /// Global index of `pts[0]` (zero unless `SHIFTED`).
+    first: usize,
     grid: Grid,
-    mesh: Mesh,
+    mesh: MeshPart<'a, SHIFTED>,
     scratch: Vec<([f64; 2], u64)>,
 }
 
-impl<const IN_RANGE: bool> DivideConquer<'_, IN_RANGE> {
+impl<'a, const IN_RANGE: bool, const SHIFTED: bool> DivideConquer<'a, IN_RANGE, SHIFTED> {
+    /// The construction of all of `pts` (ids from 0) into `mesh`.
+    fn new(
+        pts: &'a mut [[f64; 2]],
+        items: &'a mut [u64],
+        grid: Grid,
+        mesh: MeshPart<'a, SHIFTED>,
+    ) -> Self {
+        DivideConquer {
+            pts,
+            items,
+            first: 0,
+            grid,
+            mesh,
+            scratch: Vec::new(),
+        }
+    }
+
+    /// Index into `pts` and `items` of point `v`.
+    #[inline(always)]
+    fn at(&self, v: usize) -> usize {
+        if SHIFTED {
+            v - self.first
+        } else {
+            v
+        }
+    }
+
     #[inline]
     fn p(&self, v: u32) -> [f64; 2] {
-        self.pts[v as usize]
+        self.pts[self.at(v as usize)]
+    }
+
+    /// Positions in `pts` and `items` of the points `lo..hi`.
+    #[inline]
+    fn local(&self, lo: usize, hi: usize) -> std::ops::Range<usize> {
+        self.at(lo)..self.at(hi)
     }
 
     /// Settles the candidate of one side of the merge step at base `l–r` (`base` holds
@@ -234,7 +287,7 @@ impl<const IN_RANGE: bool> DivideConquer<'_, IN_RANGE> {
             if valid {
                 let mut flipped = false;
                 loop {
-                    let x = self.mesh.org(prev(self.mesh.twin[3 * g as usize]));
+                    let x = self.mesh.org(prev(self.mesh.twin(3 * g)));
                     if x == GHOST {
                         break;
                     }
@@ -292,15 +345,7 @@ impl<const IN_RANGE: bool> DivideConquer<'_, IN_RANGE> {
         }
         if zorder {
             if let Some((mid, cut)) = self.z_split(lo, hi) {
-                // A side may be a single point (never both: n ≥ 4).
-                let left = match mid - lo {
-                    1 => Extremes::point(lo as u32),
-                    _ => self.triangulate(lo, mid, true),
-                };
-                let right = match hi - mid {
-                    1 => Extremes::point(mid as u32),
-                    _ => self.triangulate(mid, hi, true),
-                };
+                let (left, right) = self.triangulate_halves((lo, mid, hi), true);
                 return self.merge(left, right, cut, mid);
             }
             // All keys equal: a cluster finer than the grid. Quantize it on its own box and
@@ -311,20 +356,46 @@ impl<const IN_RANGE: bool> DivideConquer<'_, IN_RANGE> {
             self.sort_lexicographically(lo, hi);
         }
         let mid = lo + n / 2;
-        let left = self.triangulate(lo, mid, false);
-        let right = self.triangulate(mid, hi, false);
+        let (left, right) = self.triangulate_halves((lo, mid, hi), false);
         self.merge(left, right, Cut::Vertical, mid)
+    }
+
+    /// Triangulates `lo..mid` and `mid..hi`; at the parallel top of the recursion
+    /// (`SHIFTED`), at the same time.
+    fn triangulate_halves(
+        &mut self,
+        (lo, mid, hi): (usize, usize, usize),
+        zorder: bool,
+    ) -> (Extremes, Extremes) {
+        #[cfg(feature = "parallel")]
+        if SHIFTED {
+            return self.triangulate_halves_in_parallel((lo, mid, hi), zorder);
+        }
+        (
+            self.triangulate_side(lo, mid, zorder),
+            self.triangulate_side(mid, hi, zorder),
+        )
+    }
+
+    /// Triangulates one side of a split, which may be a single point: that gets no
+    /// triangulation of its own (never both sides: a split range has at least four points).
+    fn triangulate_side(&mut self, lo: usize, hi: usize, zorder: bool) -> Extremes {
+        match hi - lo {
+            1 => Extremes::point(lo as u32),
+            _ => self.triangulate(lo, hi, zorder),
+        }
     }
 
     /// Splits a Z-ordered range at the first key bit its points do not share, if any.
     fn z_split(&self, lo: usize, hi: usize) -> Option<(usize, Cut)> {
+        let items = &self.items[self.local(lo, hi)];
         let low = self.grid.index_bits();
-        let diff = (self.items[lo] ^ self.items[hi - 1]) >> low;
+        let diff = (items[0] ^ items[items.len() - 1]) >> low;
         if diff == 0 {
             return None;
         }
         let bit = 63 - diff.leading_zeros() + low;
-        let mid = lo + self.items[lo..hi].partition_point(|&item| (item >> bit) & 1 == 0);
+        let mid = lo + items.partition_point(|&item| (item >> bit) & 1 == 0);
         // Odd key bits come from x cells, even ones from y cells.
         let cut = if bit % 2 == 1 {
             Cut::Vertical
@@ -338,33 +409,36 @@ impl<const IN_RANGE: bool> DivideConquer<'_, IN_RANGE> {
     /// bounding box; the items get the new keys. True when the range now splits, which the
     /// distinct points guarantee (extremes in cells 0 and 2^32 − 1 on an axis with extent).
     fn rekey(&mut self, lo: usize, hi: usize) -> bool {
+        let range = self.local(lo, hi);
+        let (pts, items) = (&mut self.pts[range.clone()], &mut self.items[range]);
         let bits = self.grid.index_bits();
-        let local = Grid::of_box(self.pts[lo..hi].iter().copied(), bits);
+        let local = Grid::of_box(pts.iter().copied(), bits);
         let index_mask = (1u64 << bits) - 1;
         self.scratch.clear();
-        self.scratch.extend((lo..hi).map(|v| {
-            (
-                self.pts[v],
-                local.key(self.pts[v]) | (self.items[v] & index_mask),
-            )
-        }));
+        self.scratch.extend(
+            pts.iter()
+                .zip(items.iter())
+                .map(|(&p, &item)| (p, local.key(p) | (item & index_mask))),
+        );
         self.scratch.sort_unstable_by_key(|&(_, item)| item);
         for (k, &(p, item)) in self.scratch.iter().enumerate() {
-            self.pts[lo + k] = p;
-            self.items[lo + k] = item;
+            pts[k] = p;
+            items[k] = item;
         }
-        (self.items[lo] ^ self.items[hi - 1]) >> bits != 0
+        (items[0] ^ items[items.len() - 1]) >> bits != 0
     }
 
     /// Sorts a range (not yet triangulated) lexicographically, input indices along.
     fn sort_lexicographically(&mut self, lo: usize, hi: usize) {
-        if hi - lo <= 16 {
+        let range = self.local(lo, hi);
+        let (pts, items) = (&mut self.pts[range.clone()], &mut self.items[range]);
+        if pts.len() <= 16 {
             // Small ranges (every fallback of Z order is one) in place.
-            for k in lo + 1..hi {
+            for k in 1..pts.len() {
                 let mut j = k;
-                while j > lo && lexicographic(self.pts[j], self.pts[j - 1]).is_lt() {
-                    self.pts.swap(j, j - 1);
-                    self.items.swap(j, j - 1);
+                while j > 0 && lexicographic(pts[j], pts[j - 1]).is_lt() {
+                    pts.swap(j, j - 1);
+                    items.swap(j, j - 1);
                     j -= 1;
                 }
             }
@@ -372,12 +446,12 @@ impl<const IN_RANGE: bool> DivideConquer<'_, IN_RANGE> {
         }
         self.scratch.clear();
         self.scratch
-            .extend((lo..hi).map(|v| (self.pts[v], self.items[v])));
+            .extend(pts.iter().copied().zip(items.iter().copied()));
         self.scratch
             .sort_unstable_by(|a, b| lexicographic(a.0, b.0));
         for (k, &(p, item)) in self.scratch.iter().enumerate() {
-            self.pts[lo + k] = p;
-            self.items[lo + k] = item;
+            pts[k] = p;
+            items[k] = item;
         }
     }
 
@@ -488,14 +562,14 @@ impl<const IN_RANGE: bool> DivideConquer<'_, IN_RANGE> {
         // out of r; `None` for a side that is a single point.
         let mesh = &self.mesh;
         let mut gl = (l_in.ghost != NO_GHOST).then(|| {
-            if mesh.tri[l_in.ghost as usize][0] == l_in.v {
+            if mesh.corners(l_in.ghost)[0] == l_in.v {
                 l_in.ghost
             } else {
                 mesh.ring_prev(l_in.ghost)
             }
         });
         let mut gr = (r_in.ghost != NO_GHOST).then(|| {
-            if mesh.tri[r_in.ghost as usize][1] == r_in.v {
+            if mesh.corners(r_in.ghost)[1] == r_in.v {
                 r_in.ghost
             } else {
                 mesh.ring_next(r_in.ghost)
@@ -505,16 +579,16 @@ impl<const IN_RANGE: bool> DivideConquer<'_, IN_RANGE> {
         loop {
             let (pl, pr) = (self.p(l), self.p(r));
             if let Some(g) = gl {
-                if f.orient(pl, self.p(self.mesh.tri[g as usize][1]), pr) == Sign::Positive {
+                if f.orient(pl, self.p(self.mesh.corners(g)[1]), pr) == Sign::Positive {
                     let g = self.mesh.ring_prev(g);
-                    (gl, l) = (Some(g), self.mesh.tri[g as usize][0]);
+                    (gl, l) = (Some(g), self.mesh.corners(g)[0]);
                     continue;
                 }
             }
             if let Some(g) = gr {
-                if f.orient(pl, self.p(self.mesh.tri[g as usize][0]), pr) == Sign::Positive {
+                if f.orient(pl, self.p(self.mesh.corners(g)[0]), pr) == Sign::Positive {
                     let g = self.mesh.ring_next(g);
-                    (gr, r) = (Some(g), self.mesh.tri[g as usize][1]);
+                    (gr, r) = (Some(g), self.mesh.corners(g)[1]);
                     continue;
                 }
             }
@@ -528,8 +602,8 @@ impl<const IN_RANGE: bool> DivideConquer<'_, IN_RANGE> {
         let mut b = gr.map(|g| self.mesh.ring_prev(g));
         let mut base = self.mesh.open(opened, l, r, gl, gr);
         let (mut pl, mut pr) = (self.p(l), self.p(r));
-        let mut lc = a.map_or(GHOST, |a| self.mesh.tri[a as usize][0]);
-        let mut rc = b.map_or(GHOST, |b| self.mesh.tri[b as usize][1]);
+        let mut lc = a.map_or(GHOST, |a| self.mesh.corners(a)[0]);
+        let mut rc = b.map_or(GHOST, |b| self.mesh.corners(b)[1]);
         let mut plc = a.map_or(pl, |_| self.p(lc));
         let mut prc = b.map_or(pr, |_| self.p(rc));
         // Every test of a step is evaluated relative to l: r, lc, rc and the next neighbours
@@ -556,14 +630,14 @@ impl<const IN_RANGE: bool> DivideConquer<'_, IN_RANGE> {
                 (base, next) = self.mesh.take_right(b_ghost, base, l);
                 b = Some(next);
                 (r, pr) = (rc, prc);
-                rc = self.mesh.tri[next as usize][1];
+                rc = self.mesh.corners(next)[1];
                 prc = self.p(rc);
             } else if let Some(a_ghost) = a {
                 let next;
                 (base, next) = self.mesh.take_left(a_ghost, base, r);
                 a = Some(next);
                 (l, pl) = (lc, plc);
-                lc = self.mesh.tri[next as usize][0];
+                lc = self.mesh.corners(next)[0];
                 plc = self.p(lc);
             }
         }

@@ -45,6 +45,7 @@ pub fn prev(e: u32) -> u32 {
     }
 }
 
+/// The whole store: room for the `2n − 2` slots of `n` points.
 pub struct Mesh {
     /// Corners of every triangle (ghosts: corner 2 is [`GHOST`]).
     pub tri: Vec<[u32; 3]>,
@@ -63,173 +64,15 @@ impl Mesh {
         }
     }
 
-    /// Start vertex of half-edge `e`.
-    #[inline]
-    pub fn org(&self, e: u32) -> u32 {
-        self.tri[(e / 3) as usize][(e % 3) as usize]
-    }
-
-    #[inline]
-    pub fn is_ghost(&self, t: u32) -> bool {
-        self.tri[t as usize][2] == GHOST
-    }
-
-    #[inline]
-    fn link(&mut self, a: u32, b: u32) {
-        self.twin[a as usize] = b;
-        self.twin[b as usize] = a;
-    }
-
-    /// The ghost of the next hull edge (counterclockwise).
-    #[inline]
-    pub fn ring_next(&self, g: u32) -> u32 {
-        self.twin[(3 * g + 2) as usize] / 3
-    }
-
-    /// The ghost of the previous hull edge (counterclockwise).
-    #[inline]
-    pub fn ring_prev(&self, g: u32) -> u32 {
-        self.twin[(3 * g + 1) as usize] / 3
-    }
-
-    /// Does ghost `g` touch vertex `v`?
-    #[inline]
-    pub fn ghost_touches(&self, g: u32, v: u32) -> bool {
-        let t = self.tri[g as usize];
-        t[2] == GHOST && (t[0] == v || t[1] == v)
-    }
-
-    /// Ghost `g = [b, a, GHOST]` of the hull edge `a → b`, glued to the next ghost `g_next`.
-    #[inline]
-    fn ghost(&mut self, g: u32, a: u32, b: u32, g_next: u32) {
-        self.tri[g as usize] = [b, a, GHOST];
-        self.link(3 * g + 2, 3 * g_next + 1);
-    }
-
-    /// Two points: two ghosts back to back in slot `s` (`[b, a]`) and `s + 1` (`[a, b]`).
-    pub fn pair(&mut self, s: u32, a: u32, b: u32) {
-        self.ghost(s, a, b, s + 1);
-        self.ghost(s + 1, b, a, s);
-        self.link(3 * s, 3 * (s + 1));
-    }
-
-    /// The counterclockwise triangle `[a, b, c]` in slot `s`, its ghosts in `s + 1..s + 4`
-    /// (`[b, a]`, `[c, b]`, `[a, c]`).
-    pub fn triangle(&mut self, s: u32, a: u32, b: u32, c: u32) {
-        self.tri[s as usize] = [a, b, c];
-        self.ghost(s + 1, a, b, s + 2);
-        self.ghost(s + 2, b, c, s + 3);
-        self.ghost(s + 3, c, a, s + 1);
-        for k in 0..3 {
-            self.link(3 * s + k, 3 * (s + 1 + k));
+    /// All slots, as the part of the subproblem of every point (`SHIFTED` or not: the ids
+    /// are global either way).
+    pub fn whole<const SHIFTED: bool>(&mut self) -> MeshPart<'_, SHIFTED> {
+        MeshPart {
+            tri: &mut self.tri,
+            twin: &mut self.twin,
+            first_slot: 0,
+            first_edge: 0,
         }
-    }
-
-    /// Three collinear points with `b` between `a` and `c`: four ghosts in `s..s + 4`
-    /// (`[b, a]`, `[c, b]`, `[b, c]`, `[a, b]`).
-    pub fn chain3(&mut self, s: u32, a: u32, b: u32, c: u32) {
-        self.ghost(s, a, b, s + 1);
-        self.ghost(s + 1, b, c, s + 2);
-        self.ghost(s + 2, c, b, s + 3);
-        self.ghost(s + 3, b, a, s);
-        self.link(3 * s, 3 * (s + 3));
-        self.link(3 * (s + 1), 3 * (s + 2));
-    }
-
-    /// Starts a merge: the ghost of the new hull edge `l → r` goes to slot `s`, between the
-    /// ghost `gl = [l, ·]` (edge into `l`) and `gr = [·, r]` (edge out of `r`); `None` for a
-    /// side that is a single point (then [`Self::close`] glues that side). Returns the
-    /// half-edge `r → l` that the first new triangle will be glued to.
-    pub fn open(&mut self, s: u32, l: u32, r: u32, gl: Option<u32>, gr: Option<u32>) -> u32 {
-        self.tri[s as usize] = [r, l, GHOST];
-        if let Some(gl) = gl {
-            self.link(3 * s + 1, 3 * gl + 2);
-        }
-        if let Some(gr) = gr {
-            self.link(3 * s + 2, 3 * gr + 1);
-        }
-        3 * s
-    }
-
-    /// Ends a merge: the ghost of the new hull edge `r → l` goes to slot `s`, glued to `base`
-    /// (`r → l`) and to the ring ghosts `a = [·, l]` and `b = [r, ·]`, or, for a side that is
-    /// a single point, to the ghost `opened` of [`Self::open`].
-    pub fn close(
-        &mut self,
-        s: u32,
-        (l, r): (u32, u32),
-        base: u32,
-        (a, b): (Option<u32>, Option<u32>),
-        opened: u32,
-    ) {
-        self.tri[s as usize] = [l, r, GHOST];
-        self.link(3 * s, base);
-        self.link(3 * s + 1, b.map_or(3 * opened + 2, |b| 3 * b + 2));
-        self.link(3 * s + 2, a.map_or(3 * opened + 1, |a| 3 * a + 1));
-    }
-
-    /// Deletes the edge between `l` and `c` on the left side of a merge by flipping it with
-    /// the ghost `a = [c, l, GHOST]`: the real triangle `[l, c, x]` behind it and `a` become the
-    /// ghosts `[x, l]` (still slot `a`) and `[c, x]`. Returns `x`.
-    #[inline(always)] // into both monomorphisations of the merge
-    pub fn flip_left(&mut self, a: u32) -> u32 {
-        let h = self.twin[(3 * a) as usize]; // l → c
-        let (hn, hp) = (next(h), prev(h)); // c → x, x → l
-        let f = h / 3;
-        let c = self.org(hn);
-        let x = self.org(hp);
-        let t1 = self.twin[hp as usize];
-        let t2 = self.twin[hn as usize];
-        let ring = self.twin[(3 * a + 2) as usize];
-        self.tri[a as usize][0] = x;
-        self.link(3 * a, t1);
-        self.tri[f as usize] = [c, x, GHOST];
-        self.link(3 * f, t2);
-        self.link(3 * f + 1, 3 * a + 2);
-        self.link(3 * f + 2, ring);
-        x
-    }
-
-    /// Mirror of [`Self::flip_left`] on the right side: the ghost `b = [r, c, GHOST]` and the
-    /// real triangle `[c, r, z]` behind it become the ghosts `[r, z]` (still slot `b`) and
-    /// `[z, c]`. Returns `z`.
-    #[inline(always)] // into both monomorphisations of the merge
-    pub fn flip_right(&mut self, b: u32) -> u32 {
-        let h = self.twin[(3 * b) as usize]; // c → r
-        let (hn, hp) = (next(h), prev(h)); // r → z, z → c
-        let f = h / 3;
-        let c = self.org(h);
-        let z = self.org(hp);
-        let t1 = self.twin[hn as usize];
-        let t2 = self.twin[hp as usize];
-        let ring = self.twin[(3 * b + 1) as usize];
-        self.tri[b as usize][1] = z;
-        self.link(3 * b, t1);
-        self.tri[f as usize] = [z, c, GHOST];
-        self.link(3 * f, t2);
-        self.link(3 * f + 1, ring);
-        self.link(3 * f + 2, 3 * b + 1);
-        z
-    }
-
-    /// Turns the left ghost `a = [c, l, GHOST]` into the triangle `[c, l, r]` glued to `base`
-    /// (`r → l`). Returns the new base `r → c` and the next left ghost `[·, c]`.
-    #[inline]
-    pub fn take_left(&mut self, a: u32, base: u32, r: u32) -> (u32, u32) {
-        let next_ghost = self.ring_next(a);
-        self.tri[a as usize][2] = r;
-        self.link(3 * a + 1, base);
-        (3 * a + 2, next_ghost)
-    }
-
-    /// Turns the right ghost `b = [r, c, GHOST]` into the triangle `[r, c, l]` glued to `base`
-    /// (`r → l`). Returns the new base `c → l` and the next right ghost `[c, ·]`.
-    #[inline]
-    pub fn take_right(&mut self, b: u32, base: u32, l: u32) -> (u32, u32) {
-        let next_ghost = self.ring_prev(b);
-        self.tri[b as usize][2] = l;
-        self.link(3 * b + 2, base);
-        (3 * b + 1, next_ghost)
     }
 
     /// Finishes the triangulation: the hull counterclockwise from the ghost `g` of the hull
@@ -248,7 +91,7 @@ impl Mesh {
             ghosts.push(h);
             let hull_edge = self.twin[(3 * h) as usize];
             self.twin[hull_edge as usize] = no_twin;
-            h = self.ring_next(h);
+            h = self.whole::<false>().ring_next(h);
             if h == g {
                 break;
             }
@@ -260,7 +103,7 @@ impl Mesh {
             // The next real triangle from the end (slots at or above `real` hold the rest of
             // the ghosts, all of which sort after the holes).
             source -= 1;
-            while self.is_ghost(source as u32) {
+            while self.tri[source][2] == GHOST {
                 source -= 1;
             }
             let (s, t) = (source, hole as usize);
@@ -286,6 +129,275 @@ impl Mesh {
     }
 }
 
+/// The slots of one subproblem: points `lo..hi` own triangles `2lo..2hi − 2` (see the module
+/// docs).
+///
+/// With `SHIFTED`, ids are global (a corner is a point's index in the whole triangulation, a
+/// half-edge `3t + k` for the whole store) while the slices start at the part's first slot:
+/// the parts of two subproblems are disjoint sub-slices that can be built at the same time
+/// and merged without relabelling, and every access subtracts the first slot or half-edge.
+/// Without it the part is its own zero-based store (the whole store, or a subproblem built
+/// on its own and [relocated](Self::relocate) afterwards): no subtraction in the hot loops.
+pub struct MeshPart<'a, const SHIFTED: bool> {
+    tri: &'a mut [[u32; 3]],
+    twin: &'a mut [u32],
+    /// Global id of `tri[0]` and of `twin[0]` (`3 first_slot`); zero unless `SHIFTED`.
+    first_slot: u32,
+    first_edge: u32,
+}
+
+impl<'a, const SHIFTED: bool> MeshPart<'a, SHIFTED> {
+    /// Index into `tri` of slot `t`.
+    #[inline(always)]
+    fn slot(&self, t: u32) -> usize {
+        if SHIFTED {
+            (t - self.first_slot) as usize
+        } else {
+            t as usize
+        }
+    }
+
+    /// Index into `twin` of half-edge `e`.
+    #[inline(always)]
+    fn edge(&self, e: u32) -> usize {
+        if SHIFTED {
+            (e - self.first_edge) as usize
+        } else {
+            e as usize
+        }
+    }
+
+    /// Corners of slot `t`.
+    #[inline]
+    pub fn corners(&self, t: u32) -> [u32; 3] {
+        self.tri[self.slot(t)]
+    }
+
+    /// Twin of half-edge `e`.
+    #[inline]
+    pub fn twin(&self, e: u32) -> u32 {
+        self.twin[self.edge(e)]
+    }
+
+    /// Splits the part of points `lo..hi` at `mid` into the parts of `lo..mid` (slots
+    /// `2lo..2mid − 2`) and `mid..hi` (slots `2mid..2hi − 2`), with global ids; the two
+    /// slots between them are the merge's and stay with `self`.
+    #[cfg(any(feature = "parallel", test))]
+    pub fn split_at_point(&mut self, mid: u32) -> [MeshPart<'_, true>; 2] {
+        let merge_slots = 2 * mid - 2;
+        let (at_slot, at_edge) = (self.slot(merge_slots), self.edge(3 * merge_slots));
+        let (left_tri, rest_tri) = self.tri.split_at_mut(at_slot);
+        let (left_twin, rest_twin) = self.twin.split_at_mut(at_edge);
+        [
+            MeshPart {
+                tri: left_tri,
+                twin: left_twin,
+                first_slot: self.first_slot,
+                first_edge: self.first_edge,
+            },
+            MeshPart {
+                tri: &mut rest_tri[2..],
+                twin: &mut rest_twin[6..],
+                first_slot: merge_slots + 2,
+                first_edge: 3 * (merge_slots + 2),
+            },
+        ]
+    }
+
+    /// The same slots as a zero-based store of their own, for a subproblem built with local
+    /// ids (point `lo` is 0); [`Self::relocate`] turns them global afterwards.
+    #[cfg(any(feature = "parallel", test))]
+    pub fn detached(&mut self) -> MeshPart<'_, false> {
+        MeshPart {
+            tri: self.tri,
+            twin: self.twin,
+            first_slot: 0,
+            first_edge: 0,
+        }
+    }
+
+    /// Turns the local ids that a [detached](Self::detached) construction wrote into global
+    /// ones: corners move by the part's first point, half-edges by its first half-edge.
+    #[cfg(any(feature = "parallel", test))]
+    pub fn relocate(&mut self) {
+        let first_point = self.first_slot / 2;
+        for t in self.tri.iter_mut() {
+            for v in t {
+                if *v != GHOST {
+                    *v += first_point;
+                }
+            }
+        }
+        for e in self.twin.iter_mut() {
+            *e += self.first_edge;
+        }
+    }
+
+    /// Start vertex of half-edge `e`.
+    #[inline]
+    pub fn org(&self, e: u32) -> u32 {
+        self.tri[self.slot(e / 3)][(e % 3) as usize]
+    }
+
+    #[inline]
+    fn link(&mut self, a: u32, b: u32) {
+        self.twin[self.edge(a)] = b;
+        self.twin[self.edge(b)] = a;
+    }
+
+    /// The ghost of the next hull edge (counterclockwise).
+    #[inline]
+    pub fn ring_next(&self, g: u32) -> u32 {
+        self.twin[self.edge(3 * g + 2)] / 3
+    }
+
+    /// The ghost of the previous hull edge (counterclockwise).
+    #[inline]
+    pub fn ring_prev(&self, g: u32) -> u32 {
+        self.twin[self.edge(3 * g + 1)] / 3
+    }
+
+    /// Does ghost `g` touch vertex `v`?
+    #[inline]
+    pub fn ghost_touches(&self, g: u32, v: u32) -> bool {
+        let t = self.tri[self.slot(g)];
+        t[2] == GHOST && (t[0] == v || t[1] == v)
+    }
+
+    /// Ghost `g = [b, a, GHOST]` of the hull edge `a → b`, glued to the next ghost `g_next`.
+    #[inline]
+    fn ghost(&mut self, g: u32, a: u32, b: u32, g_next: u32) {
+        self.tri[self.slot(g)] = [b, a, GHOST];
+        self.link(3 * g + 2, 3 * g_next + 1);
+    }
+
+    /// Two points: two ghosts back to back in slot `s` (`[b, a]`) and `s + 1` (`[a, b]`).
+    pub fn pair(&mut self, s: u32, a: u32, b: u32) {
+        self.ghost(s, a, b, s + 1);
+        self.ghost(s + 1, b, a, s);
+        self.link(3 * s, 3 * (s + 1));
+    }
+
+    /// The counterclockwise triangle `[a, b, c]` in slot `s`, its ghosts in `s + 1..s + 4`
+    /// (`[b, a]`, `[c, b]`, `[a, c]`).
+    pub fn triangle(&mut self, s: u32, a: u32, b: u32, c: u32) {
+        self.tri[self.slot(s)] = [a, b, c];
+        self.ghost(s + 1, a, b, s + 2);
+        self.ghost(s + 2, b, c, s + 3);
+        self.ghost(s + 3, c, a, s + 1);
+        for k in 0..3 {
+            self.link(3 * s + k, 3 * (s + 1 + k));
+        }
+    }
+
+    /// Three collinear points with `b` between `a` and `c`: four ghosts in `s..s + 4`
+    /// (`[b, a]`, `[c, b]`, `[b, c]`, `[a, b]`).
+    pub fn chain3(&mut self, s: u32, a: u32, b: u32, c: u32) {
+        self.ghost(s, a, b, s + 1);
+        self.ghost(s + 1, b, c, s + 2);
+        self.ghost(s + 2, c, b, s + 3);
+        self.ghost(s + 3, b, a, s);
+        self.link(3 * s, 3 * (s + 3));
+        self.link(3 * (s + 1), 3 * (s + 2));
+    }
+
+    /// Starts a merge: the ghost of the new hull edge `l → r` goes to slot `s`, between the
+    /// ghost `gl = [l, ·]` (edge into `l`) and `gr = [·, r]` (edge out of `r`); `None` for a
+    /// side that is a single point (then [`Self::close`] glues that side). Returns the
+    /// half-edge `r → l` that the first new triangle will be glued to.
+    pub fn open(&mut self, s: u32, l: u32, r: u32, gl: Option<u32>, gr: Option<u32>) -> u32 {
+        self.tri[self.slot(s)] = [r, l, GHOST];
+        if let Some(gl) = gl {
+            self.link(3 * s + 1, 3 * gl + 2);
+        }
+        if let Some(gr) = gr {
+            self.link(3 * s + 2, 3 * gr + 1);
+        }
+        3 * s
+    }
+
+    /// Ends a merge: the ghost of the new hull edge `r → l` goes to slot `s`, glued to `base`
+    /// (`r → l`) and to the ring ghosts `a = [·, l]` and `b = [r, ·]`, or, for a side that is
+    /// a single point, to the ghost `opened` of [`Self::open`].
+    pub fn close(
+        &mut self,
+        s: u32,
+        (l, r): (u32, u32),
+        base: u32,
+        (a, b): (Option<u32>, Option<u32>),
+        opened: u32,
+    ) {
+        self.tri[self.slot(s)] = [l, r, GHOST];
+        self.link(3 * s, base);
+        self.link(3 * s + 1, b.map_or(3 * opened + 2, |b| 3 * b + 2));
+        self.link(3 * s + 2, a.map_or(3 * opened + 1, |a| 3 * a + 1));
+    }
+
+    /// Deletes the edge between `l` and `c` on the left side of a merge by flipping it with
+    /// the ghost `a = [c, l, GHOST]`: the real triangle `[l, c, x]` behind it and `a` become the
+    /// ghosts `[x, l]` (still slot `a`) and `[c, x]`. Returns `x`.
+    #[inline(always)] // into both monomorphisations of the merge
+    pub fn flip_left(&mut self, a: u32) -> u32 {
+        let h = self.twin[self.edge(3 * a)]; // l → c
+        let (hn, hp) = (next(h), prev(h)); // c → x, x → l
+        let f = h / 3;
+        let c = self.org(hn);
+        let x = self.org(hp);
+        let t1 = self.twin[self.edge(hp)];
+        let t2 = self.twin[self.edge(hn)];
+        let ring = self.twin[self.edge(3 * a + 2)];
+        self.tri[self.slot(a)][0] = x;
+        self.link(3 * a, t1);
+        self.tri[self.slot(f)] = [c, x, GHOST];
+        self.link(3 * f, t2);
+        self.link(3 * f + 1, 3 * a + 2);
+        self.link(3 * f + 2, ring);
+        x
+    }
+
+    /// Mirror of [`Self::flip_left`] on the right side: the ghost `b = [r, c, GHOST]` and the
+    /// real triangle `[c, r, z]` behind it become the ghosts `[r, z]` (still slot `b`) and
+    /// `[z, c]`. Returns `z`.
+    #[inline(always)] // into both monomorphisations of the merge
+    pub fn flip_right(&mut self, b: u32) -> u32 {
+        let h = self.twin[self.edge(3 * b)]; // c → r
+        let (hn, hp) = (next(h), prev(h)); // r → z, z → c
+        let f = h / 3;
+        let c = self.org(h);
+        let z = self.org(hp);
+        let t1 = self.twin[self.edge(hn)];
+        let t2 = self.twin[self.edge(hp)];
+        let ring = self.twin[self.edge(3 * b + 1)];
+        self.tri[self.slot(b)][1] = z;
+        self.link(3 * b, t1);
+        self.tri[self.slot(f)] = [z, c, GHOST];
+        self.link(3 * f, t2);
+        self.link(3 * f + 1, ring);
+        self.link(3 * f + 2, 3 * b + 1);
+        z
+    }
+
+    /// Turns the left ghost `a = [c, l, GHOST]` into the triangle `[c, l, r]` glued to `base`
+    /// (`r → l`). Returns the new base `r → c` and the next left ghost `[·, c]`.
+    #[inline]
+    pub fn take_left(&mut self, a: u32, base: u32, r: u32) -> (u32, u32) {
+        let next_ghost = self.ring_next(a);
+        self.tri[self.slot(a)][2] = r;
+        self.link(3 * a + 1, base);
+        (3 * a + 2, next_ghost)
+    }
+
+    /// Turns the right ghost `b = [r, c, GHOST]` into the triangle `[r, c, l]` glued to `base`
+    /// (`r → l`). Returns the new base `c → l` and the next right ghost `[c, ·]`.
+    #[inline]
+    pub fn take_right(&mut self, b: u32, base: u32, l: u32) -> (u32, u32) {
+        let next_ghost = self.ring_prev(b);
+        self.tri[self.slot(b)][2] = l;
+        self.link(3 * b + 2, base);
+        (3 * b + 1, next_ghost)
+    }
+}
+
 /// The flat arrays of a finished triangulation.
 pub struct Finished {
     pub triangles: Vec<[u32; 3]>,
@@ -298,20 +410,22 @@ mod tests {
     use super::*;
 
     /// Every half-edge's twin points back and runs the other way.
-    fn assert_glued(m: &Mesh) {
-        for e in 0..m.twin.len() as u32 {
-            let t = m.twin[e as usize];
-            assert_eq!(m.twin[t as usize], e, "twin of twin of {e}");
+    fn assert_glued<const S: bool>(m: &MeshPart<S>) {
+        let edges = m.first_edge..m.first_edge + m.twin.len() as u32;
+        for e in edges.clone() {
+            let t = m.twin(e);
+            assert!(edges.contains(&t), "twin of {e} inside the part");
+            assert_eq!(m.twin(t), e, "twin of twin of {e}");
             assert_eq!(m.org(t), m.org(next(e)), "twin of {e} reversed");
         }
     }
 
     /// The hull walk along the ghost ring from ghost `g`.
-    fn ring(m: &Mesh, g: u32) -> Vec<u32> {
-        let mut hull = vec![m.tri[g as usize][1]];
+    fn ring<const S: bool>(m: &MeshPart<S>, g: u32) -> Vec<u32> {
+        let mut hull = vec![m.corners(g)[1]];
         let mut h = m.ring_next(g);
         while h != g {
-            hull.push(m.tri[h as usize][1]);
+            hull.push(m.corners(h)[1]);
             h = m.ring_next(h);
         }
         hull
@@ -319,49 +433,95 @@ mod tests {
 
     #[test]
     fn leaves_are_closed_rings() {
-        let mut m = Mesh::for_points(2);
+        let mut store = Mesh::for_points(2);
+        let mut m = store.whole::<false>();
         m.pair(0, 5, 6);
         assert_glued(&m);
         assert_eq!(ring(&m, 0), vec![5, 6]);
 
-        let mut m = Mesh::for_points(3);
+        let mut store = Mesh::for_points(3);
+        let mut m = store.whole::<false>();
         m.triangle(0, 1, 2, 3);
         assert_glued(&m);
         assert_eq!(ring(&m, 1), vec![1, 2, 3]);
         assert_eq!(m.ring_prev(1), 3);
 
-        let mut m = Mesh::for_points(3);
+        let mut store = Mesh::for_points(3);
+        let mut m = store.whole::<false>();
         m.chain3(0, 1, 2, 3);
         assert_glued(&m);
         assert_eq!(ring(&m, 0), vec![1, 2, 3, 2]);
     }
 
     #[test]
+    fn split_parts_speak_global_ids() {
+        // Points 0..7 split at 3: slots 0..4 for 0..3, 4 and 5 for the merge, 6..12 for 3..7.
+        let mut store = Mesh::for_points(7);
+        let mut whole = store.whole::<false>();
+        let [mut left, mut right] = whole.split_at_point(3);
+        left.triangle(0, 0, 1, 2);
+        right.chain3(6, 3, 4, 5);
+        right.pair(10, 5, 6);
+        assert_glued(&left);
+        assert_eq!(ring(&left, 1), vec![0, 1, 2]);
+        assert_eq!(right.twin(3 * 10), 3 * 11);
+        assert_eq!(ring(&right, 6), vec![3, 4, 5, 4]);
+        assert_eq!(store.tri[6], [4, 3, GHOST], "written through the part");
+        assert_eq!(store.tri[4], [0; 3], "the merge's slots untouched");
+    }
+
+    #[test]
+    fn a_detached_part_relocates_to_the_global_ids() {
+        // The right half (points 3..7, slots 6..12) built with local ids, then relocated,
+        // equals the same construction with global ids.
+        let build = |global: bool| {
+            let mut store = Mesh::for_points(7);
+            let mut whole = store.whole::<false>();
+            let [_, mut right] = whole.split_at_point(3);
+            if global {
+                right.chain3(6, 3, 4, 5);
+                right.pair(10, 5, 6);
+            } else {
+                let mut local = right.detached();
+                local.chain3(0, 0, 1, 2);
+                local.pair(4, 2, 3);
+                right.relocate();
+            }
+            store
+        };
+        let (global, relocated) = (build(true), build(false));
+        assert_eq!(relocated.tri, global.tri);
+        assert_eq!(relocated.twin, global.twin);
+    }
+
+    #[test]
     fn flips_and_takes_keep_the_twins_glued() {
         // Triangle [0, 1, 2]; the left side of a merge is at l = 0 with ghost a = [1, 0].
-        let mut m = Mesh::for_points(3);
+        let mut store = Mesh::for_points(3);
+        let mut m = store.whole::<false>();
         m.triangle(0, 0, 1, 2);
-        assert_eq!(m.tri[1], [1, 0, GHOST]);
+        assert_eq!(m.corners(1), [1, 0, GHOST]);
         assert_eq!(m.flip_left(1), 2);
         assert_glued(&m);
-        // Edge 0–1 is gone: two ghosts [2, 0] and [1, 2] plus the old ones of 1→2, 2→0.
-        assert_eq!(m.tri.iter().filter(|t| t[2] == GHOST).count(), 4);
         assert_eq!(ring(&m, 1), vec![0, 2, 1, 2]);
+        // Edge 0–1 is gone: two ghosts [2, 0] and [1, 2] plus the old ones of 1→2, 2→0.
+        assert_eq!(store.tri.iter().filter(|t| t[2] == GHOST).count(), 4);
     }
 
     #[test]
     fn compaction_moves_triangles_over_ghosts() {
         // A real triangle in the last slot, behind its three ghosts: it has to move.
-        let mut m2 = Mesh::for_points(3);
-        m2.ghost(0, 0, 1, 1);
-        m2.ghost(1, 1, 2, 2);
-        m2.ghost(2, 2, 0, 0);
-        m2.tri[3] = [0, 1, 2];
+        let mut store = Mesh::for_points(3);
+        let mut m = store.whole::<false>();
+        m.ghost(0, 0, 1, 1);
+        m.ghost(1, 1, 2, 2);
+        m.ghost(2, 2, 0, 0);
+        m.tri[3] = [0, 1, 2];
         for k in 0..3 {
-            m2.link(3 * k, 9 + k);
+            m.link(3 * k, 9 + k);
         }
-        assert_glued(&m2);
-        let done = m2.finish(0, u32::MAX);
+        assert_glued(&m);
+        let done = store.finish(0, u32::MAX);
         assert_eq!(done.triangles, vec![[0, 1, 2]]);
         assert_eq!(done.halfedges, vec![u32::MAX; 3]);
         assert_eq!(done.hull, vec![0, 1, 2]);

@@ -44,6 +44,7 @@ pub mod interop;
 #[cfg(feature = "cli")]
 pub mod io;
 mod kernel;
+mod parallel;
 pub mod predicates;
 pub mod reconstruct;
 pub mod voronoi;

@@ -26,6 +26,7 @@ pub use bounding_box::{BoundingBox, BoxError};
 
 use crate::delaunay::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
 use crate::kernel::{circumcenter, circumcenter_exact, incircle, ExactPoint, Sign};
+use crate::parallel;
 use crate::predicates::{orient2d, Orientation};
 
 /// The far end of a Voronoi edge.
@@ -146,24 +147,34 @@ impl<'a> Voronoi<'a> {
         let halfedges = tri.halfedges();
         let points = &tri.points;
         let mut out_halfedge = vec![NO_TWIN; points.len()];
-        let mut cocircular_pairs: Vec<[u32; 2]> = Vec::new();
         for (t, corners) in triangles.iter().enumerate() {
-            let [a, b, c] = corners.map(|p| points[p as usize]);
             for (i, &origin) in corners.iter().enumerate() {
                 let e = 3 * t + i;
-                let twin = halfedges[e];
                 let out = &mut out_halfedge[origin as usize];
-                if twin == NO_TWIN || *out == NO_TWIN {
+                if halfedges[e] == NO_TWIN || *out == NO_TWIN {
                     *out = e as u32;
-                }
-                if twin != NO_TWIN && twin as usize > e {
-                    let opposite = points[tri.org(prev_in_triangle(twin as usize)) as usize];
-                    if incircle(a, b, c, opposite) == Sign::Zero {
-                        cocircular_pairs.push([t as u32, twin / 3]);
-                    }
                 }
             }
         }
+        // The in-circle test of every interior edge, the bulk of the work, in parallel.
+        let cocircular_pairs: Vec<[u32; 2]> =
+            parallel::flat_map_chunks(triangles.len(), |range, pairs| {
+                for t in range {
+                    let corners = triangles[t];
+                    let [a, b, c] = corners.map(|p| points[p as usize]);
+                    for i in 0..3 {
+                        let e = 3 * t + i;
+                        let twin = halfedges[e];
+                        if twin != NO_TWIN && twin as usize > e {
+                            let opposite =
+                                points[tri.org(prev_in_triangle(twin as usize)) as usize];
+                            if incircle(a, b, c, opposite) == Sign::Zero {
+                                pairs.push([t as u32, twin / 3]);
+                            }
+                        }
+                    }
+                }
+            });
         let merged =
             (!cocircular_pairs.is_empty()).then(|| MergedFaces::new(tri, &cocircular_pairs));
         let vertex_count = merged
@@ -195,9 +206,7 @@ impl<'a> Voronoi<'a> {
     /// [`vertex_position`]: Voronoi::vertex_position
     pub fn vertex_positions(&self) -> &[[f64; 2]] {
         self.positions.get_or_init(|| {
-            (0..self.vertex_count as u32)
-                .map(|v| self.compute_position(v))
-                .collect()
+            parallel::map_range(self.vertex_count, |v| self.compute_position(v as u32))
         })
     }
 

@@ -85,28 +85,66 @@ fn a_large_cluster_finer_than_the_grid_is_the_same_on_any_thread_count() {
     assert_thread_count_independent(&points, "cluster");
 }
 
+/// An annulus (two noisy nested loops) with scattered outliers: peeling runs, points are
+/// left unassigned, and the pruned axis triangulates the loops' points on their own.
+fn annulus_with_outliers(n: usize, rng: &mut Rng) -> Vec<[f64; 2]> {
+    let mut points: Vec<[f64; 2]> = (0..n)
+        .map(|i| {
+            let t = i as f64 / n as f64 * std::f64::consts::TAU;
+            let r = if i % 3 == 0 { 0.5 } else { 1.0 } * (1.0 + 1e-4 * rng.normal());
+            [r * t.cos(), 0.8 * r * t.sin()]
+        })
+        .collect();
+    points.extend((0..n / 100).map(|_| [3.0 * rng.uniform() - 1.5, 2.0 * rng.uniform() - 1.0]));
+    rng.shuffle(&mut points);
+    points
+}
+
 #[test]
 fn the_reconstruction_is_the_same_on_any_thread_count() {
-    let points = PointSet::Curve.points(60_000, 3);
-    let reference = in_pool(1, || wdm_crust::reconstruct(&points)).expect("valid points");
-    assert!(!reference.curves().is_empty());
-    for threads in [2, 3] {
-        let other = in_pool(threads, || wdm_crust::reconstruct(&points)).expect("valid points");
-        assert_eq!(other.edges(), reference.edges(), "{threads} threads: edges");
-        assert_eq!(
-            other.curves(),
-            reference.curves(),
-            "{threads} threads: curves"
-        );
-        assert_eq!(
-            other.unassigned(),
-            reference.unassigned(),
-            "{threads} threads: unassigned"
-        );
-        assert_eq!(
-            format!("{:?}", other.medial_axis()),
-            format!("{:?}", reference.medial_axis()),
-            "{threads} threads: medial axis"
-        );
+    use wdm_crust::reconstruct::{MedialAxisMode, Options};
+    let inputs = [
+        ("curve", PointSet::Curve.points(60_000, 3)),
+        (
+            "annulus with outliers",
+            annulus_with_outliers(90_000, &mut Rng::new(9)),
+        ),
+    ];
+    for (what, points) in &inputs {
+        for mode in [MedialAxisMode::Pruned, MedialAxisMode::Raw] {
+            let options = Options::new().with_medial_axis(mode);
+            let run = |threads| {
+                in_pool(threads, || {
+                    wdm_crust::reconstruct::reconstruct_with(points, &options)
+                })
+                .expect("valid points")
+            };
+            let reference = run(1);
+            assert!(!reference.curves().is_empty(), "{what}");
+            assert!(!reference.medial_axis().edges.is_empty(), "{what}");
+            if what.starts_with("annulus") {
+                // The paths this input is for: a second pass, points on no curve.
+                assert!(reference.passes() > 1, "{what}");
+                assert!(!reference.unassigned().is_empty(), "{what}");
+            }
+            for threads in &THREADS[1..] {
+                let other = run(*threads);
+                let at = format!("{what}, {mode:?}, {threads} threads");
+                assert_eq!(other.labels(), reference.labels(), "{at}: labels");
+                assert_eq!(other.edges(), reference.edges(), "{at}: edges");
+                assert_eq!(other.curves(), reference.curves(), "{at}: curves");
+                assert_eq!(
+                    other.unassigned(),
+                    reference.unassigned(),
+                    "{at}: unassigned"
+                );
+                assert_eq!(other.passes(), reference.passes(), "{at}: passes");
+                assert_eq!(
+                    format!("{:?}", other.medial_axis()),
+                    format!("{:?}", reference.medial_axis()),
+                    "{at}: medial axis"
+                );
+            }
+        }
     }
 }

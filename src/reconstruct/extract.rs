@@ -4,6 +4,7 @@
 use super::result::MedialAxis;
 use super::wdm::Label;
 use crate::delaunay::Triangulation;
+use crate::parallel;
 use crate::voronoi::{EdgeEnd, Voronoi};
 
 /// The class of a Voronoi edge by the labels of its ends (Section 3.3 of the paper).
@@ -31,21 +32,22 @@ impl EdgeClass {
 /// Delaunay edges dual to branch edges, each once, unsorted, in local indices. A ray's far end is the root
 /// vertex, always outer.
 pub(super) fn wdm_crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
-    let mut edges = Vec::new();
-    for v in 0..vor.vertex_count() as u32 {
-        for edge in vor.vertex_edges_local(v) {
-            let far = match edge.to {
-                EdgeEnd::Vertex(u) if u < v => continue, // each finite edge once
-                EdgeEnd::Vertex(u) => labels[u as usize],
-                EdgeEnd::Infinity => Label::Outer,
-            };
-            if EdgeClass::of(labels[v as usize], far) == EdgeClass::Branch {
-                let [a, b] = edge.sites;
-                edges.push([a.min(b), a.max(b)]);
+    parallel::flat_map_chunks(vor.vertex_count(), |vertices, edges| {
+        for v in vertices {
+            let v = v as u32;
+            for edge in vor.vertex_edges_local(v) {
+                let far = match edge.to {
+                    EdgeEnd::Vertex(u) if u < v => continue, // each finite edge once
+                    EdgeEnd::Vertex(u) => labels[u as usize],
+                    EdgeEnd::Infinity => Label::Outer,
+                };
+                if EdgeClass::of(labels[v as usize], far) == EdgeClass::Branch {
+                    let [a, b] = edge.sites;
+                    edges.push([a.min(b), a.max(b)]);
+                }
             }
         }
-    }
-    edges
+    })
 }
 
 /// Finite Voronoi edges with both ends inner, with the used vertices renumbered.

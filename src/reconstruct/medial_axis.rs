@@ -87,6 +87,7 @@ use super::curves::Curve;
 use super::result::MedialAxis;
 use crate::delaunay::triangulate;
 use crate::delaunay::NO_TWIN;
+use crate::parallel;
 use crate::predicates::{orient2d_circumcenter, Orientation};
 use crate::voronoi::{EdgeEnd, Voronoi};
 
@@ -182,8 +183,13 @@ impl LoopMarks {
         let halfedges = tri.halfedges();
         let mut on_loop = vec![false; halfedges.len()];
         let mut on_chord = vec![false; vor.vertex_count()];
-        for &[a, b] in edges {
-            match vor.delaunay_halfedge(a, b) {
+        // Finding a loop edge's half-edge walks around its end: in parallel.
+        let found = parallel::map_range(edges.len(), |i| {
+            let [a, b] = edges[i];
+            vor.delaunay_halfedge(a, b)
+        });
+        for (&[a, b], found) in edges.iter().zip(found) {
+            match found {
                 Some(e) => {
                     on_loop[e as usize] = true;
                     if let Some(&twin) = halfedges.get(e as usize).filter(|&&t| t != NO_TWIN) {
@@ -273,10 +279,6 @@ impl Graph {
     fn inside_edges(vor: &Voronoi<'_>, inside: &[bool], loops: &LoopMarks) -> Graph {
         let tri = vor.triangulation();
         let mut index = vec![u32::MAX; vor.vertex_count()];
-        let mut graph = Graph {
-            ball: Vec::new(),
-            edges: Vec::new(),
-        };
         // The face lies on the left of its boundary half-edges; the circumcenter is beyond
         // a loop edge when it lies strictly on its right (exact).
         let beyond = |v: u32| {
@@ -288,26 +290,34 @@ impl Graph {
                         == Orientation::Clockwise
             })
         };
-        let mut renumber = |v: u32, graph: &mut Graph| {
+        let mut used = Vec::new();
+        let mut edges = Vec::new();
+        let mut renumber = |v: u32| {
             if index[v as usize] == u32::MAX {
-                index[v as usize] = graph.ball.len() as u32;
-                let centre = vor.vertex_position(v);
-                let corner = vor.vertex_triangle(v)[0];
-                graph.ball.push(Ball {
-                    centre,
-                    radius: distance(centre, corner),
-                    beyond: beyond(v),
-                });
+                index[v as usize] = used.len() as u32;
+                used.push(v);
             }
             index[v as usize]
         };
         for (_, a, b) in vor.finite_edges() {
             if inside[a as usize] && inside[b as usize] {
-                let (ia, ib) = (renumber(a, &mut graph), renumber(b, &mut graph));
-                graph.edges.push([ia.min(ib), ia.max(ib)]);
+                let (ia, ib) = (renumber(a), renumber(b));
+                edges.push([ia.min(ib), ia.max(ib)]);
             }
         }
-        graph
+        drop(index);
+        let positions = vor.vertex_positions();
+        let ball = parallel::map_range(used.len(), |i| {
+            let v = used[i];
+            let centre = positions[v as usize];
+            let corner = vor.vertex_triangle(v)[0];
+            Ball {
+                centre,
+                radius: distance(centre, corner),
+                beyond: beyond(v),
+            }
+        });
+        Graph { ball, edges }
     }
 
     /// Removes leaves by the rule of the module docs.

@@ -1,0 +1,94 @@
+//! Data-parallel loops: on rayon's pool with the `parallel` feature, plain loops without it.
+//! Every helper returns what the plain loop returns, in the same order, so results never
+//! depend on the number of threads.
+
+use std::ops::Range;
+
+/// Below this many items a loop runs on the calling thread: splitting it costs more than
+/// it saves.
+const MIN_PARALLEL: usize = 1 << 14;
+
+/// Items per task of [`flat_map_chunks`]: large enough to amortise a task, small enough to
+/// balance uneven work.
+const CHUNK: usize = 1 << 12;
+
+/// `(0..n).map(f).collect()`.
+pub(crate) fn map_range<T, F>(n: usize, f: F) -> Vec<T>
+where
+    T: Send,
+    F: Fn(usize) -> T + Sync + Send,
+{
+    #[cfg(feature = "parallel")]
+    if n >= MIN_PARALLEL && rayon::current_num_threads() > 1 {
+        use rayon::prelude::*;
+        return (0..n).into_par_iter().map(f).collect();
+    }
+    (0..n).map(f).collect()
+}
+
+/// The concatenation of `f(chunk)` over consecutive chunks of `0..n`, in order.
+pub(crate) fn flat_map_chunks<T, F>(n: usize, f: F) -> Vec<T>
+where
+    T: Send,
+    F: Fn(Range<usize>, &mut Vec<T>) + Sync + Send,
+{
+    #[cfg(feature = "parallel")]
+    if n >= MIN_PARALLEL && rayon::current_num_threads() > 1 {
+        use rayon::prelude::*;
+        let parts: Vec<Vec<T>> = (0..n.div_ceil(CHUNK))
+            .into_par_iter()
+            .map(|c| {
+                let mut part = Vec::new();
+                f(c * CHUNK..((c + 1) * CHUNK).min(n), &mut part);
+                part
+            })
+            .collect();
+        return parts.into_iter().flatten().collect();
+    }
+    let mut all = Vec::new();
+    f(0..n, &mut all);
+    all
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The same items in the same order as the plain loops, on pools of any size.
+    #[test]
+    fn results_are_those_of_the_plain_loop() {
+        for n in [
+            0,
+            1,
+            5,
+            MIN_PARALLEL - 1,
+            MIN_PARALLEL,
+            3 * CHUNK + 7 + MIN_PARALLEL,
+        ] {
+            let plain: Vec<u64> = (0..n as u64).map(|i| i * i % 97).collect();
+            let evens: Vec<usize> = (0..n).filter(|i| i % 3 == 0).collect();
+            for threads in [1, 2, 5] {
+                let run = || {
+                    let mapped = map_range(n, |i| (i as u64) * (i as u64) % 97);
+                    let chunked = flat_map_chunks(n, |range, out| {
+                        out.extend(range.filter(|i| i % 3 == 0));
+                    });
+                    (mapped, chunked)
+                };
+                #[cfg(feature = "parallel")]
+                let (mapped, chunked) = rayon::ThreadPoolBuilder::new()
+                    .num_threads(threads)
+                    .build()
+                    .unwrap()
+                    .install(run);
+                #[cfg(not(feature = "parallel"))]
+                let (mapped, chunked) = {
+                    let _ = threads;
+                    run()
+                };
+                assert_eq!(mapped, plain, "n {n}, {threads} threads");
+                assert_eq!(chunked, evens, "n {n}, {threads} threads");
+            }
+        }
+    }
+}

@@ -491,6 +491,29 @@ impl<'a> Voronoi<'a> {
         }
     }
 
+    /// The Delaunay neighbours of local point `p`, counterclockwise (from the outgoing hull
+    /// edge for a hull point); none for degenerate input. O(degree), nothing stored.
+    pub(crate) fn delaunay_neighbours_local(&self, p: u32) -> impl Iterator<Item = u32> + '_ {
+        let start = self.out_halfedge[p as usize];
+        let mut next = (start != NO_TWIN).then_some(start);
+        let mut last = None;
+        std::iter::from_fn(move || {
+            let Some(e) = next else {
+                return last.take();
+            };
+            next = match self.rotate_counterclockwise(e) {
+                Some(after) if after != start => Some(after),
+                Some(_) => None,
+                None => {
+                    // Past the hull: the incoming hull edge's origin is the last neighbour.
+                    last = Some(self.tri.org(prev_in_triangle(e as usize)));
+                    None
+                }
+            };
+            Some(self.tri.dest(e as usize))
+        })
+    }
+
     /// The half-edge out of the same point, one triangle counterclockwise; `None` past the hull.
     #[inline]
     fn rotate_counterclockwise(&self, e: u32) -> Option<u32> {
@@ -673,6 +696,30 @@ mod tests {
     use crate::triangulate;
     use std::collections::BTreeSet;
     use wdm_crust_testkit::Rng;
+
+    /// Every point's neighbours are the other ends of its Delaunay edges, each once.
+    #[test]
+    fn neighbours_are_the_delaunay_edges() {
+        let mut rng = wdm_crust_testkit::Rng::new(4);
+        for n in [3, 4, 10, 200] {
+            let points: Vec<[f64; 2]> = (0..n).map(|_| [rng.f64(), rng.f64()]).collect();
+            let tri = crate::triangulate(&points).unwrap();
+            let vor = tri.voronoi();
+            let mut expected = vec![Vec::new(); tri.points.len()];
+            for e in 0..tri.halfedges().len() {
+                let (a, b) = (tri.org(e), tri.dest(e));
+                expected[a as usize].push(b);
+                expected[b as usize].push(a);
+            }
+            for (p, want) in expected.iter_mut().enumerate() {
+                want.sort_unstable();
+                want.dedup();
+                let mut got: Vec<u32> = vor.delaunay_neighbours_local(p as u32).collect();
+                got.sort_unstable();
+                assert_eq!(&got, want, "n {n}, point {p}");
+            }
+        }
+    }
 
     #[test]
     fn is_delaunay_edge_agrees_with_the_edge_list() {

@@ -163,9 +163,12 @@ fn loop_edges(loops: &[&Curve], local: impl Fn(u32) -> u32) -> Vec<[u32; 2]> {
 /// The pruned axis inside the closed loops `edges` (sorted local pairs, Delaunay edges of
 /// `vor`'s points, covering the points the loops use).
 fn axis_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> MedialAxis {
-    let marks = LoopMarks::new(vor, edges);
-    let inside = marks.inside_faces(vor);
-    let axis = Graph::inside_edges(vor, &inside, &marks);
+    let axis = {
+        let marks = LoopMarks::new(vor, edges);
+        let inside = marks.inside_faces(vor);
+        Graph::inside_edges(vor, &inside, &marks)
+    };
+    // The marks are freed before the pruning, the memory peak of the axis.
     axis.pruned().into_medial_axis()
 }
 

@@ -7,7 +7,7 @@ use super::extract::wdm_crust_edges;
 use super::medial_axis::parity_from_infinity;
 use super::options::Options;
 use super::wdm;
-use crate::delaunay::{triangulate, Triangulation, NO_TWIN};
+use crate::delaunay::triangulate;
 use crate::voronoi::Voronoi;
 
 /// How close to a curve already found a left-over point may lie and still be taken for a
@@ -63,7 +63,6 @@ pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
         return Peeling::done(0);
     }
     drop(touched);
-    let neighbours = DelaunayNeighbours::new(tri);
     let mut budget = options.peeling_budget().saturating_mul(n);
     // Points that can no longer start a curve: noise leftovers and what a pass could only
     // read as noise.
@@ -72,9 +71,7 @@ pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
     loop {
         let curve = Adjacency::new(n, edges);
         for p in 0..n as u32 {
-            if !spent[p as usize]
-                && curve.neighbours(p).is_empty()
-                && near_a_curve(points, &neighbours, &curve, p)
+            if !spent[p as usize] && curve.neighbours(p).is_empty() && near_a_curve(full, &curve, p)
             {
                 spent[p as usize] = true;
             }
@@ -219,14 +216,10 @@ fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
 /// points that lie closer to each other than to the curve instead lost the hole of a noisy
 /// annulus in most trials at noise of one spacing (its leftovers pair up), and a scan's noise
 /// is the common case.
-fn near_a_curve(
-    points: &[[f64; 2]],
-    neighbours: &DelaunayNeighbours,
-    curve: &Adjacency,
-    p: u32,
-) -> bool {
+fn near_a_curve(full: &Voronoi<'_>, curve: &Adjacency, p: u32) -> bool {
+    let points = &full.triangulation().points;
     let at = |i: u32| points[i as usize];
-    neighbours.of(p).iter().any(|&q| {
+    full.delaunay_neighbours_local(p).any(|q| {
         // The sample spacing at q: its shortest curve edge (a long edge, where a curve
         // bridges a gap, says nothing about how far its noise reaches).
         let spacing = curve
@@ -239,49 +232,6 @@ fn near_a_curve(
             .iter()
             .any(|&(_, r)| segment_distance(at(p), at(q), at(r)) < NEAR_CURVE * spacing)
     })
-}
-
-/// The Delaunay neighbours of every point (local indices), in one flat table.
-struct DelaunayNeighbours {
-    start: Vec<u32>,
-    entries: Vec<u32>,
-}
-
-impl DelaunayNeighbours {
-    fn new(tri: &Triangulation) -> Self {
-        let n = tri.points.len();
-        let mut start = vec![0u32; n + 1];
-        let halfedges = tri.halfedges.len();
-        // Every half-edge gives its origin a neighbour; a hull edge has no twin, so it also
-        // gives its destination one.
-        let twinless = |e: usize| tri.halfedges[e] == NO_TWIN;
-        for e in 0..halfedges {
-            start[tri.org(e) as usize + 1] += 1;
-            if twinless(e) {
-                start[tri.dest(e) as usize + 1] += 1;
-            }
-        }
-        for p in 0..n {
-            start[p + 1] += start[p];
-        }
-        let mut fill = start.clone();
-        let mut entries = vec![0u32; start[n] as usize];
-        let mut push = |a: u32, b: u32| {
-            entries[fill[a as usize] as usize] = b;
-            fill[a as usize] += 1;
-        };
-        for e in 0..halfedges {
-            push(tri.org(e), tri.dest(e));
-            if twinless(e) {
-                push(tri.dest(e), tri.org(e));
-            }
-        }
-        DelaunayNeighbours { start, entries }
-    }
-
-    fn of(&self, p: u32) -> &[u32] {
-        &self.entries[self.start[p as usize] as usize..self.start[p as usize + 1] as usize]
-    }
 }
 
 /// How peeling ended.

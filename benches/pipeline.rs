@@ -6,7 +6,10 @@ mod common;
 
 use common::{curve_points, sizes, Rng};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use wdm_crust::predicates::{incircle, orient2d};
+use wdm_crust::predicates::{
+    circumcenter, circumcenter_exact, incircle, incircle_added_slack, orient2d,
+    orient2d_added_slack,
+};
 use wdm_crust::reconstruct::wdm::label_vertices;
 
 fn bench_phases(c: &mut Criterion) {
@@ -75,6 +78,7 @@ fn bench_predicates(c: &mut Criterion) {
             [a, b, c, [d[0], nudge(d[1], k)]]
         })
         .collect();
+    let thin = thin_triangles(&mut rng, BATCH);
     let mut group = c.benchmark_group("predicates");
     group.throughput(Throughput::Elements(BATCH as u64));
     group.bench_function("orient2d/random", |b| {
@@ -82,6 +86,15 @@ fn bench_predicates(c: &mut Criterion) {
             random
                 .iter()
                 .filter(|p| orient2d(p[0], p[1], p[2]) as u8 == 0)
+                .count()
+        })
+    });
+    // The filter as it was: the underflow term added to the bound (same answers).
+    group.bench_function("orient2d_added_slack/random", |b| {
+        b.iter(|| {
+            random
+                .iter()
+                .filter(|p| orient2d_added_slack(p[0], p[1], p[2]) as u8 == 0)
                 .count()
         })
     });
@@ -101,6 +114,14 @@ fn bench_predicates(c: &mut Criterion) {
                 .count()
         })
     });
+    group.bench_function("incircle_added_slack/random", |b| {
+        b.iter(|| {
+            random
+                .iter()
+                .filter(|p| incircle_added_slack(p[0], p[1], p[2], p[3]) as u8 == 0)
+                .count()
+        })
+    });
     group.bench_function("incircle/near_cocircular", |b| {
         b.iter(|| {
             near_circle
@@ -109,7 +130,41 @@ fn bench_predicates(c: &mut Criterion) {
                 .count()
         })
     });
+    // Thin triangles, where the circumcenter's `f64` filter fails: the construction as the
+    // Voronoi vertices use it, and beside it the exact construction correctly rounded (the
+    // `BigInt` path such triangles took before the double-word stage).
+    group.bench_function("circumcenter/thin", |b| {
+        b.iter(|| {
+            thin.iter()
+                .filter_map(|t| circumcenter(t[0], t[1], t[2]))
+                .fold(0.0, |s, o| s + o[0])
+        })
+    });
+    group.bench_function("circumcenter_exact_rounded/thin", |b| {
+        b.iter(|| {
+            thin.iter()
+                .filter_map(|t| circumcenter_exact(t[0], t[1], t[2]))
+                .fold(0.0, |s, o| s + o.to_f64()[0])
+        })
+    });
     group.finish();
+}
+
+/// Three consecutive samples of a curve of radius about 1 with spacing about 1e-6, bent by an
+/// angle log-uniform in [1e-9, 1e-4]: nearly collinear, like the triangles of noisy curve
+/// samples on which the circumcenter's `f64` filter fails.
+fn thin_triangles(rng: &mut Rng, n: usize) -> Vec<[[f64; 2]; 3]> {
+    (0..n)
+        .map(|_| {
+            let at = rng.uniform() * std::f64::consts::TAU;
+            let a = [at.cos(), at.sin()];
+            let dir = at + std::f64::consts::FRAC_PI_2;
+            let h = 1e-6 * (1.0 + rng.uniform());
+            let bend = 10f64.powf(-9.0 + 5.0 * rng.uniform());
+            let step = |angle: f64, len: f64| [a[0] + len * angle.cos(), a[1] + len * angle.sin()];
+            [a, step(dir, h), step(dir + bend, 2.0 * h)]
+        })
+        .collect()
 }
 
 criterion_group!(benches, bench_phases, bench_predicates);

@@ -42,6 +42,29 @@
 //! tests are nearly degenerate and go to the exact stage anyway; ordinary input is decided
 //! exactly as before. A product `S·2^-960` is subnormal only for lifts below `2^-62`
 //! (coordinates differing by less than `2^-31`), where its cost is paid.
+//!
+//! # Two comparisons instead of one sum
+//!
+//! The test proven above is `det > T`, `T = fl(B̂ + Ŝ)`, with `B̂ = fl(C·P̂)` Shewchuk's
+//! bound (`C` his constant, `P̂` the computed permanent) and `Ŝ ≥ λ` the underflow term. Adding
+//! `Ŝ` puts one more dependent addition between the products and the branch (a fifth of an
+//! in-circle test in a loop, measured). So [`orient`] and [`incircle`] test instead
+//! `det > B̂′ ∧ det > Ŝ′`, two comparisons that run side by side, with `B̂′ = fl(C′·P̂)`,
+//! `C′ = C·(1 + 2^-10)` (rounded), and `Ŝ′` the same evaluation as `Ŝ` with its constants
+//! times `2^12`. This implies `det > T`, so it is as exact; with `ε = 2^-11`:
+//!
+//! * `Ŝ′ ≥ 2^12·(1 − 2u)·Ŝ − 2^12·η ≥ (1 + 1/ε)(1 + u)·Ŝ` (scaling by `2^12` commutes with
+//!   rounding but in the subnormal range, where it loses less; `Ŝ ≥ λ = 2^52·η`);
+//! * if `C·P̂ ≥ 2^-1022`, the three roundings of `C′`, `B̂′` and `B̂` cost less than
+//!   `2^-10 − ε`, so `B̂′ ≥ (1 + ε)(1 + u)·B̂`; then `det > B̂′` and `det > Ŝ′` give
+//!   `det = det/(1 + ε) + det·ε/(1 + ε) > (1 + u)(B̂ + Ŝ) ≥ T`;
+//! * otherwise `B̂ ≤ λ ≤ Ŝ`, and `det > Ŝ′ ≥ 2049·Ŝ > T`.
+//!
+//! A relative bound larger by `2^-10` and an absolute term of `2^-1010` (per unit of the
+//! lifts `2^-948`) decline only tests that are nearly degenerate anyway. The forms `*_in`
+//! keep the single comparison: with the term added for `false` (the static filter's fallback,
+//! and the benchmarks' baseline), without it for `true` (below).
+//!
 //! Callers that know every coordinate to be zero or of an exponent in
 //! `scale::ADAPTIVE_EXPONENTS` (the construction, on validated or rescaled input) use the
 //! `*_in::<true>` forms, without the terms: there differences are 0 or in [2^-194, 2^202],
@@ -61,26 +84,63 @@ pub(super) const ORIENT_SLACK: f64 = f64::MIN_POSITIVE;
 /// `2^-960`: the underflow term of the in-circle bound per unit of the sum of the three
 /// lifts (module docs).
 pub(super) const INCIRCLE_SLACK: f64 = 1.0261342003245941e-289;
+/// `1 + 2^-10`: the factor of the relative bounds compared apart from the underflow terms
+/// (module docs).
+const SPLIT_RELATIVE: f64 = 1.0 + 1.0 / 1024.0;
+/// `2^12`: the factor of the underflow terms compared apart from the relative bounds.
+const SPLIT_ABSOLUTE: f64 = 4096.0;
+const CCW_BOUND_SPLIT: f64 = CCW_BOUND * SPLIT_RELATIVE;
+const INCIRCLE_BOUND_SPLIT: f64 = INCIRCLE_BOUND * SPLIT_RELATIVE;
+const ORIENT_SLACK_SPLIT: f64 = ORIENT_SLACK * SPLIT_ABSOLUTE;
+const INCIRCLE_SLACK_SPLIT: f64 = INCIRCLE_SLACK * SPLIT_ABSOLUTE;
 
-/// The sign of the orientation determinant of `a → b → c`: `Positive` iff `c` lies strictly
-/// left of the directed line `a → b` (counterclockwise), `Zero` iff collinear.
+/// The sign of `det` if both `|det| > bound` and `|det| > slack` (false for NaN).
 #[inline(always)]
-pub(crate) fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
-    orient_in::<false>(a, b, c)
+fn certified(det: f64, bound: f64, slack: f64) -> Option<Sign> {
+    // `&`, not `&&`: both comparisons run, side by side, and one branch follows.
+    if (det > bound) & (det > slack) {
+        Some(Sign::Positive)
+    } else if (-det > bound) & (-det > slack) {
+        Some(Sign::Negative)
+    } else {
+        None
+    }
 }
 
-/// [`orient`]; with `IN_RANGE` the caller guarantees that every coordinate is zero or of
-/// an exponent in the adaptive predicates' range (`scale::ADAPTIVE_EXPONENTS`), and the
-/// exact stage goes to them without checking (the construction on such input, where exact
-/// zeros are frequent).
+/// The sign of the orientation determinant of `a → b → c`: `Positive` iff `c` lies strictly
+/// left of the directed line `a → b` (counterclockwise), `Zero` iff collinear. Any finite
+/// input.
 #[inline(always)]
-pub(crate) fn orient_in<const IN_RANGE: bool>(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
+pub(crate) fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
+    match orient_filter(a, b, c) {
+        Some(sign) => sign,
+        None => exact_orient::<false>(a, b, c),
+    }
+}
+
+/// The orientation determinant in floating point and its permanent `|left| + |right|`.
+#[inline(always)]
+fn orient_terms(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> (f64, f64) {
     let left = (a[0] - c[0]) * (b[1] - c[1]);
     let right = (a[1] - c[1]) * (b[0] - c[0]);
-    let det = left - right;
-    // In range, the envelope rules out harmful underflow (module docs): no slack needed.
-    let slack = if IN_RANGE { 0.0 } else { ORIENT_SLACK };
-    let bound = CCW_BOUND * (left.abs() + right.abs()) + slack;
+    (left - right, left.abs() + right.abs())
+}
+
+/// [`orient`]'s filter: the bound and the underflow term compared separately (module docs).
+#[inline(always)]
+fn orient_filter(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Sign> {
+    let (det, permanent) = orient_terms(a, b, c);
+    certified(det, CCW_BOUND_SPLIT * permanent, ORIENT_SLACK_SPLIT)
+}
+
+/// [`orient`] with the underflow term added to the bound (the proven form, module docs);
+/// with `IN_RANGE` the caller guarantees that every coordinate is zero or of an exponent in
+/// the adaptive predicates' range (`scale::ADAPTIVE_EXPONENTS`), there is no underflow term,
+/// and the exact stage goes to them without checking (the construction on such input, where
+/// exact zeros are frequent).
+#[inline(always)]
+pub(crate) fn orient_in<const IN_RANGE: bool>(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
+    let (det, bound) = orient_with_bound::<IN_RANGE>(a, b, c);
     if det > bound {
         Sign::Positive
     } else if -det > bound {
@@ -88,6 +148,15 @@ pub(crate) fn orient_in<const IN_RANGE: bool>(a: [f64; 2], b: [f64; 2], c: [f64;
     } else {
         exact_orient::<IN_RANGE>(a, b, c)
     }
+}
+
+/// The orientation determinant and Shewchuk's bound, with the underflow term unless
+/// `IN_RANGE` (in range, the envelope rules out harmful underflow: module docs).
+#[inline(always)]
+fn orient_with_bound<const IN_RANGE: bool>(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> (f64, f64) {
+    let (det, permanent) = orient_terms(a, b, c);
+    let slack = if IN_RANGE { 0.0 } else { ORIENT_SLACK };
+    (det, CCW_BOUND * permanent + slack)
 }
 
 #[inline(never)]
@@ -99,15 +168,10 @@ fn exact_orient<const IN_RANGE: bool>(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> 
     }
 }
 
-/// Shewchuk's floating-point in-circle determinant and its error bound: when `|det|`
-/// exceeds the bound, its sign is the exact one.
+/// Shewchuk's floating-point in-circle determinant, its permanent and the sum of the three
+/// lifts (the scale of the underflow term).
 #[inline(always)]
-fn incircle_with_bound<const IN_RANGE: bool>(
-    a: [f64; 2],
-    b: [f64; 2],
-    c: [f64; 2],
-    d: [f64; 2],
-) -> (f64, f64) {
+fn incircle_terms(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> (f64, f64, f64) {
     let adx = a[0] - d[0];
     let bdx = b[0] - d[0];
     let cdx = c[0] - d[0];
@@ -129,22 +193,49 @@ fn incircle_with_bound<const IN_RANGE: bool>(
     let permanent = (bdxcdy.abs() + cdxbdy.abs()) * alift
         + (cdxady.abs() + adxcdy.abs()) * blift
         + (adxbdy.abs() + bdxady.abs()) * clift;
+    (det, permanent, alift + blift + clift)
+}
+
+/// Shewchuk's floating-point in-circle determinant and its error bound, with the underflow
+/// term unless `IN_RANGE`: when `|det|` exceeds the bound, its sign is the exact one.
+#[inline(always)]
+fn incircle_with_bound<const IN_RANGE: bool>(
+    a: [f64; 2],
+    b: [f64; 2],
+    c: [f64; 2],
+    d: [f64; 2],
+) -> (f64, f64) {
+    let (det, permanent, lifts) = incircle_terms(a, b, c, d);
     if IN_RANGE {
         return (det, INCIRCLE_BOUND * permanent);
     }
-    let slack = (alift + blift + clift) * INCIRCLE_SLACK + ORIENT_SLACK;
+    let slack = lifts * INCIRCLE_SLACK + ORIENT_SLACK;
     (det, INCIRCLE_BOUND * permanent + slack)
 }
 
 /// The sign of the in-circle determinant: `Positive` iff `d` lies strictly inside the circle
 /// through `a, b, c` when they are counterclockwise (mirrored when clockwise; for collinear
-/// `a, b, c` the side of their line), `Zero` iff the four points are cocircular.
+/// `a, b, c` the side of their line), `Zero` iff the four points are cocircular. Any finite
+/// input.
 #[inline(always)]
 pub(crate) fn incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Sign {
-    incircle_in::<false>(a, b, c, d)
+    match incircle_filter(a, b, c, d) {
+        Some(sign) => sign,
+        None => exact_incircle::<false>(a, b, c, d),
+    }
 }
 
-/// [`incircle`], with `IN_RANGE` as in [`orient_in`].
+/// [`incircle`]'s filter: the bound and the underflow term compared separately (module
+/// docs).
+#[inline(always)]
+fn incircle_filter(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Option<Sign> {
+    let (det, permanent, lifts) = incircle_terms(a, b, c, d);
+    let slack = lifts * INCIRCLE_SLACK_SPLIT + ORIENT_SLACK_SPLIT;
+    certified(det, INCIRCLE_BOUND_SPLIT * permanent, slack)
+}
+
+/// [`incircle`] with the underflow term added to the bound, and `IN_RANGE` as in
+/// [`orient_in`].
 #[inline(always)]
 pub(crate) fn incircle_in<const IN_RANGE: bool>(
     a: [f64; 2],
@@ -179,6 +270,7 @@ fn exact_incircle<const IN_RANGE: bool>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::kernel::scale;
     use crate::kernel::static_filter::{Lifted, StaticFilter};
     use crate::predicates::{CirclePosition, Orientation};
 
@@ -191,6 +283,9 @@ mod tests {
         assert_eq!(ORIENT_SLACK, 2f64.powi(-1022));
         assert_eq!(INCIRCLE_SLACK, 2f64.powi(-960));
         assert!(ORIENT_SLACK.is_normal() && INCIRCLE_SLACK.is_normal());
+        assert_eq!(ORIENT_SLACK_SPLIT, 2f64.powi(-1010));
+        assert_eq!(INCIRCLE_SLACK_SPLIT, 2f64.powi(-948));
+        assert_eq!(SPLIT_RELATIVE, 1.0 + 2f64.powi(-10));
     }
 
     // The references: the adaptive predicates alone, without the filters under test.
@@ -275,6 +370,53 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The split test (two comparisons) certifies only where the proven test (the underflow
+    /// term added to the bound) does, with the exact sign, and declines no more often at
+    /// ordinary magnitudes and hardly more often where determinants come near `2^-1010`.
+    #[test]
+    fn the_split_filters_imply_the_proven_ones() {
+        let mut next = uniform_stream(17);
+        let (mut split, mut added) = ([0; 2], [0; 2]);
+        for round in 0..40_000 {
+            // Scales from ordinary to deep in the subnormals; some points on a coarse grid
+            // (exact zeros).
+            let exponent = [0, -500, -540, -1000, -1040, -1070][round % 6];
+            let scale = scale::pow2(exponent);
+            let tiny = usize::from(exponent < 0);
+            let grid = round % 3 == 0;
+            let mut pick = || {
+                let (u, v) = (next(), next());
+                if grid {
+                    [(u * 8.0).floor() * scale, (v * 8.0).floor() * scale]
+                } else {
+                    [u * scale, v * scale]
+                }
+            };
+            let [a, b, c, d] = [pick(), pick(), pick(), pick()];
+            let (det, bound) = orient_with_bound::<false>(a, b, c);
+            let proven = (det > bound) | (-det > bound);
+            added[tiny] += usize::from(proven);
+            if let Some(sign) = orient_filter(a, b, c) {
+                split[tiny] += 1;
+                assert!(proven, "{a:?} {b:?} {c:?}");
+                assert_eq!(sign, exact_orient::<false>(a, b, c));
+            }
+            let (det, bound) = incircle_with_bound::<false>(a, b, c, d);
+            let proven = (det > bound) | (-det > bound);
+            added[tiny] += usize::from(proven);
+            if let Some(sign) = incircle_filter(a, b, c, d) {
+                split[tiny] += 1;
+                assert!(proven, "{a:?} {b:?} {c:?} {d:?}");
+                assert_eq!(sign, exact_incircle::<false>(a, b, c, d));
+            }
+        }
+        assert_eq!(split[0], added[0]);
+        assert!(
+            split[1] * 100 >= added[1] * 99,
+            "split {split:?}, added {added:?}"
+        );
     }
 
     #[test]

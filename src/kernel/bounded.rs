@@ -29,9 +29,9 @@ use super::arith::{Arith, U};
 use super::Sign;
 
 /// Smallest positive subnormal: 2^-1074.
-const ETA: f64 = f64::MIN_POSITIVE * f64::EPSILON;
+pub(super) const ETA: f64 = f64::MIN_POSITIVE * f64::EPSILON;
 /// Below this magnitude of a product, Dekker's TwoProduct is not proven exact (underflow).
-const TWO_PRODUCT_MIN: f64 = 1.2882297539194267e-271; // 2^-900
+pub(super) const TWO_PRODUCT_MIN: f64 = 1.2882297539194267e-271; // 2^-900
 /// Above this magnitude of a factor, Dekker's splitting could overflow.
 const TWO_PRODUCT_MAX_FACTOR: f64 = 1.0463951242053392e298; // 2^990
 /// Above this magnitude of a sum, TwoSum is not used (no overflow risk below it).
@@ -39,7 +39,7 @@ const TWO_SUM_MAX: f64 = 1.0715086071862673e301; // 2^1000
 
 /// The smallest `f64` above `x`, for `x ≥ 0`; infinities and NaN are returned unchanged.
 #[inline]
-fn up(x: f64) -> f64 {
+pub(super) fn up(x: f64) -> f64 {
     if x < f64::INFINITY {
         if x == 0.0 {
             ETA
@@ -53,7 +53,7 @@ fn up(x: f64) -> f64 {
 
 /// An upper bound of `x + y` for `x, y ≥ 0` (exact zero stays zero).
 #[inline]
-fn add_up(x: f64, y: f64) -> f64 {
+pub(super) fn add_up(x: f64, y: f64) -> f64 {
     let s = x + y;
     if s == 0.0 {
         0.0
@@ -64,7 +64,7 @@ fn add_up(x: f64, y: f64) -> f64 {
 
 /// An upper bound of `x · y` for `x, y ≥ 0` (a zero factor gives an exact zero).
 #[inline]
-fn mul_up(x: f64, y: f64) -> f64 {
+pub(super) fn mul_up(x: f64, y: f64) -> f64 {
     if x == 0.0 || y == 0.0 {
         0.0
     } else {
@@ -74,7 +74,7 @@ fn mul_up(x: f64, y: f64) -> f64 {
 
 /// A lower bound of `x − y` for `x ≥ y ≥ 0`, or `None` if it is not certainly positive.
 #[inline]
-fn sub_down_positive(x: f64, y: f64) -> Option<f64> {
+pub(super) fn sub_down_positive(x: f64, y: f64) -> Option<f64> {
     let d = x - y;
     if d > 0.0 && d < f64::INFINITY {
         // The exact difference is above the predecessor of its rounding.
@@ -87,7 +87,7 @@ fn sub_down_positive(x: f64, y: f64) -> Option<f64> {
 
 /// An upper bound of `x / y` for `x ≥ 0`, `y > 0`.
 #[inline]
-fn div_up(x: f64, y: f64) -> f64 {
+pub(super) fn div_up(x: f64, y: f64) -> f64 {
     if x == 0.0 {
         0.0
     } else {
@@ -114,15 +114,21 @@ fn two_product_error(a: f64, b: f64, p: f64) -> Option<f64> {
         && b.abs() < TWO_PRODUCT_MAX_FACTOR
         && p.abs() >= TWO_PRODUCT_MIN
         && p.is_finite();
-    if !ok {
-        return None;
-    }
+    ok.then(|| dekker_error(a, b, p))
+}
+
+/// Dekker's TwoProduct: the rounding error `a·b − p` of `p = fl(a·b)`, exact when no step
+/// overflows and `|p| ≥ 2^-900` (no underflow: the exponents of `a` and `b` sum to at least
+/// `−1022 + 52`). A step that overflows makes the result infinite or NaN: every later step
+/// subtracts or multiplies it, and all of them feed the result.
+#[inline(always)]
+pub(super) fn dekker_error(a: f64, b: f64, p: f64) -> f64 {
     let (ah, al) = split(a);
     let (bh, bl) = split(b);
     let err1 = p - ah * bh;
     let err2 = err1 - al * bh;
     let err3 = err2 - ah * bl;
-    Some(al * bl - err3)
+    al * bl - err3
 }
 
 /// A real number known to lie within `e` of the `f64` value `v` (see the module docs).

@@ -1,6 +1,7 @@
 //! The circumcenter of three `f64` points: its formula, written once and generic over the
-//! number type, and the constructions on it (the filtered `f64` circumcenter, the exact
-//! rational one, and the homogeneous exact and bounded forms the mixed predicates take).
+//! number type, and the constructions on it (the `f64` circumcenter — filtered, else in
+//! double words, else exact and rounded —, the exact rational one, and the homogeneous exact
+//! and bounded forms the mixed predicates take).
 //!
 //! With a triangle translated to its first vertex `t0`, `b = t1 − t0`, `c = t2 − t0`, the
 //! circumcenter is `O = t0 + (ux, uy) / d` with `d = 2 (bx·cy − by·cx)`,
@@ -12,12 +13,12 @@ use num_traits::Zero;
 
 use super::arith::Arith;
 use super::bounded::{lift_filter, Bounded};
+use super::double_word;
 use super::exact::{lift_exact, ratio_to_f64, rational_to_f64};
 use super::filter;
 use super::poly::{cross, diff, norm2, Pt};
-use super::scale::{normalize, rescale, scale};
+use super::scale::{rescale, scale};
 use super::stats::{self, Stage, Which};
-use super::Sign;
 
 /// The circumcenter of a triangle in homogeneous form relative to its first vertex `t0`:
 /// `O = t0 + (ux, uy) / d`.
@@ -93,41 +94,11 @@ impl ExactPoint {
     }
 }
 
-/// Every coordinate of [`circumcenter`] is within this many units in the last place of the
-/// larger output coordinate magnitude of the exact circumcenter.
-const CIRCUMCENTER_ULPS: f64 = 256.0;
-
-/// The unit in the last place of a positive normal `x`.
-fn ulp_of_normal(x: f64) -> f64 {
-    f64::from_bits(x.to_bits() & 0x7ff0_0000_0000_0000) * f64::EPSILON
-}
-
 /// `o · 2^k` if that is exact and its larger coordinate is normal, so that the relative
 /// error bound and its ulp reading carry over.
 fn scale_back(o: [f64; 2], k: i32) -> Option<[f64; 2]> {
     let [out] = scale([o], -k)?;
     (out[0].abs().max(out[1].abs())).is_normal().then_some(out)
-}
-
-/// The circumcenter `t0 + u/d` from running-error values of points scaled by `2^-k`,
-/// rescaled, if its proven error is within 256 units in the last place of its larger
-/// coordinate magnitude.
-pub(super) fn fast_circumcenter(c: &Circ<Bounded>, t0: [f64; 2], k: i32) -> Option<[f64; 2]> {
-    let x = Bounded::from_f64(t0[0]).add(&c.ux.div(&c.d)?);
-    let y = Bounded::from_f64(t0[1]).add(&c.uy.div(&c.d)?);
-    let norm = x.v.abs().max(y.v.abs());
-    if norm == 0.0 {
-        return (x.e == 0.0 && y.e == 0.0).then_some([0.0, 0.0]);
-    }
-    if !(x.v.is_finite() && y.v.is_finite() && norm.is_normal()) {
-        return None;
-    }
-    let tolerance = CIRCUMCENTER_ULPS * ulp_of_normal(norm);
-    let accurate = x.e <= tolerance && y.e <= tolerance; // false for NaN
-    if !accurate {
-        return None;
-    }
-    scale_back([x.v, y.v], k)
 }
 
 /// The exact circumcenter `O = (t0·d + u) / d · 2^shift` of `t` in integer units of
@@ -199,27 +170,25 @@ pub(super) fn circumcenter_bounded(t: [[f64; 2]; 3]) -> Option<[Bounded; 2]> {
     (tight(&x) && tight(&y)).then_some([x, y])
 }
 
-/// [`circumcenter`] after the fast filter failed.
+/// [`circumcenter`] after the fast filter failed, and the stage that decided: the filter
+/// again after an exact power-of-two rescale (huge or tiny spreads), then double words
+/// (`double_word`: nearly collinear triangles), then the exact circumcenter rounded.
 #[cold]
 #[inline(never)]
-fn circumcenter_slow(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> (Option<[f64; 2]>, Stage) {
-    if let Some((s, k)) = rescale([a, b, c], filter::LEAF_RANGE) {
+pub(super) fn circumcenter_slow(
+    a: [f64; 2],
+    b: [f64; 2],
+    c: [f64; 2],
+) -> (Option<[f64; 2]>, Stage) {
+    let rescaled = rescale([a, b, c], filter::LEAF_RANGE);
+    if let Some((s, k)) = rescaled {
         if let Some(o) = filter::circumcenter(&s).and_then(|o| scale_back(o, k)) {
             return (Some(o), Stage::Filter);
         }
     }
-    if !filter::circumcenter_cancels(&[a, b, c]) {
-        let ([sa, sb, sc], k) = normalize([a, b, c]);
-        let circ = circ(&lift_filter([sa, sb, sc]));
-        match circ.d.sign() {
-            Some(Sign::Zero) => return (None, Stage::Bounded),
-            Some(_) => {
-                if let Some(o) = fast_circumcenter(&circ, sa, k) {
-                    return (Some(o), Stage::Bounded);
-                }
-            }
-            None => {}
-        }
+    let (t, k) = rescaled.unwrap_or(([a, b, c], 0));
+    if let Some(o) = double_word::circumcenter(&t).and_then(|o| scale_back(o, k)) {
+        return (Some(o), Stage::DoubleWord);
     }
     (circumcenter_rounded(a, b, c), Stage::Exact)
 }
@@ -246,12 +215,13 @@ pub fn circumcenter_exact(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Exact
 ///
 /// Each coordinate is within 256 units in the last place of `N` of the exact circumcenter
 /// `O`, where `N` is the larger magnitude of the two returned coordinates (a normwise
-/// relative error below `2^-44`). This is proven per call, by an a priori error bound of the
-/// floating-point formula translated to `a` (one division) or, where that is too coarse, by
-/// a running error bound; where neither proves it (nearly collinear triangles, a circumcenter
-/// much closer to the origin than to `a`, results near the ends of the `f64` range) the exact
-/// circumcenter is computed and correctly rounded instead. A coordinate beyond the `f64`
-/// range (a nearly collinear triangle of huge points) is infinite.
+/// relative error below `2^-44`). This is proven per call: by an a priori error bound of the
+/// floating-point formula translated to `a` (one division), or where that is too coarse
+/// (nearly collinear triangles) by the same formula in double-word arithmetic (about 106
+/// bits) with a running error bound; where neither proves it (triangles within about `2^-60`
+/// of collinear, results near the ends of the `f64` range) the exact circumcenter is computed
+/// and correctly rounded instead. The result is a function of `a, b, c` alone. A coordinate
+/// beyond the `f64` range (a nearly collinear triangle of huge points) is infinite.
 ///
 /// ```
 /// use wdm_crust::predicates::circumcenter;

@@ -461,14 +461,3 @@ pub(super) fn circumcenter(t: &[[f64; 2]; 3]) -> Option<[f64; 2]> {
         & (b <= TAU * p);
     sure.then_some([ox, oy])
 }
-
-/// Whether the floating-point circumcenter `t0 + u/d` of `t` is over 128 times closer to the
-/// origin than to `t0`: the errors of `u/d` (a few ulps of it) then exceed 256 ulps of the
-/// result, and the running-error stage, which bounds them, has hardly any chance (a
-/// heuristic: skipping that stage is always safe).
-pub(super) fn circumcenter_cancels(t: &[[f64; 2]; 3]) -> bool {
-    let c = circ(&lift(t));
-    let (qx, qy) = (c.ux.v / c.d.v, c.uy.v / c.d.v);
-    let n = max((t[0][0] + qx).abs(), (t[0][1] + qy).abs());
-    max(qx.abs(), qy.abs()) > 128.0 * n
-}

@@ -15,6 +15,9 @@
 //!    power-of-two rescaling (`scale`), and a running-error filter (`bounded`, rigorous
 //!    bounds propagated through every operation) catches exact zeros whose operations were
 //!    all exact in `f64`. The crust's mixed predicates start at the running-error filter.
+//!    The circumcenter construction instead evaluates its formula once more in double-word
+//!    arithmetic with a running error bound (`double_word`), which decides the nearly
+//!    collinear triangles that defeat the `f64` filter.
 //! 2. **Exact evaluation.** For orientation and in-circle of input points: the `robust`
 //!    crate's adaptive predicates (after an `i128` evaluation for lattice input, `lattice`)
 //!    on inputs in their exact range, or after a power-of-two rescale into it; inputs spread
@@ -65,6 +68,7 @@ mod bounded;
 mod box_side;
 mod circumcenter;
 mod derived;
+mod double_word;
 mod exact;
 mod filter;
 mod lattice;

@@ -11,6 +11,8 @@ pub(super) enum Stage {
     Filter,
     /// The running-error filter.
     Bounded,
+    /// Double-word arithmetic with a running error bound.
+    DoubleWord,
     /// Exact arithmetic.
     Exact,
 }

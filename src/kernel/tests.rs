@@ -4,13 +4,12 @@
 use super::arith::{Arith, U};
 use super::basic::orient;
 use super::bounded::{lift_filter, ulp, Bounded};
-use super::circumcenter::{
-    circumcenter, circumcenter_exact, circumcenter_rounded, fast_circumcenter, ExactPoint,
-};
+use super::circumcenter::{circumcenter, circumcenter_exact, circumcenter_rounded, ExactPoint};
 use super::derived::{
     circumcenter_in_convex_hull, compare_circumradius as compare_radius, dot_sign_circumcenters,
     hull_position, orient_circumcenter, rotate_to, HullPosition,
 };
+use super::double_word;
 use super::exact::{integer_sign, lift_exact, rational_to_f64};
 use super::filter::{self, Sf, Term};
 use super::poly::{
@@ -512,7 +511,7 @@ fn normalize_is_exact_and_leaves_ordinary_input_alone() {
     assert_eq!(normalize(mixed), (mixed, 0));
 }
 
-/// The slower stages of the construction: the running-error one is accepted on almost all
+/// The slower stages of the construction: the double-word one is accepted on almost all
 /// random triangles, and what it returns is within its documented bound of the exact
 /// circumcenter; otherwise the exact value is rounded correctly.
 #[test]
@@ -528,13 +527,13 @@ fn circumcenter_stages_are_accurate() {
                 rng.unit() * 200.0 - 100.0,
             ]
         });
-        let bounded = fast_circumcenter(&circ(&lift_filter(t)), t[0], 0);
+        let middle = double_word::circumcenter(&t);
         let exact = circumcenter_exact(t[0], t[1], t[2]).unwrap();
         assert_eq!(circumcenter_rounded(t[0], t[1], t[2]), Some(exact.to_f64()));
-        for got in [bounded, filter::circumcenter(&t)].into_iter().flatten() {
+        for got in [middle, filter::circumcenter(&t)].into_iter().flatten() {
             assert!(within_ulps(got, &exact), "{got:?} vs {exact:?}");
         }
-        if bounded.is_none() {
+        if middle.is_none() {
             fallbacks += 1;
         }
         let got = circumcenter(t[0], t[1], t[2]).unwrap();

@@ -99,6 +99,23 @@ pub fn orient2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Orientation {
     kernel::orient(a, b, c).into()
 }
 
+/// [`orient2d`] as it was before its filter compared the underflow term separately (the
+/// bound and the term added, `kernel::basic::orient_in`): the same answers, kept as the
+/// benchmarks' baseline.
+#[doc(hidden)]
+#[inline]
+pub fn orient2d_added_slack(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Orientation {
+    kernel::basic::orient_in::<false>(a, b, c).into()
+}
+
+/// [`incircle`] with the underflow term added to the bound: the benchmarks' baseline, as
+/// [`orient2d_added_slack`].
+#[doc(hidden)]
+#[inline]
+pub fn incircle_added_slack(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> CirclePosition {
+    kernel::basic::incircle_in::<false>(a, b, c, d).into()
+}
+
 /// Exact position of `d` relative to the circle through `a`, `b`, `c`, which must be given
 /// counterclockwise.
 ///

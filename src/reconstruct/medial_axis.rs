@@ -81,7 +81,6 @@
 //! coordinates, so the result depends on the points, never on their order.
 
 use std::cmp::Ordering;
-use std::collections::BinaryHeap;
 
 use super::curves::Curve;
 use super::result::MedialAxis;
@@ -333,8 +332,9 @@ impl Graph {
                 .filter(|&v| tree.degree(v) == 1)
                 .map(|v| Leaf::new(v, &self))
                 .collect(),
+            &self.ball,
         );
-        while let Some(Leaf { vertex: u, .. }) = leaves.pop() {
+        while let Some(Leaf { vertex: u, .. }) = leaves.pop(&self.ball) {
             let Some((e, v)) = tree.leaf_edge(u) else {
                 continue;
             };
@@ -349,12 +349,12 @@ impl Graph {
             }
             tree.remove(e, [u, v]);
             match tree.degree(v) {
-                1 => leaves.push(Leaf::new(v, &self)),
+                1 => leaves.push(Leaf::new(v, &self), &self.ball),
                 // A junction became a path vertex: the branches through it grew, and the
                 // leaves that see it are tested again.
                 2 => {
                     for leaf in tree.leaves_through(v) {
-                        leaves.push(Leaf::new(leaf, &self));
+                        leaves.push(Leaf::new(leaf, &self), &self.ball);
                     }
                 }
                 _ => {}
@@ -578,42 +578,20 @@ impl Pruning {
 
 /// The leaves waiting to be tested, smallest ball first: the leaves of the whole axis,
 /// sorted once, and a heap of the leaves pushed while pruning; a pop takes the smaller of
-/// the two heads, so the order is that of one heap over everything. (One heap of all the
-/// leaves was a third of the run at 10^6 noisy points: a pop's sift-down misses the cache
-/// at every level, where a sorted list is read in order.)
+/// the two heads, so the order is that of one heap over everything. (One binary heap of all
+/// the leaves was a third of the run at 10^6 noisy points: a pop's sift-down misses the
+/// cache at every level. The sorted list is read in order, and the heap is 4-ary with
+/// 16-byte entries, so that the four children of a node share a cache line.)
 struct LeafQueue {
-    sorted: std::iter::Peekable<std::vec::IntoIter<Leaf>>,
-    pushed: BinaryHeap<Leaf>,
+    sorted: Vec<Leaf>,
+    next: usize,
+    pushed: Vec<Leaf>,
 }
 
-impl LeafQueue {
-    fn new(mut leaves: Vec<Leaf>) -> LeafQueue {
-        // `Leaf`'s order is reversed for the max-heap: sorting by it descending puts the
-        // smallest ball first.
-        leaves.sort_unstable_by(|a, b| b.cmp(a));
-        LeafQueue {
-            sorted: leaves.into_iter().peekable(),
-            pushed: BinaryHeap::new(),
-        }
-    }
-
-    fn push(&mut self, leaf: Leaf) {
-        self.pushed.push(leaf);
-    }
-
-    fn pop(&mut self) -> Option<Leaf> {
-        match (self.sorted.peek(), self.pushed.peek()) {
-            (Some(a), Some(b)) if b > a => self.pushed.pop(),
-            (Some(_), _) => self.sorted.next(),
-            (None, _) => self.pushed.pop(),
-        }
-    }
-}
-
-/// A leaf waiting to be pruned: the queue pops the smallest radius first, ties by position.
+/// A leaf waiting to be tested: its radius (the first key) and vertex.
+#[derive(Clone, Copy)]
 struct Leaf {
     radius: f64,
-    centre: [f64; 2],
     vertex: u32,
 }
 
@@ -621,40 +599,85 @@ impl Leaf {
     fn new(vertex: u32, graph: &Graph) -> Leaf {
         Leaf {
             radius: graph.ball[vertex as usize].radius,
-            centre: graph.ball[vertex as usize].centre,
             vertex,
         }
     }
 
-    /// Smallest radius first, then smallest x, then y, then (never for distinct
-    /// circumcenters) the vertex.
-    fn priority(&self, other: &Leaf) -> Ordering {
-        other
-            .radius
-            .total_cmp(&self.radius)
-            .then(other.centre[0].total_cmp(&self.centre[0]))
-            .then(other.centre[1].total_cmp(&self.centre[1]))
-            .then(other.vertex.cmp(&self.vertex))
+    /// The test order: smallest radius first, then smallest x, then y of the centre, then
+    /// (never for distinct circumcenters) the vertex.
+    fn order(&self, other: &Leaf, ball: &[Ball]) -> Ordering {
+        self.radius.total_cmp(&other.radius).then_with(|| {
+            let (p, q) = (
+                ball[self.vertex as usize].centre,
+                ball[other.vertex as usize].centre,
+            );
+            p[0].total_cmp(&q[0])
+                .then(p[1].total_cmp(&q[1]))
+                .then(self.vertex.cmp(&other.vertex))
+        })
     }
 }
 
-impl PartialEq for Leaf {
-    fn eq(&self, other: &Leaf) -> bool {
-        self.priority(other) == Ordering::Equal
+impl LeafQueue {
+    fn new(mut leaves: Vec<Leaf>, ball: &[Ball]) -> LeafQueue {
+        leaves.sort_unstable_by(|a, b| a.order(b, ball));
+        LeafQueue {
+            sorted: leaves,
+            next: 0,
+            pushed: Vec::new(),
+        }
     }
-}
 
-impl Eq for Leaf {}
-
-impl PartialOrd for Leaf {
-    fn partial_cmp(&self, other: &Leaf) -> Option<Ordering> {
-        Some(self.cmp(other))
+    fn push(&mut self, leaf: Leaf, ball: &[Ball]) {
+        let heap = &mut self.pushed;
+        heap.push(leaf);
+        let mut i = heap.len() - 1;
+        while i > 0 {
+            let parent = (i - 1) / 4;
+            if heap[i].order(&heap[parent], ball) != Ordering::Less {
+                break;
+            }
+            heap.swap(i, parent);
+            i = parent;
+        }
     }
-}
 
-impl Ord for Leaf {
-    fn cmp(&self, other: &Leaf) -> Ordering {
-        self.priority(other)
+    fn pop(&mut self, ball: &[Ball]) -> Option<Leaf> {
+        let from_sorted = match (self.sorted.get(self.next), self.pushed.first()) {
+            (Some(a), Some(b)) => a.order(b, ball) == Ordering::Less,
+            (Some(_), None) => true,
+            (None, _) => false,
+        };
+        if from_sorted {
+            self.next += 1;
+            return Some(self.sorted[self.next - 1]);
+        }
+        let heap = &mut self.pushed;
+        let top = *heap.first()?;
+        let last = heap.pop()?;
+        if !heap.is_empty() {
+            heap[0] = last;
+            let mut i = 0;
+            loop {
+                let first_child = 4 * i + 1;
+                if first_child >= heap.len() {
+                    break;
+                }
+                let end = (first_child + 4).min(heap.len());
+                let mut least = first_child;
+                for c in first_child + 1..end {
+                    if heap[c].order(&heap[least], ball) == Ordering::Less {
+                        least = c;
+                    }
+                }
+                if heap[least].order(&heap[i], ball) != Ordering::Less {
+                    break;
+                }
+                heap.swap(i, least);
+                i = least;
+            }
+        }
+        Some(top)
     }
 }
 

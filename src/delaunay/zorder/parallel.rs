@@ -123,7 +123,7 @@ mod tests {
                     s = s
                         .wrapping_mul(6364136223846793005)
                         .wrapping_add(1442695040888963407);
-                    (s >> 58) << 58 | (s >> 30) % (1 << low)
+                    ((s >> 58) << 58) | ((s >> 30) % (1 << low))
                 })
                 .collect();
             for threads in [1, 2, 3] {
@@ -140,8 +140,8 @@ mod tests {
 
     #[test]
     fn merge_pieces_cut_anywhere_are_the_stable_merge() {
-        let a: Vec<u64> = [1, 1, 2, 5, 5, 5, 9].iter().map(|k| k << 4 | 1).collect();
-        let b: Vec<u64> = [0, 1, 5, 5, 7].iter().map(|k| k << 4 | 2).collect();
+        let a: Vec<u64> = [1, 1, 2, 5, 5, 5, 9].iter().map(|k| (k << 4) | 1).collect();
+        let b: Vec<u64> = [0, 1, 5, 5, 7].iter().map(|k| (k << 4) | 2).collect();
         let mut whole = vec![0; a.len() + b.len()];
         merge_sequentially(&a, &b, &mut whole, 4);
         let expected = stable_by_key(&[a.clone(), b.clone()].concat(), 4);

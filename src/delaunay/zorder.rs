@@ -10,6 +10,9 @@
 
 use std::cmp::Ordering;
 
+#[cfg(feature = "parallel")]
+mod parallel;
+
 /// Radix digit: 2^11 counters stay in the L1/L2 caches while scattering.
 const DIGIT_BITS: u32 = 11;
 
@@ -133,11 +136,7 @@ pub struct Ordered {
 /// duplicates into their first occurrence.
 pub fn order(points: &[[f64; 2]], grid: &Grid) -> Ordered {
     let key_mask = !0u64 << grid.index_bits;
-    let mut items: Vec<u64> = points
-        .iter()
-        .enumerate()
-        .map(|(i, &p)| grid.key(p) | i as u64)
-        .collect();
+    let mut items = keyed_items(points, grid);
     sort_items(&mut items, grid.index_bits);
     settle_runs(&mut items, points, grid.index_bits);
     let point = |item: u64| points[grid.index(item) as usize];
@@ -158,9 +157,31 @@ pub fn order(points: &[[f64; 2]], grid: &Grid) -> Ordered {
     }
     items.truncate(w);
     duplicates.sort_unstable();
-    // Copy the kept points into key order: scatter the ranks, then read the input in order
-    // and write each point to its rank. Scattered writes do not stall the way scattered reads
-    // (a gather) do.
+    Ordered {
+        points: kept_points(points, &items, grid),
+        items,
+        duplicates,
+    }
+}
+
+/// The items of `points` in input order: key in the high bits, input index in the low ones.
+fn keyed_items(points: &[[f64; 2]], grid: &Grid) -> Vec<u64> {
+    #[cfg(feature = "parallel")]
+    if parallel::pays(points.len()) {
+        return parallel::keyed_items(points, grid);
+    }
+    points
+        .iter()
+        .enumerate()
+        .map(|(i, &p)| grid.key(p) | i as u64)
+        .collect()
+}
+
+/// The points of `items`, in their order.
+fn kept_points(points: &[[f64; 2]], items: &[u64], grid: &Grid) -> Vec<[f64; 2]> {
+    // Scatter the ranks, then read the input in order and write each point to its rank:
+    // scattered writes do not stall the way scattered reads (a gather) do. (A gather on two
+    // threads took as long as this on one: 5.2 against 5.4 ms at 10^6 points.)
     const DROPPED: u32 = u32::MAX;
     let mut rank = vec![DROPPED; points.len()];
     for (k, &item) in items.iter().enumerate() {
@@ -172,11 +193,16 @@ pub fn order(points: &[[f64; 2]], grid: &Grid) -> Ordered {
             kept[r as usize] = p;
         }
     }
-    Ordered {
-        points: kept,
-        items,
-        duplicates,
+    kept
+}
+
+/// The input index of every item.
+pub fn input_indices(items: &[u64], grid: &Grid) -> Vec<u32> {
+    #[cfg(feature = "parallel")]
+    if parallel::pays(items.len()) {
+        return parallel::input_indices(items, grid);
     }
+    items.iter().map(|&item| grid.index(item)).collect()
 }
 
 /// Orders every run of items with equal keys so that exact duplicates are adjacent, the first
@@ -222,13 +248,19 @@ fn settle_runs(items: &mut [u64], points: &[[f64; 2]], index_bits: u32) {
 }
 
 /// Sorts items by key, then index (as a stable sort by key would): a radix sort, or for few
-/// items, where its fixed cost (2^11 counters per pass) dominates, a comparison sort.
+/// items, where its fixed cost (2^11 counters per pass) dominates, a comparison sort. The
+/// items are distinct (each holds its index), so every way of sorting them gives the same
+/// array: many items are sorted on all threads.
 fn sort_items(items: &mut [u64], low: u32) {
     if items.len() <= 1 << 12 {
         items.sort_unstable();
-    } else {
-        radix_sort(items, low);
+        return;
     }
+    #[cfg(feature = "parallel")]
+    if parallel::pays(items.len()) {
+        return parallel::sort_items(items, low);
+    }
+    radix_sort(items, low);
 }
 
 /// Stable least-significant-digit radix sort by the bits above `low`, [`DIGIT_BITS`] per

@@ -18,16 +18,17 @@
 //! * `dup3`: `n` copies of three points;
 //! * `collinear`: `n` distinct points on the line `y = 3x + 1`, irregular spacing.
 //!
-//! Stages: a comma-separated subset of `points,triangulate,voronoi,single,reconstruct`
-//! (default: all); `single` is the reconstruction without peeling (one water-flow pass),
-//! `reconstruct` the default one. `points` alone only generates the input (the baseline for
+//! Stages: a comma-separated subset of `points,triangulate,voronoi,single,reconstruct,raw`
+//! (default: all but `raw`); `single` is the reconstruction without peeling (one water-flow
+//! pass), `reconstruct` the default one, `raw` the default one with the paper's raw medial
+//! axis (`MedialAxisMode::Raw`). `points` alone only generates the input (the baseline for
 //! memory). Each run prints one line
 //! per stage and a final line with the peak resident set size read from `/proc/self/status`
 //! (`VmHWM`, the same figure as `/usr/bin/time -v`'s "Maximum resident set size").
 
 use std::time::Instant;
 
-use wdm_crust::reconstruct::{reconstruct_observed, Options};
+use wdm_crust::reconstruct::{reconstruct_observed, MedialAxisMode, Options};
 use wdm_crust_testkit::Rng;
 
 fn main() {
@@ -62,8 +63,9 @@ fn main() {
         let t = Instant::now();
         let tri = wdm_crust::triangulate(&points).expect("valid points");
         println!(
-            "triangulate: {:.2}s, {} distinct, {} triangles, hull {}",
+            "triangulate: {:.3}s ({:.1} ns per point per log2 n), {} distinct, {} triangles, hull {}",
             t.elapsed().as_secs_f64(),
+            t.elapsed().as_secs_f64() * 1e9 / (n as f64 * (n.max(2) as f64).log2()),
             tri.distinct_point_count(),
             tri.triangle_count(),
             tri.hull().len()
@@ -82,11 +84,15 @@ fn main() {
             );
         }
     }
-    for (name, peeling) in [("single", false), ("reconstruct", true)] {
+    for (name, peeling, axis) in [
+        ("single", false, MedialAxisMode::Pruned),
+        ("reconstruct", true, MedialAxisMode::Pruned),
+        ("raw", true, MedialAxisMode::Raw),
+    ] {
         if !stage(name) {
             continue;
         }
-        let options = Options::new().with_peeling(peeling);
+        let options = Options::new().with_peeling(peeling).with_medial_axis(axis);
         let t = Instant::now();
         let (mut phases, mut peaks) = (Vec::new(), Vec::new());
         let rec = reconstruct_observed(&points, &options, &mut |phase, time| {

@@ -6,13 +6,24 @@ use std::ops::Range;
 
 /// Below this many items a loop runs on the calling thread: splitting it costs more than
 /// it saves.
-#[cfg_attr(not(feature = "parallel"), allow(dead_code))]
 const MIN_PARALLEL: usize = 1 << 14;
 
 /// Items per task of [`flat_map_chunks`]: large enough to amortise a task, small enough to
 /// balance uneven work.
 #[cfg_attr(not(feature = "parallel"), allow(dead_code))]
 const CHUNK: usize = 1 << 12;
+
+/// Whether a loop over `n` items runs on several threads (the `parallel` feature, more than
+/// one thread in the current pool, and enough items): for callers whose sequential form can
+/// do more in one pass than the parallel one.
+pub(crate) fn pays(n: usize) -> bool {
+    #[cfg(feature = "parallel")]
+    if n >= MIN_PARALLEL && rayon::current_num_threads() > 1 {
+        return true;
+    }
+    let _ = n;
+    false
+}
 
 /// `(0..n).map(f).collect()`.
 pub(crate) fn map_range<T, F>(n: usize, f: F) -> Vec<T>
@@ -21,7 +32,7 @@ where
     F: Fn(usize) -> T + Sync + Send,
 {
     #[cfg(feature = "parallel")]
-    if n >= MIN_PARALLEL && rayon::current_num_threads() > 1 {
+    if pays(n) {
         use rayon::prelude::*;
         return (0..n).into_par_iter().map(f).collect();
     }
@@ -35,7 +46,7 @@ where
     F: Fn(Range<usize>, &mut Vec<T>) + Sync + Send,
 {
     #[cfg(feature = "parallel")]
-    if n >= MIN_PARALLEL && rayon::current_num_threads() > 1 {
+    if pays(n) {
         use rayon::prelude::*;
         let parts: Vec<Vec<T>> = (0..n.div_ceil(CHUNK))
             .into_par_iter()

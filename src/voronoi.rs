@@ -147,34 +147,45 @@ impl<'a> Voronoi<'a> {
         let halfedges = tri.halfedges();
         let points = &tri.points;
         let mut out_halfedge = vec![NO_TWIN; points.len()];
-        for (t, corners) in triangles.iter().enumerate() {
-            for (i, &origin) in corners.iter().enumerate() {
+        // The neighbours across the edges of triangle `t` that share its circumcircle (each
+        // interior edge once, from its lower half-edge).
+        let cocircular_at = |t: usize, pairs: &mut Vec<[u32; 2]>| {
+            let [a, b, c] = triangles[t].map(|p| points[p as usize]);
+            for e in 3 * t..3 * t + 3 {
+                let twin = halfedges[e];
+                if twin != NO_TWIN && twin as usize > e {
+                    let opposite = points[tri.org(prev_in_triangle(twin as usize)) as usize];
+                    if incircle(a, b, c, opposite) == Sign::Zero {
+                        pairs.push([t as u32, twin / 3]);
+                    }
+                }
+            }
+        };
+        let mut note_outgoing = |t: usize| {
+            for (i, &origin) in triangles[t].iter().enumerate() {
                 let e = 3 * t + i;
                 let out = &mut out_halfedge[origin as usize];
                 if halfedges[e] == NO_TWIN || *out == NO_TWIN {
                     *out = e as u32;
                 }
             }
-        }
-        // The in-circle test of every interior edge, the bulk of the work, in parallel.
-        let cocircular_pairs: Vec<[u32; 2]> =
+        };
+        let cocircular_pairs = if parallel::pays(triangles.len()) {
+            // The in-circle tests, the bulk of the work, on all threads; the outgoing
+            // half-edges (one write per corner) in a pass of their own.
+            (0..triangles.len()).for_each(&mut note_outgoing);
             parallel::flat_map_chunks(triangles.len(), |range, pairs| {
-                for t in range {
-                    let corners = triangles[t];
-                    let [a, b, c] = corners.map(|p| points[p as usize]);
-                    for i in 0..3 {
-                        let e = 3 * t + i;
-                        let twin = halfedges[e];
-                        if twin != NO_TWIN && twin as usize > e {
-                            let opposite =
-                                points[tri.org(prev_in_triangle(twin as usize)) as usize];
-                            if incircle(a, b, c, opposite) == Sign::Zero {
-                                pairs.push([t as u32, twin / 3]);
-                            }
-                        }
-                    }
-                }
-            });
+                range.for_each(|t| cocircular_at(t, pairs))
+            })
+        } else {
+            // One pass over the triangles: each is read once.
+            let mut pairs = Vec::new();
+            for t in 0..triangles.len() {
+                note_outgoing(t);
+                cocircular_at(t, &mut pairs);
+            }
+            pairs
+        };
         let merged =
             (!cocircular_pairs.is_empty()).then(|| MergedFaces::new(tri, &cocircular_pairs));
         let vertex_count = merged

@@ -6,6 +6,7 @@ use std::ops::Range;
 
 /// Below this many items a loop runs on the calling thread: splitting it costs more than
 /// it saves.
+#[cfg_attr(not(feature = "parallel"), allow(dead_code))]
 const MIN_PARALLEL: usize = 1 << 14;
 
 /// Items per task of [`flat_map_chunks`]: large enough to amortise a task, small enough to

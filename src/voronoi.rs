@@ -151,8 +151,7 @@ impl<'a> Voronoi<'a> {
         // interior edge once, from its lower half-edge).
         let cocircular_at = |t: usize, pairs: &mut Vec<[u32; 2]>| {
             let [a, b, c] = triangles[t].map(|p| points[p as usize]);
-            for e in 3 * t..3 * t + 3 {
-                let twin = halfedges[e];
+            for (e, &twin) in halfedges.iter().enumerate().skip(3 * t).take(3) {
                 if twin != NO_TWIN && twin as usize > e {
                     let opposite = points[tri.org(prev_in_triangle(twin as usize)) as usize];
                     if incircle(a, b, c, opposite) == Sign::Zero {

@@ -266,7 +266,12 @@ struct Graph {
 }
 
 /// What the pruning reads of a vertex, in one record (half a cache line).
-#[derive(Clone, Copy)]
+///
+/// The balls are numbered in the order the pruning tests leaves: smallest radius first,
+/// then by centre, then by first use. Leaves are then taken in increasing number, so the
+/// pruning's reads of the ball and node arrays run forward through memory (in the order of
+/// first use they jumped all over it: a cache miss per leaf, most of the run at 10^6 noisy
+/// points), and a leaf's priority is its number.
 struct Ball {
     /// Rounded circumcenter.
     centre: [f64; 2],
@@ -311,65 +316,54 @@ impl Graph {
         }
         drop(index);
         let positions = vor.vertex_positions();
-        let ball = parallel::map_range(used.len(), |i| {
+        // Computed in order of first use, which follows the triangulation's locality.
+        let mut ball = parallel::map_range(used.len(), |i| {
             let v = used[i];
             let centre = positions[v as usize];
-            let corner = vor.vertex_triangle(v)[0];
             Ball {
                 centre,
-                radius: distance(centre, corner),
+                radius: distance(centre, vor.vertex_triangle(v)[0]),
                 beyond: beyond(v),
             }
         });
-        Graph { ball, edges }.numbered_in_test_order()
-    }
-
-    /// The balls renumbered in the order the pruning tests leaves: smallest radius first,
-    /// then by centre, then by first use. Leaves are then taken in increasing number, so
-    /// the pruning's reads of the ball and node arrays run forward through memory (in the
-    /// order of first use they jumped all over it: a cache miss per leaf, most of the run
-    /// at 10^6 noisy points), and a leaf's priority is its number. The edge list keeps its
-    /// order, so the axis returned is numbered as before.
-    fn numbered_in_test_order(self) -> Graph {
-        // Sorted on the radius as an integer key (its `total_cmp` order), which is fast;
-        // the rare runs of equal radii are then put in order by centre and first use.
-        let mut keys: Vec<(u64, u32)> = self
-            .ball
+        // Then numbered in the order the pruning tests leaves (see `Ball`): sorted on the
+        // radius as an integer key (its `total_cmp` order), which is fast; the rare runs of
+        // equal radii then by centre and first use.
+        let mut order: Vec<(u64, u32)> = ball
             .iter()
             .enumerate()
             .map(|(i, b)| (total_order_key(b.radius), i as u32))
             .collect();
-        keys.sort_unstable();
-        let by_centre = |a: &(u64, u32), b: &(u64, u32)| {
-            let (p, q) = (
-                self.ball[a.1 as usize].centre,
-                self.ball[b.1 as usize].centre,
-            );
-            p[0].total_cmp(&q[0])
-                .then(p[1].total_cmp(&q[1]))
-                .then(a.1.cmp(&b.1))
-        };
-        for run in keys.chunk_by_mut(|a, b| a.0 == b.0) {
+        order.sort_unstable();
+        for run in order.chunk_by_mut(|a, b| a.0 == b.0) {
             if run.len() > 1 {
-                run.sort_unstable_by(by_centre);
+                run.sort_unstable_by(|a, b| {
+                    let (p, q) = (ball[a.1 as usize].centre, ball[b.1 as usize].centre);
+                    p[0].total_cmp(&q[0])
+                        .then(p[1].total_cmp(&q[1]))
+                        .then(a.1.cmp(&b.1))
+                });
             }
         }
-        let mut rank = vec![0u32; keys.len()];
-        for (new, &(_, old)) in keys.iter().enumerate() {
+        let mut rank = used;
+        for (new, &(_, old)) in order.iter().enumerate() {
             rank[old as usize] = new as u32;
         }
-        let ball = keys
-            .iter()
-            .map(|&(_, old)| self.ball[old as usize])
-            .collect();
-        let edges = self
-            .edges
-            .iter()
-            .map(|&[a, b]| {
-                let (a, b) = (rank[a as usize], rank[b as usize]);
-                [a.min(b), a.max(b)]
-            })
-            .collect();
+        drop(order);
+        // The edge list keeps its order, so the axis returned is numbered as before.
+        for [a, b] in &mut edges {
+            let (ra, rb) = (rank[*a as usize], rank[*b as usize]);
+            (*a, *b) = (ra.min(rb), ra.max(rb));
+        }
+        // The balls moved to their numbers in place, cycle by cycle (no second copy at the
+        // memory peak).
+        for i in 0..rank.len() {
+            while rank[i] as usize != i {
+                let j = rank[i] as usize;
+                ball.swap(i, j);
+                rank.swap(i, j);
+            }
+        }
         Graph { ball, edges }
     }
 
@@ -626,7 +620,7 @@ impl Pruning {
 }
 
 /// The leaves waiting to be tested, smallest ball first, which is smallest number first
-/// ([`Graph::numbered_in_test_order`]): the leaves of the whole axis, listed once in
+/// ([`Ball`]): the leaves of the whole axis, listed once in
 /// order, and a heap of the leaves pushed while pruning; a pop takes the smaller of the two
 /// heads, so the order is that of one heap over everything. (One heap of all the leaves
 /// was a third of the run at 10^6 noisy points: a pop's sift-down misses the cache at

@@ -261,7 +261,7 @@ pub(super) fn parity_from_infinity(
 struct Graph {
     /// The ball of every used vertex.
     ball: Vec<Ball>,
-    /// `[a, b]`, `a < b`, indices into `ball`.
+    /// `[a, b]`, indices into `ball`, `a` the end used first (see `into_medial_axis`).
     edges: Vec<[u32; 2]>,
 }
 
@@ -350,10 +350,10 @@ impl Graph {
             rank[old as usize] = new as u32;
         }
         drop(order);
-        // The edge list keeps its order, so the axis returned is numbered as before.
+        // The edge list keeps its order and each edge its ends' order (smaller first-use
+        // number first), so the axis returned numbers its vertices as before.
         for [a, b] in &mut edges {
-            let (ra, rb) = (rank[*a as usize], rank[*b as usize]);
-            (*a, *b) = (ra.min(rb), ra.max(rb));
+            (*a, *b) = (rank[*a as usize], rank[*b as usize]);
         }
         // The balls moved to their numbers in place, cycle by cycle (no second copy at the
         // memory peak).

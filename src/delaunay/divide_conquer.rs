@@ -212,9 +212,10 @@ struct Candidate {
 }
 
 /// The construction of one range of points (all of them at the top) and the slots it
-/// owns. With `SHIFTED` (the parallel top of the recursion, `divide_conquer/parallel.rs`) point and slot
-/// ids are global and the slices start at point `first` and its slots; without it the range
-/// starts at 0 (the whole input, or a subproblem built with local ids and relocated after).
+/// owns. With `SHIFTED` (the parallel top of the recursion, `divide_conquer/parallel.rs`)
+/// point and slot ids are global and the slices start at point `first` and its slots;
+/// without it the range starts at 0 (the whole input, or a subproblem built with local ids
+/// and relocated after).
 struct DivideConquer<'a, const IN_RANGE: bool, const SHIFTED: bool> {
     /// Distinct points from `first` on; a subproblem may reorder its own range before
     /// recursing.

@@ -19,6 +19,11 @@
 //! Every decision is an exact predicate (filtered, `crate::kernel::basic`), and every tie
 //! is broken by coordinates, never by input position: a permutation of the input gives the
 //! same triangles. The hull starts at the lexicographically smallest point.
+//!
+//! With the `parallel` feature the two halves of every split of a large range are built at
+//! the same time (the `parallel` submodule), on disjoint slices of the points and slots; the
+//! recursion and every decision stay the ones above, so the arrays are the same on any number
+//! of threads.
 
 use super::mesh::{prev, Mesh, MeshPart, GHOST};
 use super::triangulation::{Triangulation, NO_TWIN};
@@ -123,7 +128,8 @@ fn build_as_given<const IN_RANGE: bool>(points: &[[f64; 2]]) -> Triangulation {
 }
 
 /// The divide and conquer over all `pts` (at least two) into the empty `mesh`: on several
-/// threads where that pays (see [`parallel`]), else on this one. Both give the same arrays.
+/// threads where that pays (see `divide_conquer/parallel.rs`), else on this one. Both give
+/// the same arrays.
 fn construct<const IN_RANGE: bool>(
     pts: &mut [[f64; 2]],
     items: &mut [u64],
@@ -206,9 +212,10 @@ struct Candidate {
 }
 
 /// The construction of one range of points (all of them at the top) and the slots it
-/// owns. With `SHIFTED` (the parallel top of the recursion, see [`parallel`]) point and slot
-/// ids are global and the slices start at point `first` and its slots; without it the range
-/// starts at 0 (the whole input, or a subproblem built with local ids and relocated after).
+/// owns. With `SHIFTED` (the parallel top of the recursion, `divide_conquer/parallel.rs`)
+/// point and slot ids are global and the slices start at point `first` and its slots;
+/// without it the range starts at 0 (the whole input, or a subproblem built with local ids
+/// and relocated after).
 struct DivideConquer<'a, const IN_RANGE: bool, const SHIFTED: bool> {
     /// Distinct points from `first` on; a subproblem may reorder its own range before
     /// recursing.

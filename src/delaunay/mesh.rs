@@ -13,7 +13,7 @@
 //!   edge `v1 → v0`; its half-edges are `v0 → v1` (twin: the hull edge), `v1 → GHOST`,
 //!   `GHOST → v0`;
 //! - the ghosts form a ring along the hull: the ghost of the next hull edge is the twin side
-//!   of `GHOST → v0` ([`Mesh::ring_next`]), the previous one that of `v1 → GHOST`;
+//!   of `GHOST → v0` ([`MeshPart::ring_next`]), the previous one that of `v1 → GHOST`;
 //! - a triangulation of `k` points (with at least one edge) uses exactly `2k − 2` triangles,
 //!   ghosts included (`2k − 2 − h` real ones and `h` ghosts; `2(k − 1)` ghosts when collinear).
 //!
@@ -21,6 +21,10 @@
 //! slots: points `lo..hi` own triangles `2lo..2hi − 2`, and merging `lo..mid` with `mid..hi`
 //! adds exactly the two slots `2mid − 2` and `2mid − 1`. Merging never allocates: it deletes
 //! edges by flipping them into the ghost ring and turns ghosts into new triangles.
+//!
+//! The operations work on a [`MeshPart`], the slots of one subproblem: the whole store for the
+//! sequential construction, or (feature `parallel`) disjoint pieces of it that two threads
+//! build at the same time.
 
 /// The vertex at infinity of the ghost triangles.
 pub const GHOST: u32 = u32::MAX;
@@ -137,7 +141,7 @@ impl Mesh {
 /// the parts of two subproblems are disjoint sub-slices that can be built at the same time
 /// and merged without relabelling, and every access subtracts the first slot or half-edge.
 /// Without it the part is its own zero-based store (the whole store, or a subproblem built
-/// on its own and [relocated](Self::relocate) afterwards): no subtraction in the hot loops.
+/// on its own and relocated by `relocate` afterwards): no subtraction in the hot loops.
 pub struct MeshPart<'a, const SHIFTED: bool> {
     tri: &'a mut [[u32; 3]],
     twin: &'a mut [u32],

@@ -297,15 +297,10 @@ mod tests {
         Sign::of_f64(robust::incircle(coord(a), coord(b), coord(c), coord(d))).into()
     }
 
-    /// A deterministic stream of uniform numbers in [0, 1) (a 64-bit LCG's high bits).
+    /// A deterministic stream of uniform numbers in [0, 1) (the test kit's generator).
     fn uniform_stream(seed: u64) -> impl FnMut() -> f64 {
-        let mut s = seed;
-        move || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        }
+        let mut rng = wdm_crust_testkit::Rng::new(seed);
+        move || rng.f64()
     }
 
     /// The filtered predicates under test agree with the references.

@@ -1,7 +1,7 @@
 """`wdm-crust reconstruct --format geojson` checked with shapely.
 
 Runs the built command line (`target/release/wdm-crust`; build it with `cargo build --release`)
-on every real point file (../shared/data when present, and the copies in tests/data) and on
+on every real point file the repository carries (tests/data) and on
 generated held-out style inputs (nested shapes, noise, outliers, clusters, grids, collinear
 and duplicated points), with each algorithm, and asserts:
 
@@ -28,21 +28,19 @@ from shapely.geometry import shape
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 BIN = ROOT / "target" / "release" / "wdm-crust"
-DATA_DIRS = [ROOT.parent / "shared" / "data", ROOT / "tests" / "data"]
+DATA_DIR = ROOT / "tests" / "data"
 POINT_SUFFIXES = {".txt", ".p2d", ".xy", ".xym", ".gtn"}
 ALGORITHMS = ["wdm", "crust", "nn-crust"]
 
 
 def real_point_files():
-    """Every point file, by its path relative to its data directory (shared first)."""
+    """Every point file in tests/data, by its path relative to it. Only the repository's
+    copies: the same files on every machine, and a missing one fails."""
     found = {}
-    for base in DATA_DIRS:
-        if not base.is_dir():
-            continue
-        for path in sorted(base.rglob("*")):
-            if path.suffix in POINT_SUFFIXES and path.name != "GPL-3.0.txt":
-                found.setdefault(str(path.relative_to(base)), path)
-    assert len(found) >= 25, f"the real point sets are missing: {DATA_DIRS}"
+    for path in sorted(DATA_DIR.rglob("*")):
+        if path.suffix in POINT_SUFFIXES and path.name != "GPL-3.0.txt":
+            found[str(path.relative_to(DATA_DIR))] = path
+    assert len(found) >= 25, f"the real point sets are missing: {DATA_DIR}"
     return sorted(found.items())
 
 

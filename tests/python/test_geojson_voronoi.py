@@ -27,7 +27,7 @@ POINT_SUFFIXES = {".txt", ".xy", ".xym", ".p2d", ".gtn", ".node", ".csv"}
 
 
 def point_files(fuzz):
-    """The real point sets (copies of ../shared/data), or the fuzz regression inputs."""
+    """The real point sets (tests/data), or the fuzz regression inputs."""
     files = sorted(
         p
         for p in DATA.rglob("*")

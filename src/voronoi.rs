@@ -502,7 +502,9 @@ impl<'a> Voronoi<'a> {
     }
 
     /// The Delaunay neighbours of local point `p`, counterclockwise (from the outgoing hull
-    /// edge for a hull point); none for degenerate input. O(degree), nothing stored.
+    /// edge for a hull point); none for degenerate input. O(degree), nothing stored. (The
+    /// clipped cells' `neighbours_local` also pairs each neighbour with a vertex, allocates,
+    /// and gives collinear input its line neighbours; peeling wants neither.)
     pub(crate) fn delaunay_neighbours_local(&self, p: u32) -> impl Iterator<Item = u32> + '_ {
         let start = self.out_halfedge[p as usize];
         let mut next = (start != NO_TWIN).then_some(start);

@@ -38,6 +38,18 @@ fn bench_phases(c: &mut Criterion) {
     group.finish();
 }
 
+fn coord(p: [f64; 2]) -> robust::Coord<f64> {
+    robust::Coord { x: p[0], y: p[1] }
+}
+
+fn robust_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+    robust::orient2d(coord(a), coord(b), coord(c))
+}
+
+fn robust_incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> f64 {
+    robust::incircle(coord(a), coord(b), coord(c), coord(d))
+}
+
 /// Batches of 1024 predicate calls: on random points (the floating-point filter decides)
 /// and on points a few ulps off a line or circle (the exact arithmetic decides).
 fn bench_predicates(c: &mut Criterion) {
@@ -98,6 +110,16 @@ fn bench_predicates(c: &mut Criterion) {
                 .count()
         })
     });
+    // The peer: the `robust` crate's adaptive predicate, which the public `orient2d` called
+    // before it accepted every finite input (exact only inside `robust`'s exponent range).
+    group.bench_function("orient2d_robust_crate/random", |b| {
+        b.iter(|| {
+            random
+                .iter()
+                .filter(|p| robust_orient(p[0], p[1], p[2]) == 0.0)
+                .count()
+        })
+    });
     group.bench_function("orient2d/near_collinear", |b| {
         b.iter(|| {
             near_line
@@ -119,6 +141,14 @@ fn bench_predicates(c: &mut Criterion) {
             random
                 .iter()
                 .filter(|p| incircle_added_slack(p[0], p[1], p[2], p[3]) as u8 == 0)
+                .count()
+        })
+    });
+    group.bench_function("incircle_robust_crate/random", |b| {
+        b.iter(|| {
+            random
+                .iter()
+                .filter(|p| robust_incircle(p[0], p[1], p[2], p[3]) == 0.0)
                 .count()
         })
     });

@@ -19,6 +19,7 @@ use super::filter;
 use super::poly::{cross, diff, norm2, Pt};
 use super::scale::{rescale, scale};
 use super::stats::{self, Stage, Which};
+use super::thin;
 
 /// The circumcenter of a triangle in homogeneous form relative to its first vertex `t0`:
 /// `O = t0 + (ux, uy) / d`.
@@ -187,6 +188,9 @@ pub(super) fn circumcenter_slow(
         }
     }
     let (t, k) = rescaled.unwrap_or(([a, b, c], 0));
+    if let Some(o) = thin::circumcenter(&t).and_then(|o| scale_back(o, k)) {
+        return (Some(o), Stage::DoubleWord);
+    }
     if let Some(o) = double_word::circumcenter(&t).and_then(|o| scale_back(o, k)) {
         return (Some(o), Stage::DoubleWord);
     }
@@ -217,8 +221,9 @@ pub fn circumcenter_exact(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Exact
 /// `O`, where `N` is the larger magnitude of the two returned coordinates (a normwise
 /// relative error below `2^-44`). This is proven per call: by an a priori error bound of the
 /// floating-point formula translated to `a` (one division), or where that is too coarse
-/// (nearly collinear triangles) by the same formula in double-word arithmetic (about 106
-/// bits) with a running error bound; where neither proves it (triangles within about `2^-60`
+/// (nearly collinear triangles) by the same formula with exact products and a closed-form
+/// bound, or in double-word arithmetic (about 106 bits) with a running error bound; where
+/// none proves it (triangles within about `2^-60`
 /// of collinear, results near the ends of the `f64` range) the exact circumcenter is computed
 /// and correctly rounded instead. The result is a function of `a, b, c` alone. A coordinate
 /// beyond the `f64` range (a nearly collinear triangle of huge points) is infinite.

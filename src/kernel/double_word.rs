@@ -94,9 +94,9 @@ use super::circumcenter::{circ, Circ};
 use super::Sign;
 
 /// `2^-44`: 256 units in the last place of a power of two `P` are `2^-44·P`.
-const TOLERANCE: f64 = 5.684341886080802e-14;
+pub(super) const TOLERANCE: f64 = 5.684341886080802e-14;
 /// The exponent bits of an `f64`.
-const EXPONENT_MASK: u64 = 0x7ff0_0000_0000_0000;
+pub(super) const EXPONENT_MASK: u64 = 0x7ff0_0000_0000_0000;
 /// `1 + 2^-45`: see [`widen`].
 const WIDEN: f64 = 1.0 + 2.842170943040401e-14;
 
@@ -111,7 +111,7 @@ pub(super) struct DoubleWord {
 
 /// Knuth's TwoSum (T1): `s = fl(a + b)` and `t` with `s + t = a + b` exactly.
 #[inline(always)]
-fn two_sum(a: f64, b: f64) -> (f64, f64) {
+pub(super) fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bv = s - a;
     let av = s - bv;

@@ -15,9 +15,10 @@
 //!    power-of-two rescaling (`scale`), and a running-error filter (`bounded`, rigorous
 //!    bounds propagated through every operation) catches exact zeros whose operations were
 //!    all exact in `f64`. The crust's mixed predicates start at the running-error filter.
-//!    The circumcenter construction instead evaluates its formula once more in double-word
-//!    arithmetic with a running error bound (`double_word`), which decides the nearly
-//!    collinear triangles that defeat the `f64` filter.
+//!    The circumcenter construction instead evaluates its formula once more with exact
+//!    products and an a priori bound (`thin`), then in double-word arithmetic with a running
+//!    error bound (`double_word`): they decide the nearly collinear triangles that defeat the
+//!    `f64` filter.
 //! 2. **Exact evaluation.** For orientation and in-circle of input points: the `robust`
 //!    crate's adaptive predicates (after an `i128` evaluation for lattice input, `lattice`)
 //!    on inputs in their exact range, or after a power-of-two rescale into it; inputs spread
@@ -80,6 +81,7 @@ pub(crate) mod scale;
 mod sign;
 pub(crate) mod static_filter;
 pub(crate) mod stats;
+mod thin;
 mod wide;
 
 pub(crate) use basic::{incircle, orient};

@@ -32,6 +32,13 @@ fn in_range(x: f64) -> bool {
 
 /// The points times the power of two that puts them in the adaptive predicates' range, or
 /// `None` if no single power of two does (or a coordinate is not finite).
+/// Whether every coordinate is zero or of an exponent in the adaptive predicates' range:
+/// then they are exact on these values as they are.
+#[inline(always)]
+pub(super) fn fits<const N: usize>(coordinates: [f64; N]) -> bool {
+    coordinates.iter().fold(true, |ok, &x| ok & in_range(x))
+}
+
 #[inline(always)]
 fn fitted<const N: usize>(points: [[f64; 2]; N]) -> Option<[[f64; 2]; N]> {
     if points

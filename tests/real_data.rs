@@ -98,10 +98,12 @@ fn component_edges(points: &[[f64; 2]]) -> BTreeSet<[u32; 2]> {
 fn multi_curve_sets_keep_their_recall() {
     // Sparse multi-curve sets from HNN-Crust (crust is known to fail on the crocodile);
     // measured values rounded down by ~0.02. The ventilator's spiral turns lie about one
-    // sample spacing apart: peeling reports the inner turns as unassigned.
+    // sample spacing apart: peeling reports most inner turns as unassigned, and draws one
+    // zigzag loop across them (since later passes leave out isolated leftovers and may
+    // close a loop by a chord: recall 0.31, precision 0.79; before 0.22, 0.93).
     for (file, min_recall, min_precision) in [
         ("hnn-crust-sgp16/crocodile-conf.p2d", 0.34, 0.61),
-        ("hnn-crust-sgp16/ventilator.p2d", 0.20, 0.91),
+        ("hnn-crust-sgp16/ventilator.p2d", 0.29, 0.77),
     ] {
         let points = read(file);
         let truth = component_edges(&points);

@@ -93,7 +93,8 @@ fn sharp_cornered_polygons_are_reconstructed_exactly() {
 /// and is switched off, and WDM_CRUST closes the slot at its mouth. Pinned so a change in
 /// this known limitation is noticed: the slot's walls are then left to peeling, which
 /// keeps what reads as a separate curve and reports the points within a sample spacing of
-/// the outer curve as unassigned.
+/// the outer curve as unassigned. (At 4 samples per edge the walls' leftovers close into a
+/// loop of fewer than 7 points, which a later pass no longer keeps: (8, 3) before.)
 #[test]
 fn a_parallel_slot_is_closed_at_its_mouth() {
     let corners = [
@@ -113,7 +114,7 @@ fn a_parallel_slot_is_closed_at_its_mouth() {
         let mouth = (3 * per_edge, 6 * per_edge);
         assert!(ours.contains(&mouth), "{per_edge}: the mouth is closed");
         let expected = match per_edge {
-            4 => (8, 3),
+            4 => (12, 1),
             8 => (12, 2),
             _ => (2, 2),
         };
@@ -368,6 +369,33 @@ fn outliers_keep_most_of_the_curve() {
     }
 }
 
+/// Peeling's grouping of the leftovers, its chords and its separation test decide on sets
+/// of points: a noisy shape with a hole, in any order, gives the same edges.
+#[test]
+fn a_noisy_hole_in_any_order_gives_the_same_edges() {
+    let outer = Ellipse { a: 1.5, b: 1.0 }.dense(200);
+    let hole = Ellipse::circle(0.4)
+        .dense(64)
+        .transformed(&Similarity::translation([0.3, 0.0]));
+    let mut rng = Rng::new(23);
+    for noise in [0.5, 1.0] {
+        for _ in 0..4 {
+            let points = noisy_sample(&[outer.clone(), hole.clone()], noise, &mut rng);
+            let edges_of = |pts: &[[f64; 2]]| -> BTreeSet<([u64; 2], [u64; 2])> {
+                let rec = reconstruct(pts).unwrap();
+                rec.edges()
+                    .iter()
+                    .map(|&[a, b]| key(pts[a as usize], pts[b as usize]))
+                    .collect()
+            };
+            let base = edges_of(&points);
+            let order = rng.permutation(points.len());
+            let shuffled: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
+            assert_eq!(edges_of(&shuffled), base, "noise {noise}");
+        }
+    }
+}
+
 #[test]
 fn the_same_points_in_any_order_give_the_same_edges() {
     let mut rng = Rng::new(77);
@@ -512,8 +540,11 @@ fn noisy_closed_curves_come_out_as_one_closed_curve() {
     }
 }
 
-/// An ellipse with a circular hole: the hole survives noise up to 0.3 spacings as its own
-/// closed curve (before: lost in 11 of 20 trials at 0.3).
+/// An ellipse with a circular hole: the hole survives noise as its own closed curve (before
+/// peeling kept only what reads as a curve: lost in 11 of 20 trials at 0.3; before later
+/// passes left out isolated leftovers and closed a hole's loop by a chord: 12 and 9 of 20
+/// clean at 0.7 and 1 spacing). The trials lost at 0.5 are the first pass's (its loop runs
+/// through part of the hole, or opens at a pinch), which peeling does not repair.
 #[test]
 fn a_noisy_hole_stays_a_closed_curve() {
     let outer = Ellipse { a: 1.5, b: 1.0 }.dense(200);
@@ -521,7 +552,16 @@ fn a_noisy_hole_stays_a_closed_curve() {
         .dense(64)
         .transformed(&Similarity::translation([0.3, 0.0]));
     let curves = [outer, hole];
-    for (noise, at_least) in [(0.0, 20), (0.1, 20), (0.3, 18)] {
+    // (noise in sample spacings, clean outcomes of 20 at least): measured 20, 20, 19, 14, 19,
+    // 16; the bound leaves one trial of slack.
+    for (noise, at_least) in [
+        (0.0, 20),
+        (0.1, 20),
+        (0.3, 18),
+        (0.5, 13),
+        (0.7, 18),
+        (1.0, 15),
+    ] {
         let clean = clean_outcomes(&curves, noise, 20);
         assert!(clean >= at_least, "noise {noise}: {clean} of 20");
     }

@@ -21,6 +21,7 @@ mod peel;
 mod pipeline;
 pub mod polygons;
 mod result;
+mod segment_walk;
 pub mod wdm;
 
 pub use curves::Curve;

@@ -6,6 +6,7 @@ use super::curves::{assemble_named, Adjacency, Curve};
 use super::extract::wdm_crust_edges;
 use super::medial_axis::parity_from_infinity;
 use super::options::Options;
+use super::segment_walk::crosses_a_curve;
 use super::wdm;
 use crate::delaunay::triangulate;
 use crate::voronoi::Voronoi;
@@ -23,9 +24,31 @@ const NEAR_CURVE: f64 = 1.5;
 /// outliers inside a shape has edges of the outliers' spacing, many sample spacings long.
 const SPARSER_LOOP: f64 = 3.0;
 
+/// How far apart two left-over points may lie and still be linked into one group
+/// ([`isolated_leftovers`]), in units of the longer of their nearest-neighbour distances:
+/// [`SPARSER_LOOP`], the sparsest sampling a kept loop may have relative to its
+/// surroundings.
+const LINK: f64 = SPARSER_LOOP;
+
+/// The fewest left-over points of a group that takes part in a later pass
+/// ([`isolated_leftovers`]): three, the fewest that bound anything.
+const MIN_GROUP: usize = 3;
+
 /// The largest median turning angle of a later pass's curve: 20°, about the turn per
 /// sample of an ε-sample with ε = 0.35 (see [`is_a_curve`]).
 const MAX_MEDIAN_TURN: f64 = 20.0 * std::f64::consts::PI / 180.0;
+
+/// The fewest points of a closed loop a later pass keeps: a closed curve turns by 2π, and an
+/// ε-sample of it by about ε per sample, so a loop of fewer than 7 points is no ε-sample for
+/// any ε < 1 (see [`is_a_curve`]).
+const MIN_LOOP_POINTS: usize = 7;
+
+/// How far, in its own sample spacings, a loop closed by a chord ([`close_by_chord`]) must
+/// keep from the curves found before: two curves of an ε-sample (ε < 1) lie at least twice
+/// the local feature size apart, and a sample spacing is at most ε times it, so a loop
+/// closer than 2 of its spacings to an earlier curve is no separate curve of the sample
+/// (see [`lies_apart`]).
+const APART: f64 = 2.0;
 
 /// The fewest points of an open chain a later pass keeps (see [`is_a_curve`]).
 const MIN_CHAIN_POINTS: usize = 8;
@@ -38,13 +61,18 @@ const MIN_CHAIN_POINTS: usize = 8;
 /// of DESIGN.md's "peeling that keeps holes and drops noise"):
 /// * only edges of the full Delaunay triangulation: a nested curve's edges are Delaunay
 ///   edges of all the points (they never cross an earlier curve), whereas the leftovers of
-///   a noisy band would otherwise be joined by long chords across the curve already found;
+///   a noisy band would otherwise be joined by long chords across the curve already found.
+///   One exception: a chord that crosses no earlier curve (decided exactly) may close an
+///   open chain into a loop that lies apart from the earlier curves ([`close_by_chord`]);
 /// * only pieces that read as sampled curves ([`is_a_curve`]): sampled no more than
-///   [`SPARSER_LOOP`] times as sparsely as the curves before, smooth, and open chains only
-///   when long: short and zigzag chains, junction stubs and loops through scattered points
-///   are the pass's reading of noise, not curves;
+///   [`SPARSER_LOOP`] times as sparsely as the curves before, loops of at least
+///   [`MIN_LOOP_POINTS`] points, smooth open chains only when long: short and zigzag
+///   chains, junction stubs, small loops and loops through scattered points are the pass's
+///   reading of noise, not curves;
 /// * no point within [`NEAR_CURVE`] edge lengths of a curve already found takes part in a
-///   later pass: such a point is a leftover of that curve's noise band.
+///   later pass: such a point is a leftover of that curve's noise band; nor does a point
+///   with fewer than two other leftovers within a few local spacings
+///   ([`isolated_leftovers`]): the water of the pass would run around it.
 ///
 /// Points excluded by these rules stay without edges: the reconstruction reports them as
 /// unassigned. On clean samples nothing changes: a hole's samples are far from the outer
@@ -79,6 +107,10 @@ pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
         let rest: Vec<u32> = (0..n as u32)
             .filter(|&p| !spent[p as usize] && curve.neighbours(p).is_empty())
             .collect();
+        for p in isolated_leftovers(full, &rest) {
+            spent[p as usize] = true;
+        }
+        let rest: Vec<u32> = rest.into_iter().filter(|&p| !spent[p as usize]).collect();
         if rest.len() < 3 {
             return Peeling::done(extra);
         }
@@ -89,29 +121,12 @@ pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
             };
         }
         budget -= rest.len();
-        let subset: Vec<[f64; 2]> = rest.iter().map(|&i| points[i as usize]).collect();
-        // The subset is a selection of already validated points: this cannot fail.
-        let Ok(sub) = triangulate(&subset) else {
-            return Peeling::done(extra);
-        };
-        if sub.is_degenerate() {
-            return Peeling::done(extra);
-        }
-        let vor = sub.voronoi();
-        let flow = wdm::label_vertices_local(&vor, options.label_rule());
-        // `sub`'s caller indices are positions in `rest`.
-        let found: Vec<[u32; 2]> = wdm_crust_edges(&vor, &flow.labels)
-            .iter()
-            .map(|&[a, b]| {
-                let at = |p: u32| rest[sub.input_index(p) as usize];
-                let (a, b) = (at(a), at(b));
-                [a.min(b), a.max(b)]
-            })
-            .filter(|&[a, b]| full.is_delaunay_edge(a, b))
-            .collect();
         let scale = median_length(points, edges);
+        let pass = later_pass(full, &curve, &rest, options);
+        let found = Adjacency::new(n, &pass.edges);
         let mut new_curves = Vec::new();
-        for piece in assemble_named(n, &found, points, |p| p) {
+        for mut piece in assemble_named(n, &pass.edges, points, |p| p) {
+            close_by_chord(full, &curve, &found, &pass.chords, &mut piece);
             if is_a_curve(points, &piece, scale) {
                 new_curves.extend(piece_edges(&piece));
             } else {
@@ -120,13 +135,153 @@ pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
                 }
             }
         }
-        if found.is_empty() {
+        if pass.edges.is_empty() {
             return Peeling::done(extra);
         }
         // A pass that found only noise still made progress: its points are spent, and what
         // the noise hid from the water (a hole inside a ring of leftovers) is next.
         edges.extend(new_curves);
         extra += 1;
+    }
+}
+
+/// The left-over points that lie apart from every other left-over point: in connected
+/// groups of fewer than [`MIN_GROUP`] points, where a point is linked to a Delaunay
+/// neighbour (of all the points) in `rest` no farther than [`LINK`] times the longer of
+/// their nearest-neighbour distances. Such points are the scattered leftovers of a noise
+/// band that [`near_a_curve`] missed: no curve can be drawn through them, yet in a later
+/// pass they lie on the convex hull and the water runs around them, so a hole's loop is
+/// drawn through them across the empty inside of the shape, with chords that are no
+/// Delaunay edges, and is lost. Measured in local spacings (the nearest-neighbour
+/// distances), so that the sparse parts of a drawing keep their strokes.
+///
+/// The groups are sets of points: the result does not depend on the input order.
+fn isolated_leftovers(full: &Voronoi<'_>, rest: &[u32]) -> Vec<u32> {
+    let points = &full.triangulation().points;
+    let at = |p: u32| points[p as usize];
+    // Position in `rest` of every point, or none.
+    let mut slot = vec![u32::MAX; points.len()];
+    for (i, &p) in rest.iter().enumerate() {
+        slot[p as usize] = i as u32;
+    }
+    let nearest: Vec<f64> = rest
+        .iter()
+        .map(|&p| {
+            full.delaunay_neighbours_local(p)
+                .map(|q| distance(at(p), at(q)))
+                .fold(f64::INFINITY, f64::min)
+        })
+        .collect();
+    let mut grouped = vec![false; rest.len()];
+    let mut isolated = Vec::new();
+    for start in 0..rest.len() {
+        if grouped[start] {
+            continue;
+        }
+        grouped[start] = true;
+        let mut group = vec![start];
+        let mut next = 0;
+        while next < group.len() {
+            let i = group[next];
+            next += 1;
+            let p = rest[i];
+            for q in full.delaunay_neighbours_local(p) {
+                let j = slot[q as usize] as usize;
+                if j != u32::MAX as usize
+                    && !grouped[j]
+                    && distance(at(p), at(q)) <= LINK * nearest[i].max(nearest[j])
+                {
+                    grouped[j] = true;
+                    group.push(j);
+                }
+            }
+        }
+        if group.len() < MIN_GROUP {
+            isolated.extend(group.iter().map(|&i| rest[i]));
+        }
+    }
+    isolated
+}
+
+/// What a later pass found: its WDM_CRUST edges that are edges of the full triangulation
+/// (`[min, max]`, local indices of the full triangulation, sorted), and the other ones that
+/// cross no curve found before (sorted): candidates for [`close_by_chord`].
+struct LaterPass {
+    edges: Vec<[u32; 2]>,
+    chords: Vec<[u32; 2]>,
+}
+
+/// WDM_CRUST on the points `rest` alone (see [`peel`]).
+fn later_pass(
+    full: &Voronoi<'_>,
+    earlier: &Adjacency,
+    rest: &[u32],
+    options: &Options,
+) -> LaterPass {
+    let points = &full.triangulation().points;
+    let subset: Vec<[f64; 2]> = rest.iter().map(|&i| points[i as usize]).collect();
+    let nothing = LaterPass {
+        edges: Vec::new(),
+        chords: Vec::new(),
+    };
+    // The subset is a selection of already validated points: this cannot fail.
+    let Ok(sub) = triangulate(&subset) else {
+        return nothing;
+    };
+    if sub.is_degenerate() {
+        return nothing;
+    }
+    let vor = sub.voronoi();
+    let flow = wdm::label_vertices_local(&vor, options.label_rule());
+    // `sub`'s caller indices are positions in `rest`.
+    let (mut edges, chords): (Vec<[u32; 2]>, Vec<[u32; 2]>) = wdm_crust_edges(&vor, &flow.labels)
+        .iter()
+        .map(|&[a, b]| {
+            let at = |p: u32| rest[sub.input_index(p) as usize];
+            let (a, b) = (at(a), at(b));
+            [a.min(b), a.max(b)]
+        })
+        .partition(|&[a, b]| full.is_delaunay_edge(a, b));
+    let mut chords: Vec<[u32; 2]> = chords
+        .into_iter()
+        .filter(|&[a, b]| !crosses_a_curve(full, earlier, a, b))
+        .collect();
+    edges.sort_unstable();
+    chords.sort_unstable();
+    LaterPass { edges, chords }
+}
+
+/// Closes an open chain of a later pass into a loop when the pass joined its two ends
+/// (both of degree 1) by a chord that is no Delaunay edge of all the points but crosses no
+/// curve found before, and the loop lies apart from those curves ([`lies_apart`]).
+///
+/// Why: around a noisy hole the pass's own noise leaves points inside the hole's band that
+/// its loop passes by; the water of a pass on the leftovers alone comes from all sides, so
+/// the loop may bridge such a pocket by a chord whose every empty circle, among all the
+/// points, holds a point of the outer curve. Dropping the chord (the Delaunay rule, kept for
+/// all other edges) left an open chain that reads as noise, and the hole was lost. The
+/// separation test keeps a chain of noise leftovers near a curve from being closed instead.
+fn close_by_chord(
+    full: &Voronoi<'_>,
+    earlier: &Adjacency,
+    found: &Adjacency,
+    chords: &[[u32; 2]],
+    piece: &mut Curve,
+) {
+    let p = &piece.points;
+    if piece.closed || p.len() < 3 {
+        return;
+    }
+    let (u, v) = (p[0], p[p.len() - 1]);
+    let is_end = |w: u32| found.neighbours(w).len() == 1;
+    if chords.binary_search(&[u.min(v), u.max(v)]).is_err() || !is_end(u) || !is_end(v) {
+        return;
+    }
+    piece.closed = true;
+    let points = &full.triangulation().points;
+    let spacing = median_length(points, &piece_edges(piece));
+    if !lies_apart(full, earlier, piece, spacing) {
+        piece.closed = false;
     }
 }
 
@@ -144,18 +299,21 @@ fn piece_edges(curve: &Curve) -> Vec<[u32; 2]> {
 /// Does a piece a later pass found read as a sampled curve, not as noise?
 /// * sampled like the curves found before it: the median edge at most [`SPARSER_LOOP`]
 ///   times theirs (`scale`);
-/// * a closed loop is a curve by that alone: noise leaves no closed loop far from every
-///   curve found before (a hole's own noise does not stop it being a loop);
+/// * a closed loop has at least [`MIN_LOOP_POINTS`] points: noise leaves no such loop far
+///   from every curve found before (a hole's own noise does not stop it being a loop), but
+///   three to six leftovers of a noise band close into a small one;
 /// * an open chain has at least [`MIN_CHAIN_POINTS`] points and is smooth: the median
 ///   turning angle between consecutive edges at most [`MAX_MEDIAN_TURN`] (an ε-sample of a
 ///   smooth curve turns by about ε radians per sample, a path through noise points
 ///   zigzags).
 fn is_a_curve(points: &[[f64; 2]], curve: &Curve, scale: f64) -> bool {
     let p = &curve.points;
-    if !curve.closed && p.len() < MIN_CHAIN_POINTS {
-        return false;
-    }
-    if median_length(points, &piece_edges(curve)) > SPARSER_LOOP * scale {
+    let fewest = if curve.closed {
+        MIN_LOOP_POINTS
+    } else {
+        MIN_CHAIN_POINTS
+    };
+    if p.len() < fewest || median_length(points, &piece_edges(curve)) > SPARSER_LOOP * scale {
         return false;
     }
     if curve.closed {
@@ -167,6 +325,23 @@ fn is_a_curve(points: &[[f64; 2]], curve: &Curve, scale: f64) -> bool {
         .collect();
     let mid = turns.len() / 2;
     *turns.select_nth_unstable_by(mid, f64::total_cmp).1 <= MAX_MEDIAN_TURN
+}
+
+/// Does the loop `curve` keep at least [`APART`] of its own sample spacings (`spacing`,
+/// its median edge) from the curves found before (`earlier`)? Measured from each of its
+/// points to the earlier curves' edges at the point's Delaunay neighbours (where the
+/// nearest curve is when no other point lies between).
+fn lies_apart(full: &Voronoi<'_>, earlier: &Adjacency, curve: &Curve, spacing: f64) -> bool {
+    let points = &full.triangulation().points;
+    let at = |i: u32| points[i as usize];
+    curve.points.iter().all(|&p| {
+        full.delaunay_neighbours_local(p).all(|q| {
+            earlier
+                .neighbours(q)
+                .iter()
+                .all(|&(_, r)| segment_distance(at(p), at(q), at(r)) >= APART * spacing)
+        })
+    })
 }
 
 /// The angle (radians, in `[0, π]`) by which the path `a → b → c` turns at `b`.

@@ -1,0 +1,172 @@
+//! Does a segment between two sample points cross a curve already found? Decided exactly by
+//! walking the full triangulation along the segment (every side test is the exact
+//! `orient`). Peeling asks it of a later pass's edges that are no edges of the full
+//! triangulation (see `peel.rs`, [`crosses_a_curve`]).
+
+use super::curves::Adjacency;
+use crate::delaunay::{next_in_triangle, prev_in_triangle, NO_TWIN};
+use crate::kernel::{orient, Sign};
+use crate::voronoi::Voronoi;
+
+/// Does the segment from local point `a` to local point `b` of the full triangulation cross
+/// an edge of `curve`, or pass through another sample point? An edge of the triangulation
+/// crosses nothing. Otherwise the walk visits the triangles the open segment meets, in
+/// order, and tests every triangulation edge it crosses; a point on the segment (collinear,
+/// strictly between `a` and `b`) counts as a crossing: a curve never runs over a sample.
+pub(super) fn crosses_a_curve(full: &Voronoi<'_>, curve: &Adjacency, a: u32, b: u32) -> bool {
+    if a == b || full.is_delaunay_edge(a, b) {
+        return false;
+    }
+    let tri = full.triangulation();
+    let at = |p: u32| tri.points[p as usize];
+    let (pa, pb) = (at(a), at(b));
+    let on_curve = |u: u32, v: u32| curve.neighbours(u).iter().any(|&(_, w)| w == v);
+    let side = |p: u32| orient(pa, pb, at(p));
+    let twin = |e: usize| tri.halfedges()[e];
+    // A point collinear with the segment lies on it when it lies on the side of `a` towards
+    // `b` (for collinear points, comparing coordinates is exact); such a point blocks.
+    let ahead = |p: u32| {
+        let q = at(p);
+        let same = |x: f64, y: f64, z: f64| (y - x).signum() == (z - x).signum() || y == x;
+        same(pa[0], q[0], pb[0]) && same(pa[1], q[1], pb[1])
+    };
+    // The triangle around `a` that the segment leaves `a` through: the half-edge `x` of
+    // it opposite `a`, whose ends lie left and right of the segment.
+    let Some(first) = full
+        .delaunay_neighbours_local(a)
+        .next()
+        .and_then(|q| full.delaunay_halfedge(a, q))
+        .filter(|&e| tri.org(e as usize) == a)
+    else {
+        return true;
+    };
+    let mut e = first as usize;
+    let mut crossed = None;
+    loop {
+        let (d, c) = (tri.dest(e), tri.org(prev_in_triangle(e)));
+        let (sd, sc) = (side(d), side(c));
+        if (sd == Sign::Zero && ahead(d)) || (sc == Sign::Zero && ahead(c)) {
+            return true;
+        }
+        // Triangle `a, d, c` is counterclockwise: the segment runs between `d` (right) and
+        // `c` (left).
+        if sd == Sign::Negative && sc == Sign::Positive {
+            crossed = Some(next_in_triangle(e));
+            break;
+        }
+        let incoming = twin(prev_in_triangle(e));
+        if incoming == NO_TWIN || incoming as usize == first as usize {
+            break;
+        }
+        e = incoming as usize;
+    }
+    let Some(mut x) = crossed else {
+        return true;
+    };
+    // `x` runs from the right of the segment to its left.
+    for _ in 0..tri.halfedges().len() {
+        let (right, left) = (tri.org(x), tri.dest(x));
+        if on_curve(right, left) {
+            return true;
+        }
+        let y = twin(x);
+        if y == NO_TWIN {
+            return true;
+        }
+        // `y` runs from left to right; the third point of its triangle is `w`.
+        let y = y as usize;
+        let w = tri.dest(next_in_triangle(y));
+        if w == b {
+            return false;
+        }
+        x = match side(w) {
+            Sign::Zero => return true,
+            // `w` left: the segment leaves through `right → w`, the edge after `y`.
+            Sign::Positive => next_in_triangle(y),
+            // `w` right: it leaves through `w → left`, the edge before `y`.
+            Sign::Negative => prev_in_triangle(y),
+        };
+    }
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::delaunay::triangulate;
+    use wdm_crust_testkit::Rng;
+
+    fn opposite(s: Sign, t: Sign) -> bool {
+        matches!(
+            (s, t),
+            (Sign::Positive, Sign::Negative) | (Sign::Negative, Sign::Positive)
+        )
+    }
+
+    /// The reference: every curve edge and every point, tested against the segment.
+    fn crosses_by_brute_force(points: &[[f64; 2]], curve: &[[u32; 2]], a: u32, b: u32) -> bool {
+        let (pa, pb) = (points[a as usize], points[b as usize]);
+        let strictly_between = |q: [f64; 2]| {
+            let inside = |x: f64, y: f64, z: f64| x.min(z) <= y && y <= x.max(z);
+            orient(pa, pb, q) == Sign::Zero
+                && inside(pa[0], q[0], pb[0])
+                && inside(pa[1], q[1], pb[1])
+                && q != pa
+                && q != pb
+        };
+        let on_segment = points.iter().any(|&q| strictly_between(q));
+        let crossing = curve.iter().any(|&[u, v]| {
+            let (pu, pv) = (points[u as usize], points[v as usize]);
+            [u, v].iter().all(|&w| w != a && w != b)
+                && opposite(orient(pa, pb, pu), orient(pa, pb, pv))
+                && opposite(orient(pu, pv, pa), orient(pu, pv, pb))
+        });
+        on_segment || crossing
+    }
+
+    #[test]
+    fn the_walk_agrees_with_testing_every_edge_and_point() {
+        let mut rng = Rng::new(41);
+        let mut crossings = 0;
+        for round in 0..200 {
+            let n = 4 + rng.below(60);
+            // Random points, or a small lattice (segments through points, collinear runs).
+            let points: Vec<[f64; 2]> = (0..n)
+                .map(|_| {
+                    if round % 2 == 0 {
+                        [rng.f64(), rng.f64()]
+                    } else {
+                        [rng.below(7) as f64, rng.below(7) as f64]
+                    }
+                })
+                .collect();
+            let tri = triangulate(&points).unwrap();
+            if tri.is_degenerate() {
+                continue;
+            }
+            let vor = tri.voronoi();
+            let local = &tri.points;
+            let m = local.len() as u32;
+            // A random third of the triangulation's edges is the "curve".
+            let mut curve: Vec<[u32; 2]> = (0..tri.halfedges().len())
+                .map(|e| {
+                    let (u, v) = (tri.org(e), tri.dest(e));
+                    [u.min(v), u.max(v)]
+                })
+                .filter(|_| rng.below(3) == 0)
+                .collect();
+            curve.sort_unstable();
+            curve.dedup();
+            let adjacency = Adjacency::new(local.len(), &curve);
+            for _ in 0..30 {
+                let (a, b) = (rng.below(m as usize) as u32, rng.below(m as usize) as u32);
+                let expected =
+                    !vor.is_delaunay_edge(a, b) && crosses_by_brute_force(local, &curve, a, b);
+                let got = crosses_a_curve(&vor, &adjacency, a, b);
+                assert_eq!(got, expected && a != b, "round {round}: {a} → {b}");
+                crossings += usize::from(got);
+            }
+        }
+        assert!(crossings > 500, "only {crossings} crossings");
+    }
+}

@@ -51,7 +51,8 @@ fn algorithms() -> Vec<Method> {
         .collect()
 }
 
-/// WDM_CRUST with peeling on and off and with the three label rules.
+/// WDM_CRUST with peeling on and off, without the detour repair, and with the three label
+/// rules.
 fn wdm_variants() -> Vec<Method> {
     let wdm = |peeling, label_rule| {
         Options::new()
@@ -63,6 +64,10 @@ fn wdm_variants() -> Vec<Method> {
         Method {
             name: "wdm (default)",
             options: wdm(true, LabelRule::WaterReached),
+        },
+        Method {
+            name: "wdm no detour repair",
+            options: wdm(true, LabelRule::WaterReached).with_detour_repair(false),
         },
         Method {
             name: "wdm 1 pass",

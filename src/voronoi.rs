@@ -526,6 +526,33 @@ impl<'a> Voronoi<'a> {
         })
     }
 
+    /// The Delaunay neighbours of local point `p` along edges with a dual Voronoi edge (the
+    /// Delaunay graph without the diagonals inside merged cocircular faces), counterclockwise
+    /// like [`Self::delaunay_neighbours_local`]. O(degree).
+    pub(crate) fn dual_neighbours_local(&self, p: u32) -> impl Iterator<Item = u32> + Clone + '_ {
+        let start = self.out_halfedge[p as usize];
+        let mut next = (start != NO_TWIN).then_some(start);
+        let mut last = None;
+        std::iter::from_fn(move || loop {
+            let Some(e) = next else {
+                return last.take();
+            };
+            next = match self.rotate_counterclockwise(e) {
+                Some(after) if after != start => Some(after),
+                Some(_) => None,
+                None => {
+                    // Past the hull: the incoming hull edge (always with a dual ray) leads to
+                    // the last neighbour.
+                    last = Some(self.tri.org(prev_in_triangle(e as usize)));
+                    None
+                }
+            };
+            if self.has_dual(e) {
+                return Some(self.tri.dest(e as usize));
+            }
+        })
+    }
+
     /// The half-edge out of the same point, one triangle counterclockwise; `None` past the hull.
     #[inline]
     fn rotate_counterclockwise(&self, e: u32) -> Option<u32> {

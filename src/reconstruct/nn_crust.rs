@@ -138,7 +138,7 @@ fn delaunay_graph(tri: &Triangulation) -> Adjacency {
 
 /// Orders `a` before `b` if it is strictly closer to `p`, or equally close and smaller in
 /// `(x, y)`; exact.
-fn closer(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Ordering {
+pub(super) fn closer(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Ordering {
     Ordering::from(distance_order(p, a, b)).then_with(|| {
         a[0].partial_cmp(&b[0])
             .unwrap_or(Ordering::Equal)

@@ -66,6 +66,7 @@ pub struct Options {
     label_rule: LabelRule,
     peeling_budget: usize,
     medial_axis: MedialAxisMode,
+    detour_repair: bool,
 }
 
 impl Default for Options {
@@ -76,13 +77,14 @@ impl Default for Options {
             label_rule: LabelRule::WaterReached,
             peeling_budget: 4,
             medial_axis: MedialAxisMode::Pruned,
+            detour_repair: true,
         }
     }
 }
 
 impl Options {
-    /// The defaults: WDM_CRUST with peeling, the [`LabelRule::WaterReached`] labels and a
-    /// peeling budget of 4.
+    /// The defaults: WDM_CRUST with peeling, the [`LabelRule::WaterReached`] labels, a
+    /// peeling budget of 4 and the detour repair.
     pub fn new() -> Self {
         Self::default()
     }
@@ -125,6 +127,16 @@ impl Options {
         self
     }
 
+    /// Outliers just outside a curve can make the water flow detour through them and skip a
+    /// stretch of samples. The repair reattaches a skipped stretch whose samples name each
+    /// other as nearest or half neighbours (NN-crust) and drops the detour, whose points are
+    /// then unassigned (ARCHITECTURE.md, "Outliers: detour repair"). On by default; WDM only.
+    /// Changes nothing when every point is on a curve.
+    pub fn with_detour_repair(mut self, detour_repair: bool) -> Self {
+        self.detour_repair = detour_repair;
+        self
+    }
+
     /// See [`with_algorithm`](Self::with_algorithm).
     pub fn algorithm(&self) -> Algorithm {
         self.algorithm
@@ -148,5 +160,10 @@ impl Options {
     /// See [`with_medial_axis`](Self::with_medial_axis).
     pub fn medial_axis(&self) -> MedialAxisMode {
         self.medial_axis
+    }
+
+    /// See [`with_detour_repair`](Self::with_detour_repair).
+    pub fn detour_repair(&self) -> bool {
+        self.detour_repair
     }
 }

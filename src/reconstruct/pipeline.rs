@@ -1,6 +1,7 @@
 //! The reconstruction, top to bottom: triangulate, dual, label, extract, peel, assemble.
 
 use super::curves;
+use super::detours::{repair_detours, Repair};
 use super::extract::{chain_edges, medial_axis, wdm_crust_edges};
 use super::medial_axis::pruned_medial_axis;
 use super::options::{Algorithm, MedialAxisMode, Options};
@@ -132,15 +133,24 @@ pub fn reconstruct_observed(
         } else {
             Peeling::done(0)
         };
+        let repair = if options.detour_repair() && !triangulation.is_degenerate() {
+            repair_detours(&vor, &edges)
+        } else {
+            Repair::none()
+        };
         lap(Phase::Peel);
-        let holes_possible = peeling.extra_passes > 0;
+        // Edges the first pass did not find (peeling's, reattached stretches): holes may be
+        // among them, and the medial axis must not cross them.
+        let holes_possible = peeling.extra_passes > 0 || !repair.added.is_empty();
         let (mut first_pass, mut later_pass) = (Vec::new(), Vec::new());
         if holes_possible {
             first_pass.extend_from_slice(&edges[..first_pass_len]);
             first_pass.sort_unstable();
             later_pass.extend_from_slice(&edges[first_pass_len..]);
+            later_pass.extend_from_slice(&repair.added);
             later_pass.sort_unstable();
         }
+        repair.apply(&mut edges);
         let curves = assemble(&triangulation, &edges);
         let edges = triangulation.to_input_edges(edges);
         let unassigned = untouched_points(&triangulation, &edges);
@@ -222,6 +232,32 @@ mod tests {
         edges
     }
 
+    /// What the detour repair may change: it swaps a detour for a stretch of unassigned
+    /// points, so every point keeps degree 2 or goes between degrees 0 and 2, the irregular
+    /// points stay, and every edge it adds is a Delaunay edge.
+    fn assert_swaps_only(plain: &Reconstruction, repaired: &Reconstruction, round: usize) {
+        let tri = plain.triangulation();
+        let degrees = |edges: &[[u32; 2]]| {
+            let mut degree = vec![0usize; tri.point_count()];
+            for &[a, b] in edges {
+                degree[a as usize] += 1;
+                degree[b as usize] += 1;
+            }
+            degree
+        };
+        let (before, after) = (degrees(plain.edges()), degrees(repaired.edges()));
+        for (p, (&d0, &d1)) in before.iter().zip(&after).enumerate() {
+            let swapped = (d0 == 0 || d0 == 2) && (d1 == 0 || d1 == 2);
+            assert!(d0 == d1 || swapped, "round {round}: point {p}: {d0} → {d1}");
+        }
+        assert_eq!(plain.irregular_points(), repaired.irregular_points());
+        let vor = tri.voronoi();
+        for &[a, b] in repaired.edges() {
+            let (a, b) = (tri.local_index(a), tri.local_index(b));
+            assert!(vor.is_delaunay_edge(a, b), "round {round}: {a}–{b}");
+        }
+    }
+
     /// The pipeline runs on local indices and translates once; its result must be what the
     /// same steps give through the public API alone, on the caller's indices: the first pass
     /// exactly, and what peeling adds only Delaunay edges between points the first pass left
@@ -248,10 +284,16 @@ mod tests {
             }
             rng.shuffle(&mut points);
             for peeling in [false, true] {
+                // The steps without the detour repair; what the repair changes is checked
+                // below.
                 let options = Options::new()
                     .with_peeling(peeling)
+                    .with_detour_repair(false)
                     .with_medial_axis(MedialAxisMode::Raw);
                 let rec = reconstruct_with(&points, &options).unwrap();
+                let repaired =
+                    reconstruct_with(&points, &options.with_detour_repair(true)).unwrap();
+                assert_swaps_only(&rec, &repaired, round);
 
                 let tri = triangulate(&points).unwrap();
                 let vor = tri.voronoi();

@@ -181,6 +181,9 @@ pub(super) fn circumcenter_slow(
     b: [f64; 2],
     c: [f64; 2],
 ) -> (Option<[f64; 2]>, Stage) {
+    if let Some(o) = widest_angle_first([a, b, c]).and_then(|t| filter::circumcenter(&t)) {
+        return (Some(o), Stage::Filter);
+    }
     let rescaled = rescale([a, b, c], filter::LEAF_RANGE);
     if let Some((s, k)) = rescaled {
         if let Some(o) = filter::circumcenter(&s).and_then(|o| scale_back(o, k)) {
@@ -195,6 +198,28 @@ pub(super) fn circumcenter_slow(
         return (Some(o), Stage::DoubleWord);
     }
     (circumcenter_rounded(a, b, c), Stage::Exact)
+}
+
+/// The triangle rotated to start at the vertex opposite its longest edge (its widest angle),
+/// or `None` if it already does (or a length is NaN).
+///
+/// The formula translates the triangle to its first vertex. From the vertex of the
+/// *narrowest* angle, the apex of a sliver (two close points and a far one: a pair of
+/// consecutive curve samples and a sample across the shape), the two products of the cross
+/// product nearly cancel, and the filter cannot prove its bound; from a vertex of the short
+/// edge they do not. Such slivers were half of the triangles that left the filter on points
+/// of a smooth curve (453 040 of 831 344 in one diagram of 10^6 points). The lengths are
+/// rounded: they only choose which certified evaluation to try.
+fn widest_angle_first([a, b, c]: [[f64; 2]; 3]) -> Option<[[f64; 2]; 3]> {
+    let squared = |p: [f64; 2], q: [f64; 2]| (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2);
+    let (ab, bc, ca) = (squared(a, b), squared(b, c), squared(c, a));
+    if ca > bc && ca >= ab {
+        Some([b, c, a])
+    } else if ab > bc && ab > ca {
+        Some([c, a, b])
+    } else {
+        None
+    }
 }
 
 /// The exact circumcenter of `a, b, c`, or `None` iff they are collinear (or a coordinate is

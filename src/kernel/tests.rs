@@ -1159,3 +1159,34 @@ proptest! {
         check_metric_and_mixed(random)?;
     }
 }
+
+/// Slivers, two close points and a far one (consecutive curve samples and a sample across
+/// the shape): from the far apex the filter cannot prove its bound, from the widest angle it
+/// can, and the construction's answer is within its promise.
+#[test]
+fn slivers_are_decided_by_the_filter_from_their_widest_angle() {
+    let mut rng = Xorshift(0x51f7_e25d);
+    let (mut from_apex, mut from_widest) = (0, 0);
+    let cases = 2000;
+    for _ in 0..cases {
+        let apex = [rng.unit() * 2.0 - 1.0, rng.unit() * 2.0 - 1.0];
+        let base = [rng.unit() * 2.0 - 1.0, rng.unit() * 2.0 - 1.0];
+        let gap = 1e-7 * (1.0 + rng.unit());
+        let angle = rng.unit() * std::f64::consts::TAU;
+        let near = [base[0] + gap * angle.cos(), base[1] + gap * angle.sin()];
+        let t = [apex, base, near];
+        let Some(exact) = circumcenter_exact(t[0], t[1], t[2]) else {
+            continue;
+        };
+        from_apex += usize::from(filter::circumcenter(&t).is_some());
+        let rotated = [base, near, apex];
+        if let Some(got) = filter::circumcenter(&rotated) {
+            from_widest += 1;
+            assert!(within_ulps(got, &exact), "{got:?} vs {exact:?}");
+        }
+        let got = circumcenter(t[0], t[1], t[2]).unwrap();
+        assert!(within_ulps(got, &exact), "{got:?} vs {exact:?}");
+    }
+    assert!(from_apex * 10 < cases, "{from_apex} decided from the apex");
+    assert!(from_widest * 10 > cases * 9, "{from_widest} decided from the widest angle");
+}

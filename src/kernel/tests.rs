@@ -1188,5 +1188,8 @@ fn slivers_are_decided_by_the_filter_from_their_widest_angle() {
         assert!(within_ulps(got, &exact), "{got:?} vs {exact:?}");
     }
     assert!(from_apex * 10 < cases, "{from_apex} decided from the apex");
-    assert!(from_widest * 10 > cases * 9, "{from_widest} decided from the widest angle");
+    assert!(
+        from_widest * 10 > cases * 9,
+        "{from_widest} decided from the widest angle"
+    );
 }

@@ -389,8 +389,7 @@ impl Graph {
         };
         let slack = |v: u32| {
             let most = vor
-                .vertex_edges_local(v)
-                .flat_map(|edge| edge.sites)
+                .vertex_sites_local(v)
                 .map(|p| noise[p as usize])
                 .fold(0.0f32, f32::max);
             NOISE_TOLERANCE as f32 * most

@@ -32,14 +32,22 @@ pub(super) fn loop_noise(points: &[[f64; 2]]) -> Vec<f64> {
         return vec![0.0; n];
     }
     let at = |i: usize, k: isize| (i as isize + k).rem_euclid(n as isize) as usize;
+    // `edge[i]` = |p_i p_i+1|, computed once for both samples it is an arm of (`hypot`, which
+    // cannot overflow at any magnitude, is the costly part of this estimate).
+    let edge: Vec<f64> = (0..n)
+        .map(|i| distance(points[i], points[at(i, 1)]))
+        .collect();
+    let arms = |i: usize| edge[at(i, -1)] * edge[i];
     let curvature: Vec<f64> = (0..n)
-        .map(|i| signed_curvature(points[at(i, -1)], points[i], points[at(i, 1)]))
+        .map(|i| {
+            let (a, b, c) = (points[at(i, -1)], points[i], points[at(i, 1)]);
+            signed_curvature(a, b, c, arms(i) * distance(a, c))
+        })
         .collect();
     let unexplained: Vec<f64> = (0..n)
         .map(|i| {
-            let (before, after) = (points[at(i, -1)], points[at(i, 1)]);
             let neighbours = (curvature[at(i, -1)] + curvature[at(i, 1)]) / 2.0;
-            let arms = distance(before, points[i]) * distance(points[i], after);
+            let arms = arms(i);
             let psi = (curvature[i] - neighbours).abs() * arms / 2.0;
             psi * psi
         })
@@ -57,13 +65,12 @@ pub(super) fn loop_noise(points: &[[f64; 2]]) -> Vec<f64> {
 }
 
 /// The signed curvature of the circle through `a`, `b`, `c` (positive when they turn
-/// counterclockwise); 0 for collinear or repeated points. Exactly negated when the three
-/// are taken in reverse.
-fn signed_curvature(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+/// counterclockwise), given `lengths` = `(|ab|·|bc|)·|ac|`; 0 for collinear or repeated
+/// points. Exactly negated when the three are taken in reverse (the product of the two arms
+/// does not depend on their order, and `hypot` on the negated difference is the same).
+fn signed_curvature(a: [f64; 2], b: [f64; 2], c: [f64; 2], lengths: f64) -> f64 {
     let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
     let cross = u[0] * v[1] - u[1] * v[0];
-    // The two arms first (their product does not depend on their order), then the chord.
-    let lengths = (distance(a, b) * distance(b, c)) * distance(a, c);
     if lengths > 0.0 {
         2.0 * cross / lengths
     } else {

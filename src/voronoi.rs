@@ -506,30 +506,24 @@ impl<'a> Voronoi<'a> {
     /// clipped cells' `neighbours_local` also pairs each neighbour with a vertex, allocates,
     /// and gives collinear input its line neighbours; peeling wants neither.)
     pub(crate) fn delaunay_neighbours_local(&self, p: u32) -> impl Iterator<Item = u32> + '_ {
-        let start = self.out_halfedge[p as usize];
-        let mut next = (start != NO_TWIN).then_some(start);
-        let mut last = None;
-        std::iter::from_fn(move || {
-            let Some(e) = next else {
-                return last.take();
-            };
-            next = match self.rotate_counterclockwise(e) {
-                Some(after) if after != start => Some(after),
-                Some(_) => None,
-                None => {
-                    // Past the hull: the incoming hull edge's origin is the last neighbour.
-                    last = Some(self.tri.org(prev_in_triangle(e as usize)));
-                    None
-                }
-            };
-            Some(self.tri.dest(e as usize))
-        })
+        self.neighbours_through(p, |_| true)
     }
 
     /// The Delaunay neighbours of local point `p` along edges with a dual Voronoi edge (the
     /// Delaunay graph without the diagonals inside merged cocircular faces), counterclockwise
     /// like [`Self::delaunay_neighbours_local`]. O(degree).
     pub(crate) fn dual_neighbours_local(&self, p: u32) -> impl Iterator<Item = u32> + Clone + '_ {
+        self.neighbours_through(p, |e| self.has_dual(e))
+    }
+
+    /// The neighbours of `p` counterclockwise along its out-going half-edges `e` with
+    /// `keep(e)`; past the hull, the incoming hull edge's origin (always kept: a hull edge has
+    /// a dual ray).
+    fn neighbours_through<'s>(
+        &'s self,
+        p: u32,
+        keep: impl Fn(u32) -> bool + Clone + 's,
+    ) -> impl Iterator<Item = u32> + Clone + 's {
         let start = self.out_halfedge[p as usize];
         let mut next = (start != NO_TWIN).then_some(start);
         let mut last = None;
@@ -541,13 +535,11 @@ impl<'a> Voronoi<'a> {
                 Some(after) if after != start => Some(after),
                 Some(_) => None,
                 None => {
-                    // Past the hull: the incoming hull edge (always with a dual ray) leads to
-                    // the last neighbour.
                     last = Some(self.tri.org(prev_in_triangle(e as usize)));
                     None
                 }
             };
-            if self.has_dual(e) {
+            if keep(e) {
                 return Some(self.tri.dest(e as usize));
             }
         })

@@ -181,9 +181,6 @@ pub(super) fn circumcenter_slow(
     b: [f64; 2],
     c: [f64; 2],
 ) -> (Option<[f64; 2]>, Stage) {
-    if let Some(o) = widest_angle_first([a, b, c]).and_then(|t| filter::circumcenter(&t)) {
-        return (Some(o), Stage::Filter);
-    }
     let rescaled = rescale([a, b, c], filter::LEAF_RANGE);
     if let Some((s, k)) = rescaled {
         if let Some(o) = filter::circumcenter(&s).and_then(|o| scale_back(o, k)) {
@@ -191,6 +188,14 @@ pub(super) fn circumcenter_slow(
         }
     }
     let (t, k) = rescaled.unwrap_or(([a, b, c], 0));
+    // On the rescaled triangle, as every later stage: the result then scales exactly with
+    // the input.
+    if let Some(o) = widest_angle_first(t)
+        .and_then(|r| filter::circumcenter(&r))
+        .and_then(|o| scale_back(o, k))
+    {
+        return (Some(o), Stage::Filter);
+    }
     if let Some(o) = thin::circumcenter(&t).and_then(|o| scale_back(o, k)) {
         return (Some(o), Stage::DoubleWord);
     }

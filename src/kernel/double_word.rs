@@ -94,7 +94,7 @@ use super::circumcenter::{circ, Circ};
 use super::Sign;
 
 /// `2^-44`: 256 units in the last place of a power of two `P` are `2^-44·P`.
-pub(super) const TOLERANCE: f64 = 5.684341886080802e-14;
+const TOLERANCE: f64 = 5.684341886080802e-14;
 /// The exponent bits of an `f64`.
 pub(super) const EXPONENT_MASK: u64 = 0x7ff0_0000_0000_0000;
 /// `1 + 2^-45`: see [`widen`].
@@ -299,6 +299,12 @@ pub(super) fn circumcenter(t: &[[f64; 2]; 3]) -> Option<[f64; 2]> {
     let Circ { d, ux, uy } = circ(&t.map(|p| p.map(DoubleWord::from_f64)));
     let (x, ex) = ux.div(&d)?.plus_input(t[0][0]);
     let (y, ey) = uy.div(&d)?.plus_input(t[0][1]);
+    within_promise((x, ex), (y, ey))
+}
+
+/// `[x, y]` if both are finite, their larger magnitude `N` is normal and both error bounds are
+/// at most `256·ulp(N)`: the promise of `predicates::circumcenter`.
+pub(super) fn within_promise((x, ex): (f64, f64), (y, ey): (f64, f64)) -> Option<[f64; 2]> {
     let norm = x.abs().max(y.abs());
     if !(x.is_finite() && y.is_finite() && norm.is_normal()) {
         return None;

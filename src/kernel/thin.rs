@@ -60,7 +60,9 @@
 
 use super::arith::U;
 use super::bounded::{dekker_error, ETA};
-use super::double_word::{two_sum, EXPONENT_MASK, TOLERANCE};
+#[cfg(test)]
+use super::double_word::EXPONENT_MASK;
+use super::double_word::{two_sum, within_promise};
 
 /// The smallest nonzero coordinate difference admitted: `2^-250`.
 const DIFFERENCE_MIN: f64 = 5.527147875260445e-76;
@@ -140,14 +142,10 @@ pub(super) fn circumcenter(t: &[[f64; 2]; 3]) -> Option<[f64; 2]> {
         let o = origin + quotient;
         (o, quotient_error + 2.0 * U * o.abs())
     };
-    let (x, ex) = coordinate(t0[0], numerator(cy, b2, by, c2));
-    let (y, ey) = coordinate(t0[1], numerator(bx, c2, cx, b2));
-    let norm = x.abs().max(y.abs());
-    if !(x.is_finite() && y.is_finite() && norm.is_normal()) {
-        return None;
-    }
-    let tolerance = TOLERANCE * f64::from_bits(norm.to_bits() & EXPONENT_MASK);
-    (ex <= tolerance && ey <= tolerance).then_some([x, y]) // false for NaN
+    within_promise(
+        coordinate(t0[0], numerator(cy, b2, by, c2)),
+        coordinate(t0[1], numerator(bx, c2, cx, b2)),
+    )
 }
 
 #[cfg(test)]

@@ -237,38 +237,30 @@ impl<'a> Voronoi<'a> {
     }
 
     fn compute_position(&self, v: u32) -> [f64; 2] {
-        let [a, b, c] = self.canonical_triangle(v);
-        // Delaunay triangles are never collinear; the fallback is unreachable.
-        circumcenter(a, b, c).unwrap_or(a)
+        rounded_circumcenter(self.canonical_triangle(v))
     }
 
-    /// Three sites of the face of `v`, chosen and ordered by their coordinates alone: the
-    /// rounded circumcenter depends on which triangle and which corner it starts from, and
-    /// those depend on the input order where points tie in the Z-order (points much closer
-    /// together than the spread of the input). A single triangle is rotated to start at its
-    /// lexicographically smallest corner; a merged face gives its three lexicographically
-    /// smallest sites (distinct points on one circle: never collinear), counterclockwise.
+    /// Three sites of the face of `v`, chosen by their coordinates alone, counterclockwise
+    /// ([`rounded_circumcenter`] then starts from the smallest): the rounded circumcenter
+    /// depends on which triangle and which corner it starts from, and those depend on the
+    /// input order where points tie in the Z-order (points much closer together than the
+    /// spread of the input). A single triangle is its own; a merged face gives its three
+    /// lexicographically smallest sites (distinct points on one circle: never collinear).
     fn canonical_triangle(&self, v: u32) -> [[f64; 2]; 3] {
+        if self.degree(v) == 3 {
+            return self.vertex_triangle(v);
+        }
         let points = &self.tri.points;
-        let mut t = if self.degree(v) == 3 {
-            self.vertex_triangle(v)
-        } else {
-            let mut sites: Vec<[f64; 2]> = self
-                .vertex_sites_local(v)
-                .map(|p| points[p as usize])
-                .collect();
-            sites.sort_unstable_by(|p, q| lexicographic(*p, *q));
-            let (a, mut b, mut c) = (sites[0], sites[1], sites[2]);
-            if orient2d(a, b, c) == Orientation::Clockwise {
-                std::mem::swap(&mut b, &mut c);
-            }
-            [a, b, c]
-        };
-        let smallest = (0..3)
-            .min_by(|&i, &j| lexicographic(t[i], t[j]))
-            .unwrap_or(0);
-        t.rotate_left(smallest);
-        t
+        let mut sites: Vec<[f64; 2]> = self
+            .vertex_sites_local(v)
+            .map(|p| points[p as usize])
+            .collect();
+        sites.sort_unstable_by(|p, q| lexicographic(*p, *q));
+        let (a, mut b, mut c) = (sites[0], sites[1], sites[2]);
+        if orient2d(a, b, c) == Orientation::Clockwise {
+            std::mem::swap(&mut b, &mut c);
+        }
+        [a, b, c]
     }
 
     /// Circumcenter of vertex `v` as an exact rational point.
@@ -281,11 +273,16 @@ impl<'a> Voronoi<'a> {
     /// Three points of the face of `v` (a Delaunay triangle of it): the input the exact
     /// circumcenter predicates take.
     pub fn vertex_triangle(&self, v: u32) -> [[f64; 2]; 3] {
-        let t = match &self.merged {
+        self.tri
+            .triangle_points(self.vertex_triangle_index(v) as usize)
+    }
+
+    /// A Delaunay triangle of the face of `v` (the one [`vertex_triangle`](Self::vertex_triangle) reads).
+    pub(crate) fn vertex_triangle_index(&self, v: u32) -> u32 {
+        match &self.merged {
             None => v,
             Some(m) => m.first_triangle[v as usize],
-        };
-        self.tri.triangle_points(t as usize)
+        }
     }
 
     /// The Voronoi vertex of Delaunay triangle `t`.
@@ -573,6 +570,24 @@ impl<'a> Voronoi<'a> {
 }
 
 /// Orders points by x, then y.
+/// The rounded circumcenter of a Delaunay triangle (never collinear), started from its
+/// corner [`smallest_corner`]: the value [`Voronoi::vertex_position`] gives its face, from
+/// the coordinates alone.
+pub(crate) fn rounded_circumcenter(mut t: [[f64; 2]; 3]) -> [f64; 2] {
+    let first = smallest_corner(t);
+    t.rotate_left(first);
+    let [a, b, c] = t;
+    // Delaunay triangles are never collinear; the fallback is unreachable.
+    circumcenter(a, b, c).unwrap_or(a)
+}
+
+/// The lexicographically smallest corner of `t`.
+pub(crate) fn smallest_corner(t: [[f64; 2]; 3]) -> usize {
+    (0..3)
+        .min_by(|&i, &j| lexicographic(t[i], t[j]))
+        .unwrap_or(0)
+}
+
 fn lexicographic(p: [f64; 2], q: [f64; 2]) -> std::cmp::Ordering {
     p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
 }

@@ -8,9 +8,13 @@
 //! them puts its own cell, hence cycles and whiskers, into that axis. The pruned axis starts
 //! instead from the points of the final closed curves alone:
 //!
-//! 1. **Sub-triangulation.** The points of the closed curves are triangulated on their own.
-//!    Every curve edge is a Delaunay edge of all the points, and an empty circle through its
-//!    ends stays empty when points are taken away, so it is a Delaunay edge of the subset too.
+//! 1. **The loops' points alone.** The axis is that of the Delaunay triangulation of the
+//!    points of the closed curves. Every curve edge is a Delaunay edge of all the points,
+//!    and an empty circle through its ends stays empty when points are taken away, so it is
+//!    a Delaunay edge of the subset too. The subset's triangles are read off the diagram
+//!    already built: they are its triangles except around the points off the loops that
+//!    lie inside the region, where [`cavity`] replaces them (a second triangulation of all
+//!    the loops' points only where that cannot be decided, see there).
 //! 2. **Inside, by parity.** A face of the subset's Voronoi diagram (a Voronoi vertex) is
 //!    inside when an odd number of curve edges separate it from infinity. The closed curves
 //!    are vertex-disjoint simple loops of a plane graph, so the count does not depend on the
@@ -124,26 +128,29 @@
 //!
 //! # Exactness
 //!
-//! The sub-triangulation, its merged faces, the parity and the "beyond its own edge" test
-//! (`orient2d_circumcenter`) are exact, as everywhere in the crate. The
-//! coverage test compares lengths computed from the circumcenters rounded to `f64`, and the
-//! noise slack is an `f64` estimate: the angle and the slack are tolerances of the *rule* (a branch at 59.9999° or 60.0001° is equally a whisker), and
-//! the rounding moves the decision only for balls within about `10⁻¹⁵` (relative) of the
-//! threshold. The order of the removals, and every tie, is decided by radius and then by
+//! The subset's triangles (the cavity's walk and its in-circle tests), its merged faces,
+//! the parity and the "beyond its own edge" test (`orient2d_circumcenter`) are exact, as
+//! everywhere in the crate. The coverage test compares lengths computed from the
+//! circumcenters rounded to `f64`, and the noise slack is an `f64` estimate: the angle and
+//! the slack are tolerances of the *rule* (a branch at 59.9999° or 60.0001° is equally a
+//! whisker), and the rounding moves the decision only for balls within about `10⁻¹⁵`
+//! (relative) of the threshold. The order of the removals, and every tie, is decided by radius and then by
 //! coordinates, so the result depends on the points, never on their order.
 
+mod cavity;
 mod noise;
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
+use self::cavity::Cavity;
 use super::curves::Curve;
 use super::result::MedialAxis;
 use crate::delaunay::triangulate;
 use crate::delaunay::NO_TWIN;
 use crate::parallel;
 use crate::predicates::{orient2d_circumcenter, Orientation};
-use crate::voronoi::{EdgeEnd, Voronoi};
+use crate::voronoi::{rounded_circumcenter, smallest_corner, EdgeEnd, Voronoi};
 
 /// The object angle `θ` of the pruning rule: a leaf is removed when some ball near it grows
 /// out of its ball at least at the rate `cos(θ/2)` of the distance (see the module docs).
@@ -164,23 +171,53 @@ const NOISE_RADIUS_RATIO: f64 = 2.0;
 /// The pruned medial axis of the closed curves among `curves` (caller indices of the
 /// points of `vor`); empty when there are none. See the module docs.
 ///
-/// When the loops leave points out, their own triangulation is built: `vor`'s vertex
-/// positions are freed first (the caller has no more use for them), so that the two sets
-/// of positions never coexist at the memory peak.
+/// Read off `vor` itself, with the triangles around points off the loops inside the region
+/// replaced ([`cavity`]); where that cannot be decided on `vor` (exactly cocircular points
+/// there), the loops' points are triangulated on their own.
 pub(super) fn pruned_medial_axis(vor: &mut Voronoi<'_>, curves: &[Curve]) -> MedialAxis {
     let tri = vor.triangulation();
     let loops: Vec<&Curve> = curves.iter().filter(|c| c.closed).collect();
-    let loop_points: usize = loops.iter().map(|c| c.points.len()).sum();
-    // The loops are vertex-disjoint: when they use every distinct point, the subset is the
-    // whole set and its diagram is `vor` (the common case of clean samples, and the one
-    // where a second triangulation would double the cost of the run).
-    if loop_points == tri.distinct_point_count() {
-        let local = |i| tri.local_index(i);
-        let edges = loop_edges(&loops, local);
-        let noise = noise_at_points(&loops, |i| tri.point(i), local, loop_points);
-        return axis_inside(vor, &edges, &noise);
+    if loops.is_empty() || tri.is_degenerate() {
+        return MedialAxis::default();
     }
+    let local = |i| tri.local_index(i);
+    let edges = loop_edges(&loops, local);
+    let marks = LoopMarks::new(vor, &edges);
+    if marks.unresolved {
+        drop((marks, edges));
+        return subset_axis(vor, &loops);
+    }
+    let mut inside = marks.inside_faces(vor);
+    // Points off the loops change the region's triangles only where they lie inside it
+    // ([`cavity`]): when none does (always when the loops use every point), the region's
+    // triangles of all the points are the subset's; when some do, the triangles around
+    // them are replaced, and only where the diagram cannot decide that is the subset
+    // triangulated again.
+    let off_loop = off_loop_points_inside(vor, &edges, &inside);
+    let cavity = if off_loop.is_empty() {
+        None
+    } else if let Some(cavity) = Cavity::around(vor, &off_loop) {
+        for &v in &cavity.replaced {
+            inside[v as usize] = false;
+        }
+        Some(cavity)
+    } else {
+        drop((marks, inside, edges));
+        return subset_axis(vor, &loops);
+    };
+    let noise = noise_at_points(&loops, |i| tri.point(i), local, tri.distinct_point_count());
+    let axis = Graph::inside_edges(vor, &inside, &marks, &noise, cavity.as_ref());
+    // The marks are freed before the pruning, the memory peak of the axis.
+    drop((marks, inside, edges, noise, cavity));
+    axis.pruned().into_medial_axis()
+}
+
+/// [`pruned_medial_axis`] on a triangulation of the points of `loops` alone. `vor`'s
+/// vertex positions are freed first (the caller has no more use for them), so that the two
+/// sets of positions never coexist at the memory peak.
+fn subset_axis(vor: &mut Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
     vor.forget_positions();
+    let tri = vor.triangulation();
     let points: Vec<[f64; 2]> = loops
         .iter()
         .flat_map(|c| c.points.iter().map(|&i| tri.point(i)))
@@ -209,8 +246,14 @@ pub(super) fn pruned_medial_axis(vor: &mut Voronoi<'_>, curves: &[Curve]) -> Med
     let renumbered: Vec<&Curve> = renumbered.iter().collect();
     let local = |i| sub.local_index(i);
     let edges = loop_edges(&renumbered, local);
-    let noise = noise_at_points(&renumbered, |i| sub.point(i), local, loop_points);
-    axis_inside(&sub.voronoi(), &edges, &noise)
+    let noise = noise_at_points(&renumbered, |i| sub.point(i), local, points.len());
+    let vor = sub.voronoi();
+    let axis = {
+        let marks = LoopMarks::new(&vor, &edges);
+        let inside = marks.inside_faces(&vor);
+        Graph::inside_edges(&vor, &inside, &marks, &noise, None)
+    };
+    axis.pruned().into_medial_axis()
 }
 
 /// The noise amplitude ([`noise::loop_noise`]) at every point of `loops`, by local index
@@ -245,16 +288,17 @@ fn loop_edges(loops: &[&Curve], local: impl Fn(u32) -> u32) -> Vec<[u32; 2]> {
     edges
 }
 
-/// The pruned axis inside the closed loops `edges` (sorted local pairs, Delaunay edges of
-/// `vor`'s points, covering the points the loops use).
-fn axis_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]], noise: &[f32]) -> MedialAxis {
-    let axis = {
-        let marks = LoopMarks::new(vor, edges);
-        let inside = marks.inside_faces(vor);
-        Graph::inside_edges(vor, &inside, &marks, noise)
-    };
-    // The marks are freed before the pruning, the memory peak of the axis.
-    axis.pruned().into_medial_axis()
+/// The points of `vor` on none of the loops `edges` (sorted local pairs) with a face
+/// `inside` them. No loop edge ends at such a point, so all its faces have one parity.
+fn off_loop_points_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]], inside: &[bool]) -> Vec<u32> {
+    let mut on_loop = vec![false; vor.triangulation().distinct_point_count()];
+    for &[a, b] in edges {
+        on_loop[a as usize] = true;
+        on_loop[b as usize] = true;
+    }
+    (0..on_loop.len() as u32)
+        .filter(|&p| !on_loop[p as usize] && vor.cell_local(p).any(|v| inside[v as usize]))
+        .collect()
 }
 
 /// Which Delaunay half-edges lie on a loop (both directions), and which faces hold a loop
@@ -263,6 +307,10 @@ fn axis_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]], noise: &[f32]) -> MedialAx
 struct LoopMarks {
     on_loop: Vec<bool>,
     on_chord: Vec<bool>,
+    /// Some loop edge is no Delaunay edge of these points, nor a chord of a merged face:
+    /// the loops do not divide this diagram's faces (a later pass of the peeling may close
+    /// a loop by an edge of its own points only).
+    unresolved: bool,
 }
 
 impl LoopMarks {
@@ -271,6 +319,7 @@ impl LoopMarks {
         let halfedges = tri.halfedges();
         let mut on_loop = vec![false; halfedges.len()];
         let mut on_chord = vec![false; vor.vertex_count()];
+        let mut unresolved = false;
         // Finding a loop edge's half-edge walks around its end: in parallel.
         let found = parallel::map_range(edges.len(), |i| {
             let [a, b] = edges[i];
@@ -290,15 +339,22 @@ impl LoopMarks {
                 // Not an edge of this triangulation: it crosses the merged face that holds
                 // both ends (two faces sharing two corners share the edge between them).
                 None => {
+                    let mut shared = false;
                     for v in vor.cell_local(a) {
                         if vor.cell_local(b).any(|w| w == v) {
                             on_chord[v as usize] = true;
+                            shared = true;
                         }
                     }
+                    unresolved |= !shared;
                 }
             }
         }
-        LoopMarks { on_loop, on_chord }
+        LoopMarks {
+            on_loop,
+            on_chord,
+            unresolved,
+        }
     }
 
     /// Every Voronoi vertex: inside the loops? A face holding a loop edge without a dual
@@ -371,27 +427,37 @@ struct Ball {
 }
 
 impl Graph {
-    /// The finite Voronoi edges between two inside vertices, the vertices numbered in the
-    /// order the edges (by dual half-edge) first use them.
-    fn inside_edges(vor: &Voronoi<'_>, inside: &[bool], loops: &LoopMarks, noise: &[f32]) -> Graph {
+    /// The finite Voronoi edges between two inside vertices, and those of the `cavity`'s new
+    /// triangles (numbered after the diagram's vertices), the vertices numbered in the order
+    /// the edges first use them.
+    fn inside_edges(
+        vor: &Voronoi<'_>,
+        inside: &[bool],
+        loops: &LoopMarks,
+        noise: &[f32],
+        cavity: Option<&Cavity>,
+    ) -> Graph {
         let tri = vor.triangulation();
-        let mut index = vec![u32::MAX; vor.vertex_count()];
-        // The face lies on the left of its boundary half-edges; the circumcenter is beyond
+        let vertex_count = vor.vertex_count() as u32;
+        let new_triangles = cavity.map_or(&[][..], |c| &c.triangles[..]);
+        let mut index = vec![u32::MAX; vertex_count as usize + new_triangles.len()];
+        // A face lies on the left of its boundary half-edges; the circumcenter is beyond
         // a loop edge when it lies strictly on its right (exact).
+        let beyond_edge = |e: usize, face: [[f64; 2]; 3]| {
+            loops.on_loop[e]
+                && orient2d_circumcenter(
+                    tri.points[tri.org(e) as usize],
+                    tri.points[tri.dest(e) as usize],
+                    face,
+                ) == Orientation::Clockwise
+        };
         let beyond = |v: u32| {
             let face = vor.vertex_triangle(v);
-            vor.vertex_edges_local(v).any(|edge| {
-                let [a, b] = edge.sites;
-                loops.on_loop[edge.halfedge as usize]
-                    && orient2d_circumcenter(tri.points[a as usize], tri.points[b as usize], face)
-                        == Orientation::Clockwise
-            })
+            vor.vertex_edges_local(v)
+                .any(|edge| beyond_edge(edge.halfedge as usize, face))
         };
-        let slack = |v: u32| {
-            let most = vor
-                .vertex_sites_local(v)
-                .map(|p| noise[p as usize])
-                .fold(0.0f32, f32::max);
+        let slack = |sites: &mut dyn Iterator<Item = u32>| {
+            let most = sites.map(|p| noise[p as usize]).fold(0.0f32, f32::max);
             NOISE_TOLERANCE as f32 * most
         };
         let mut used = Vec::new();
@@ -403,23 +469,59 @@ impl Graph {
             }
             index[v as usize]
         };
+        let mut add = |a: u32, b: u32| {
+            let (ia, ib) = (renumber(a), renumber(b));
+            edges.push([ia.min(ib), ia.max(ib)]);
+        };
         for (_, a, b) in vor.finite_edges() {
             if inside[a as usize] && inside[b as usize] {
-                let (ia, ib) = (renumber(a), renumber(b));
-                edges.push([ia.min(ib), ia.max(ib)]);
+                add(a, b);
+            }
+        }
+        let mut new_beyond = vec![false; new_triangles.len()];
+        if let Some(cavity) = cavity {
+            for &[s, t] in &cavity.shared {
+                add(vertex_count + s, vertex_count + t);
+            }
+            for &(k, e) in &cavity.boundary {
+                let face = new_triangles[k as usize].map(|p| tri.points[p as usize]);
+                new_beyond[k as usize] |= beyond_edge(e as usize, face);
+                let twin = tri.halfedges()[e as usize];
+                if twin == NO_TWIN || loops.on_loop[e as usize] {
+                    continue;
+                }
+                let w = vor.vertex_of_halfedge(twin);
+                if inside[w as usize] {
+                    add(vertex_count + k, w);
+                }
             }
         }
         drop(index);
         let positions = vor.vertex_positions();
-        // Computed in order of first use, which follows the triangulation's locality.
+        // Computed in order of first use, which follows the triangulation's locality. The
+        // radius is measured to the face's smallest corner, as its position is computed from
+        // it: the same value whichever triangulation the face came from.
         let mut ball = parallel::map_range(used.len(), |i| {
             let v = used[i];
-            let centre = positions[v as usize];
-            Ball {
-                centre,
-                radius: distance(centre, vor.vertex_triangle(v)[0]),
-                slack: slack(v),
-                beyond: beyond(v),
+            if v < vertex_count {
+                let face = vor.vertex_triangle(v);
+                let centre = positions[v as usize];
+                Ball {
+                    centre,
+                    radius: distance(centre, face[smallest_corner(face)]),
+                    slack: slack(&mut vor.vertex_sites_local(v)),
+                    beyond: beyond(v),
+                }
+            } else {
+                let k = (v - vertex_count) as usize;
+                let face = new_triangles[k].map(|p| tri.points[p as usize]);
+                let centre = rounded_circumcenter(face);
+                Ball {
+                    centre,
+                    radius: distance(centre, face[smallest_corner(face)]),
+                    slack: slack(&mut new_triangles[k].iter().copied()),
+                    beyond: new_beyond[k],
+                }
             }
         });
         // Then numbered in the order the pruning tests leaves (see `Ball`): sorted on the
@@ -800,23 +902,81 @@ mod tests {
         (points, curves)
     }
 
+    /// The axis as a set of segments, ends in order: comparable across diagrams, which
+    /// number the axis vertices differently.
+    fn segments(axis: &MedialAxis) -> Vec<[[u64; 2]; 2]> {
+        let key = |v: u32| axis.vertices[v as usize].map(f64::to_bits);
+        let mut segments: Vec<[[u64; 2]; 2]> = axis
+            .edges
+            .iter()
+            .map(|&[a, b]| {
+                let (p, q) = (key(a), key(b));
+                [p.min(q), p.max(q)]
+            })
+            .collect();
+        segments.sort_unstable();
+        segments
+    }
+
     /// The axis is that of the loops' points alone: on the full diagram when the loops use
-    /// every point, on a triangulation of their points when others are left out (here
-    /// scattered points inside and around the shapes). Both paths give the same axis.
+    /// every point, on the diagram of all the points with the triangles around the points
+    /// inside replaced (here scattered points inside and around the shapes), and on a
+    /// triangulation of the loops' points alone. All three give the same axis.
     #[test]
     fn points_off_the_loops_do_not_change_the_axis() {
         let mut rng = Rng::new(5);
-        for round in 0..10 {
-            let (points, curves) = two_shapes(&mut rng, 60 + 20 * round);
+        let mut replaced = 0;
+        for round in 0..20 {
+            let (points, curves) = two_shapes(&mut rng, 60 + 10 * round);
             let tri = triangulate(&points).unwrap();
             let direct = pruned_medial_axis(&mut tri.voronoi(), &curves);
             assert!(direct.edges.len() > 20, "round {round}");
 
             let mut noisy = points.clone();
-            noisy.extend((0..15).map(|_| [rng.range(-2.0, 6.0), rng.range(-1.5, 1.5)]));
+            noisy.extend((0..5 + round).map(|_| [rng.range(-2.0, 6.0), rng.range(-1.5, 1.5)]));
             let tri = triangulate(&noisy).unwrap();
-            let via_subset = pruned_medial_axis(&mut tri.voronoi(), &curves);
-            assert_eq!(direct, via_subset, "round {round}");
+            let mut vor = tri.voronoi();
+            let with_cavity = pruned_medial_axis(&mut vor, &curves);
+            let loops: Vec<&Curve> = curves.iter().collect();
+            let via_subset = subset_axis(&mut vor, &loops);
+            assert_eq!(segments(&direct), segments(&with_cavity), "round {round}");
+            assert_eq!(segments(&direct), segments(&via_subset), "round {round}");
+
+            let local = |i| tri.local_index(i);
+            let edges = loop_edges(&loops, local);
+            let inside = LoopMarks::new(&vor, &edges).inside_faces(&vor);
+            let off_loop = off_loop_points_inside(&vor, &edges, &inside);
+            replaced += usize::from(
+                Cavity::around(&vor, &off_loop).is_some_and(|c| !c.replaced.is_empty()),
+            );
+        }
+        // The cavity path ran (points inside, no cocircular ones) in most rounds.
+        assert!(replaced >= 15, "{replaced}");
+    }
+
+    /// Integer points: the loop (a rectangle's boundary) and the points inside it are
+    /// cocircular in many ways, faces merge, and the axis is the subset's all the same.
+    #[test]
+    fn cocircular_points_inside_give_the_subset_axis() {
+        let (w, h) = (10, 6);
+        let mut points: Vec<[f64; 2]> = Vec::new();
+        points.extend((0..w).map(|x| [f64::from(x), 0.0]));
+        points.extend((0..h).map(|y| [f64::from(w), f64::from(y)]));
+        points.extend((0..w).map(|x| [f64::from(w - x), f64::from(h)]));
+        points.extend((0..h).map(|y| [0.0, f64::from(h - y)]));
+        let curves = vec![Curve {
+            closed: true,
+            points: (0..points.len() as u32).collect(),
+        }];
+        let tri = triangulate(&points).unwrap();
+        let direct = pruned_medial_axis(&mut tri.voronoi(), &curves);
+        assert!(!direct.edges.is_empty());
+        for inside in [vec![[3.0, 3.0]], vec![[2.0, 2.0], [5.0, 3.0], [7.5, 4.0]]] {
+            let mut with_inside = points.clone();
+            with_inside.extend(inside);
+            let tri = triangulate(&with_inside).unwrap();
+            let axis = pruned_medial_axis(&mut tri.voronoi(), &curves);
+            assert_eq!(segments(&direct), segments(&axis));
         }
     }
 }

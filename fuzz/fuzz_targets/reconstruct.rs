@@ -9,7 +9,8 @@
 use libfuzzer_sys::fuzz_target;
 use wdm_crust::reconstruct::{reconstruct_with, MedialAxisMode, Options};
 use wdm_crust_fuzz::checks::{
-    check_peeled, check_permuted, check_single_pass, expected_error, permute, same_error,
+    check_default, check_peeled, check_permuted, check_single_pass, expected_error, permute,
+    same_error,
 };
 use wdm_crust_fuzz::fail;
 use wdm_crust_fuzz::scene::{permutation, Scene};
@@ -69,6 +70,9 @@ fuzz_target!(|scene: Scene| {
         Ok(rec) => rec,
         Err(e) => fail("reconstruct (pruned axis)", &points, &format!("{e}")),
     };
+    if let Err(e) = check_default(&points, &pruned) {
+        fail("reconstruct (default)", &points, &e);
+    }
     let perm = permutation(points.len(), scene.order);
     let shuffled = permute(&points, &perm);
     for (options, rec, what) in [

@@ -1041,6 +1041,100 @@ pub fn check_peeled(points: &[[f64; 2]], single: &Reconstruction, full: &Reconst
     Ok(())
 }
 
+/// The default reconstruction (peeling, the detour repair, the pruned axis) is well formed:
+/// its edges a sorted list between distinct points, partitioned into curves, drawn without
+/// crossing each other or passing through a point (exact orientations); the unassigned
+/// points exactly the distinct points on no edge (none dropped in silence); the medial axis
+/// a sorted list of segments between distinct, used vertices, none NaN.
+pub fn check_default(points: &[[f64; 2]], rec: &Reconstruction) -> Check {
+    check_edge_list(points, rec.edges())?;
+    check_curves(points.len(), rec.edges(), rec.curves())?;
+    check_point_classes(rec, points)?;
+    ensure!(
+        rec.unassigned() == rec.untouched_points(),
+        "unassigned {:?}, untouched {:?}",
+        rec.unassigned(),
+        rec.untouched_points()
+    );
+    check_plane_drawing(points, rec.edges())?;
+    let axis = rec.medial_axis();
+    ensure!(
+        axis.edges.windows(2).all(|w| w[0] < w[1]),
+        "medial-axis edges not sorted and unique"
+    );
+    let mut used = vec![false; axis.vertices.len()];
+    for &[a, b] in &axis.edges {
+        ensure!(
+            a < b && (b as usize) < axis.vertices.len(),
+            "medial-axis edge [{a}, {b}]"
+        );
+        used[a as usize] = true;
+        used[b as usize] = true;
+    }
+    ensure!(
+        used.iter().all(|&u| u),
+        "a medial-axis vertex without an edge"
+    );
+    // A circumcenter beyond the range of `f64` rounds to ±inf (documented); never NaN.
+    ensure!(
+        axis.vertices.iter().flatten().all(|x| !x.is_nan()),
+        "a medial-axis vertex is NaN"
+    );
+    Ok(())
+}
+
+/// No two `edges` cross, and no edge passes through a point of `points` other than its ends.
+fn check_plane_drawing(points: &[[f64; 2]], edges: &[[u32; 2]]) -> Check {
+    let at = |i: u32| points[i as usize];
+    let boxes: Vec<[f64; 4]> = edges
+        .iter()
+        .map(|&[a, b]| {
+            let (p, q) = (at(a), at(b));
+            [
+                p[0].min(q[0]),
+                p[0].max(q[0]),
+                p[1].min(q[1]),
+                p[1].max(q[1]),
+            ]
+        })
+        .collect();
+    let overlap =
+        |x: &[f64; 4], y: &[f64; 4]| x[0] <= y[1] && y[0] <= x[1] && x[2] <= y[3] && y[2] <= x[3];
+    let strictly_between = |p: [f64; 2], q: [f64; 2], r: [f64; 2]| {
+        // r on the segment p–q, not an end: collinear and inside the box on the long axis.
+        orient2d(p, q, r) == Orientation::Collinear
+            && r != p
+            && r != q
+            && (r[0] - p[0]) * (r[0] - q[0]) <= 0.0
+            && (r[1] - p[1]) * (r[1] - q[1]) <= 0.0
+    };
+    for (i, &[a, b]) in edges.iter().enumerate() {
+        let (p, q) = (at(a), at(b));
+        for (k, &r) in points.iter().enumerate() {
+            let r_box = [r[0], r[0], r[1], r[1]];
+            ensure!(
+                !overlap(&boxes[i], &r_box) || !strictly_between(p, q, r),
+                "edge [{a}, {b}] passes through point {k}"
+            );
+        }
+        for (j, &[c, d]) in edges.iter().enumerate().skip(i + 1) {
+            if !overlap(&boxes[i], &boxes[j]) || a == c || a == d || b == c || b == d {
+                continue;
+            }
+            let (r, s) = (at(c), at(d));
+            let sides = |x: Orientation, y: Orientation| {
+                x != Orientation::Collinear && y != Orientation::Collinear && x != y
+            };
+            ensure!(
+                !(sides(orient2d(p, q, r), orient2d(p, q, s))
+                    && sides(orient2d(r, s, p), orient2d(r, s, q))),
+                "edges [{a}, {b}] and [{c}, {d}] cross"
+            );
+        }
+    }
+    Ok(())
+}
+
 /// Sorted medial-axis segments as coordinate bits, independent of vertex numbering.
 pub fn axis_segments(rec: &Reconstruction) -> Vec<[u64; 4]> {
     let axis = rec.medial_axis();

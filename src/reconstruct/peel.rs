@@ -3,6 +3,7 @@
 //! indices here are local to the full triangulation, except the curves' (see [`hole_edges`]).
 
 use super::curves::{assemble_named, Adjacency, Curve};
+use super::ears::{repair_ears, Ears};
 use super::extract::wdm_crust_edges;
 use super::medial_axis::parity_from_infinity;
 use super::options::Options;
@@ -41,7 +42,7 @@ const MAX_MEDIAN_TURN: f64 = 20.0 * std::f64::consts::PI / 180.0;
 /// The fewest points of a closed loop a later pass keeps: a closed curve turns by 2π, and an
 /// ε-sample of it by about ε per sample, so a loop of fewer than 7 points is no ε-sample for
 /// any ε < 1 (see [`is_a_curve`]).
-const MIN_LOOP_POINTS: usize = 7;
+pub(super) const MIN_LOOP_POINTS: usize = 7;
 
 /// How far, in its own sample spacings, a loop closed by a chord ([`close_by_chord`]) must
 /// keep from the curves found before: two curves of an ε-sample (ε < 1) lie at least twice
@@ -232,9 +233,14 @@ fn later_pass(
         return nothing;
     }
     let vor = sub.voronoi();
-    let flow = wdm::label_vertices_local(&vor, options.label_rule());
+    let mut labels = wdm::label_vertices_local(&vor, options.label_rule()).labels;
+    let mut crust = wdm_crust_edges(&vor, &labels);
+    // Dropped, never rejoined: rejoining here too lost more holes than it kept (likely: the
+    // rejoining edge is the pass's, not always a Delaunay edge of all the points, and the
+    // rule below opens the loop there; ARCHITECTURE.md, "Ears").
+    repair_ears(&vor, &mut labels, &mut crust, Ears::Drop);
     // `sub`'s caller indices are positions in `rest`.
-    let (mut edges, chords): (Vec<[u32; 2]>, Vec<[u32; 2]>) = wdm_crust_edges(&vor, &flow.labels)
+    let (mut edges, chords): (Vec<[u32; 2]>, Vec<[u32; 2]>) = crust
         .iter()
         .map(|&[a, b]| {
             let at = |p: u32| rest[sub.input_index(p) as usize];

@@ -2,6 +2,7 @@
 
 use super::curves;
 use super::detours::{repair_detours, Repair};
+use super::ears::{repair_ears, Ears};
 use super::extract::{chain_edges, medial_axis, wdm_crust_edges};
 use super::medial_axis::pruned_medial_axis;
 use super::options::{Algorithm, MedialAxisMode, Options};
@@ -119,12 +120,14 @@ pub fn reconstruct_observed(
         lap(Phase::Voronoi);
         // Only the labels go on: the sources and the visit marks are freed here (10 bytes per
         // point at the memory peak, which is later).
-        let labels = wdm::label_vertices_local(&vor, options.label_rule()).labels;
+        let mut labels = wdm::label_vertices_local(&vor, options.label_rule()).labels;
         lap(Phase::Label);
         let mut edges = if triangulation.is_degenerate() {
             chain_edges(&triangulation)
         } else {
-            wdm_crust_edges(&vor, &labels)
+            let mut edges = wdm_crust_edges(&vor, &labels);
+            repair_ears(&vor, &mut labels, &mut edges, Ears::Rejoin);
+            edges
         };
         let first_pass_len = edges.len();
         lap(Phase::Extract);
@@ -266,6 +269,7 @@ mod tests {
     fn the_pipeline_equals_its_steps_on_caller_indices() {
         let mut rng = Rng::new(3);
         let mut peeled = 0;
+        let mut ears_repaired = 0;
         for round in 0..40 {
             let n = 20 + rng.below(400);
             // Two nested noisy loops (so peeling runs) plus a few scattered points and
@@ -297,9 +301,15 @@ mod tests {
 
                 let tri = triangulate(&points).unwrap();
                 let vor = tri.voronoi();
-                let flow = wdm::label_vertices(&vor, options.label_rule());
-                assert_eq!(rec.labels(), &flow.labels[..], "round {round}");
-                let first_pass = public_crust_edges(&vor, &flow.labels);
+                let mut labels = wdm::label_vertices(&vor, options.label_rule()).labels;
+                // The ear repair on local edges; its labels then give the same edges through
+                // the public view.
+                let mut local = wdm_crust_edges(&vor, &labels);
+                let repaired = repair_ears(&vor, &mut labels, &mut local, Ears::Rejoin);
+                ears_repaired += usize::from(repaired > 0);
+                assert_eq!(rec.labels(), &labels[..], "round {round}");
+                let first_pass = public_crust_edges(&vor, &labels);
+                assert_eq!(tri.to_input_edges(local), first_pass, "round {round}");
                 let delaunay: BTreeSet<[u32; 2]> = (0..tri.halfedges().len())
                     .map(|e| {
                         let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
@@ -335,11 +345,12 @@ mod tests {
                 assert_eq!(rec.untouched_points(), untouched, "round {round}");
                 assert_eq!(rec.unassigned(), untouched, "round {round}");
                 if !grew {
-                    let axis = medial_axis(&vor, &flow.labels, &[]);
+                    let axis = medial_axis(&vor, &labels, &[]);
                     assert_eq!(rec.medial_axis(), &axis, "round {round}");
                 }
             }
         }
         assert!(peeled > 5, "peeling ran in only {peeled} rounds");
+        assert!(ears_repaired > 0, "no ear in any round");
     }
 }

@@ -65,8 +65,10 @@ impl Reconstruction {
         &self.triangulation
     }
 
-    /// The label of every vertex of `self.triangulation().voronoi()` from the first pass
-    /// (empty for the baseline algorithms, which do not label).
+    /// The label of every vertex of `self.triangulation().voronoi()` from the first pass,
+    /// ears repaired (a small loop of the crust hanging off a curve at one point; see
+    /// ARCHITECTURE.md, "Ears"), so that the first pass's crust edges are exactly those between
+    /// an inner and an outer vertex (empty for the baseline algorithms, which do not label).
     pub fn labels(&self) -> &[Label] {
         &self.labels
     }

@@ -145,6 +145,7 @@ use std::collections::BinaryHeap;
 
 use self::cavity::Cavity;
 use super::curves::Curve;
+use super::lengths::distance;
 use super::result::MedialAxis;
 use crate::delaunay::triangulate;
 use crate::delaunay::NO_TWIN;
@@ -867,10 +868,6 @@ fn total_order_key(x: f64) -> u64 {
     } else {
         bits | 1 << 63
     }
-}
-
-fn distance(p: [f64; 2], q: [f64; 2]) -> f64 {
-    (p[0] - q[0]).hypot(p[1] - q[1])
 }
 
 #[cfg(test)]

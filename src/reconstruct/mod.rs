@@ -16,6 +16,7 @@ mod curves;
 mod detours;
 mod ears;
 mod extract;
+mod lengths;
 mod medial_axis;
 pub mod nn_crust;
 mod options;

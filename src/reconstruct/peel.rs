@@ -5,6 +5,7 @@
 use super::curves::{assemble_named, Adjacency, Curve};
 use super::ears::{repair_ears, Ears};
 use super::extract::wdm_crust_edges;
+use super::lengths::distance;
 use super::medial_axis::parity_from_infinity;
 use super::options::Options;
 use super::segment_walk::crosses_a_curve;
@@ -370,10 +371,6 @@ fn median_length(points: &[[f64; 2]], edges: &[[u32; 2]]) -> f64 {
     }
     let mid = lengths.len() / 2;
     *lengths.select_nth_unstable_by(mid, f64::total_cmp).1
-}
-
-fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
-    (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
 /// Distance from `p` to the segment `ab`.

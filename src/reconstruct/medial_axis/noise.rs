@@ -21,6 +21,8 @@
 //! either direction of the loop and from any start (sums are taken in symmetric pairs), so
 //! the pruning that reads it does not depend on the order of the input points.
 
+use crate::reconstruct::lengths::distance;
+
 /// Samples on either side of a sample that its amplitude averages over.
 const HALF_WINDOW: usize = 3;
 
@@ -76,10 +78,6 @@ fn signed_curvature(a: [f64; 2], b: [f64; 2], c: [f64; 2], lengths: f64) -> f64 
     } else {
         0.0
     }
-}
-
-fn distance(p: [f64; 2], q: [f64; 2]) -> f64 {
-    (p[0] - q[0]).hypot(p[1] - q[1])
 }
 
 #[cfg(test)]

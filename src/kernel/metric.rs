@@ -42,3 +42,124 @@ fn dot_slow(points: [[f64; 2]; 3]) -> Sign {
     });
     s
 }
+
+/// The order of `|p − q|²` and `|r − s|²` (`Less` iff the segment `pq` is strictly shorter),
+/// exact: rounded arithmetic where its error bound decides, rationals otherwise.
+pub(crate) fn length_order(
+    p: [f64; 2],
+    q: [f64; 2],
+    r: [f64; 2],
+    s: [f64; 2],
+) -> std::cmp::Ordering {
+    let squared = |a: [f64; 2], b: [f64; 2]| {
+        let (dx, dy) = (a[0] - b[0], a[1] - b[1]);
+        dx * dx + dy * dy
+    };
+    let (first, second) = (squared(p, q), squared(r, s));
+    // Each squared length is within 4 rounding units (u = 2^-53) of the exact one when no
+    // step overflows and the sum is far above the subnormal range (a square that underflows
+    // is then negligible); the margin covers both lengths and the subtraction.
+    const U: f64 = f64::EPSILON / 2.0;
+    let normal = |d: f64| d.is_finite() && (d == 0.0 || d > 1e-280);
+    if normal(first) && normal(second) {
+        let difference = first - second;
+        if difference.abs() > 8.0 * U * (first + second) {
+            return difference
+                .partial_cmp(&0.0)
+                .unwrap_or(std::cmp::Ordering::Equal);
+        }
+    }
+    length_order_exact(p, q, r, s)
+}
+
+#[cold]
+#[inline(never)]
+fn length_order_exact(p: [f64; 2], q: [f64; 2], r: [f64; 2], s: [f64; 2]) -> std::cmp::Ordering {
+    use num_rational::BigRational;
+    let rational = |x: f64| BigRational::from_float(x).unwrap_or_default();
+    let squared = |a: [f64; 2], b: [f64; 2]| {
+        let (dx, dy) = (
+            rational(a[0]) - rational(b[0]),
+            rational(a[1]) - rational(b[1]),
+        );
+        &dx * &dx + &dy * &dy
+    };
+    squared(p, q).cmp(&squared(r, s))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_rational::BigRational;
+    use std::cmp::Ordering;
+
+    fn reference(p: [f64; 2], q: [f64; 2], r: [f64; 2], s: [f64; 2]) -> Ordering {
+        let rational = |x: f64| BigRational::from_float(x).unwrap();
+        let squared = |a: [f64; 2], b: [f64; 2]| {
+            let (dx, dy) = (
+                rational(a[0]) - rational(b[0]),
+                rational(a[1]) - rational(b[1]),
+            );
+            &dx * &dx + &dy * &dy
+        };
+        squared(p, q).cmp(&squared(r, s))
+    }
+
+    /// Equal lengths (3-4-5 against 5-0), then each endpoint nudged by one ulp either way, at
+    /// scales where the rounded squares tie or underflow: the exact answer every time.
+    #[test]
+    fn length_order_is_exact_near_ties_and_at_extreme_scales() {
+        let nudge = |x: f64, up: bool| {
+            let bits = x.to_bits();
+            let away = (x >= 0.0) == up;
+            f64::from_bits(if x == 0.0 {
+                1
+            } else if away {
+                bits + 1
+            } else {
+                bits - 1
+            })
+        };
+        for scale in [1.0, 1e-160, 1e-300, 3e150, 0.1] {
+            let base = [[0.0, 0.0], [3.0, 4.0], [1.0, 1.0], [6.0, 1.0]]
+                .map(|[x, y]: [f64; 2]| [x * scale, y * scale]);
+            assert_eq!(
+                length_order(base[0], base[1], base[2], base[3]),
+                reference(base[0], base[1], base[2], base[3])
+            );
+            for point in 0..4 {
+                for axis in 0..2 {
+                    for up in [false, true] {
+                        let mut moved = base;
+                        moved[point][axis] = nudge(moved[point][axis], up);
+                        let [p, q, r, s] = moved;
+                        assert_eq!(
+                            length_order(p, q, r, s),
+                            reference(p, q, r, s),
+                            "scale {scale}, point {point}, axis {axis}, up {up}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn length_order_matches_rationals_on_random_segments() {
+        let mut rng = wdm_crust_testkit::Rng::new(11);
+        for _ in 0..20_000 {
+            let scale = 10f64.powi(rng.below(40) as i32 - 20);
+            let point =
+                |rng: &mut wdm_crust_testkit::Rng| [rng.normal() * scale, rng.normal() * scale];
+            let (p, q, r) = (point(&mut rng), point(&mut rng), point(&mut rng));
+            // Half the time a segment of nearly the same length as pq.
+            let s = if rng.below(2) == 0 {
+                let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+                [r[0] + dy, r[1] - dx]
+            } else {
+                point(&mut rng)
+            };
+            assert_eq!(length_order(p, q, r, s), reference(p, q, r, s));
+        }
+    }
+}

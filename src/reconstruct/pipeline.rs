@@ -131,29 +131,36 @@ pub fn reconstruct_observed(
         };
         let first_pass_len = edges.len();
         lap(Phase::Extract);
-        let peeling = if options.peeling() {
-            peel(&vor, &mut edges, options)
-        } else {
-            Peeling::done(0)
-        };
+        // The detour repair runs on the first pass, before peeling: the stretches it
+        // reattaches are then no leftovers for the later passes, which otherwise closed small
+        // loops through some of them (measured in ARCHITECTURE.md, "Outliers: detour repair").
         let repair = if options.detour_repair() && !triangulation.is_degenerate() {
             repair_detours(&vor, &edges)
         } else {
             Repair::none()
         };
+        // The first pass as the water drew it, for the hole test below: apart only when the
+        // repair takes edges out of it (it appends the ones it adds).
+        let found_first_pass = (!repair.removed.is_empty()).then(|| edges.clone());
+        repair.apply(&mut edges);
+        let repaired_len = edges.len();
+        let peeling = if options.peeling() {
+            peel(&vor, &mut edges, options)
+        } else {
+            Peeling::done(0)
+        };
         lap(Phase::Peel);
-        // Edges the first pass did not find (peeling's, reattached stretches): holes may be
+        // Edges the first pass did not find (reattached stretches, peeling's): holes may be
         // among them, and the medial axis must not cross them.
         let holes_possible = peeling.extra_passes > 0 || !repair.added.is_empty();
         let (mut first_pass, mut later_pass) = (Vec::new(), Vec::new());
         if holes_possible {
-            first_pass.extend_from_slice(&edges[..first_pass_len]);
+            first_pass = found_first_pass.unwrap_or_else(|| edges[..first_pass_len].to_vec());
             first_pass.sort_unstable();
-            later_pass.extend_from_slice(&edges[first_pass_len..]);
+            later_pass.extend_from_slice(&edges[repaired_len..]);
             later_pass.extend_from_slice(&repair.added);
             later_pass.sort_unstable();
         }
-        repair.apply(&mut edges);
         let curves = assemble(&triangulation, &edges);
         let edges = triangulation.to_input_edges(edges);
         let unassigned = untouched_points(&triangulation, &edges);

@@ -5,7 +5,7 @@
 use super::bounded::lift_filter;
 use super::exact::{lift_exact, signs};
 use super::filter;
-use super::poly::{distance_terms, dot_points_terms};
+use super::poly::{distance_terms, dot_points_terms, length_terms};
 use super::scale::normalize;
 use super::Sign;
 
@@ -44,7 +44,8 @@ fn dot_slow(points: [[f64; 2]; 3]) -> Sign {
 }
 
 /// The order of `|p − q|²` and `|r − s|²` (`Less` iff the segment `pq` is strictly shorter),
-/// exact: rounded arithmetic where its error bound decides, rationals otherwise.
+/// exact: rounded arithmetic where its error bound decides, the kernel's exact stages
+/// otherwise.
 pub(crate) fn length_order(
     p: [f64; 2],
     q: [f64; 2],
@@ -72,19 +73,23 @@ pub(crate) fn length_order(
     length_order_exact(p, q, r, s)
 }
 
+/// The exact stages of [`length_order`]: the running-error filter, then integers (the
+/// same stages as every kernel predicate; rationals, whose every step takes a gcd, made
+/// a fuzz input of many equal lengths take seconds).
 #[cold]
 #[inline(never)]
 fn length_order_exact(p: [f64; 2], q: [f64; 2], r: [f64; 2], s: [f64; 2]) -> std::cmp::Ordering {
-    use num_rational::BigRational;
-    let rational = |x: f64| BigRational::from_float(x).unwrap_or_default();
-    let squared = |a: [f64; 2], b: [f64; 2]| {
-        let (dx, dy) = (
-            rational(a[0]) - rational(b[0]),
-            rational(a[1]) - rational(b[1]),
-        );
-        &dx * &dx + &dy * &dy
-    };
-    squared(p, q).cmp(&squared(r, s))
+    let points = [p, q, r, s];
+    let [fp, fq, fr, fs] = lift_filter(normalize(points).0);
+    let ([sign], _) = signs(length_terms(&fp, &fq, &fr, &fs), || {
+        let ([ep, eq, er, es], _) = lift_exact(points);
+        length_terms(&ep, &eq, &er, &es)
+    });
+    match sign {
+        Sign::Negative => std::cmp::Ordering::Less,
+        Sign::Zero => std::cmp::Ordering::Equal,
+        Sign::Positive => std::cmp::Ordering::Greater,
+    }
 }
 
 #[cfg(test)]

@@ -152,6 +152,12 @@ pub(super) fn distance_terms<T: Arith>(p: &Pt<T>, a: &Pt<T>, b: &Pt<T>) -> [T; 1
     [ab[0].mul(&sum[0]).add(&ab[1].mul(&sum[1]))]
 }
 
+/// `|p − q|² − |r − s|²` (degree 2): the order of the lengths of two segments.
+#[inline(always)]
+pub(super) fn length_terms<T: Arith>(p: &Pt<T>, q: &Pt<T>, r: &Pt<T>, s: &Pt<T>) -> [T; 1] {
+    [norm2(&diff(p, q)).sub(&norm2(&diff(r, s)))]
+}
+
 /// `(s − p)·(q − p)` (degree 2).
 #[inline(always)]
 pub(super) fn dot_points_terms<T: Arith>(p: &Pt<T>, s: &Pt<T>, q: &Pt<T>) -> [T; 1] {

@@ -343,7 +343,9 @@ fn hull_oracle_orders_negative_zero_as_zero() {
 /// curves with 10 to 70 % uniform outliers, seeded.
 #[test]
 fn noisy_and_outlier_inputs_give_well_formed_results() {
-    use wdm_crust_testkit::{ClosedCurve, CurveSet, Ellipse, Rng, SampleConfig, Similarity, Star};
+    use wdm_crust_testkit::{
+        noisy_curve_sample, ClosedCurve, CurveSet, Ellipse, Rng, SampleConfig, Similarity, Star,
+    };
     let mut rng = Rng::new(2026);
     let outer = Ellipse { a: 1.5, b: 1.0 }.dense(200);
     let hole = Ellipse::circle(0.4)
@@ -353,18 +355,7 @@ fn noisy_and_outlier_inputs_give_well_formed_results() {
     for noise in [0.3, 0.5, 1.0] {
         for curves in [vec![star.clone()], vec![outer.clone(), hole.clone()]] {
             for _ in 0..4 {
-                let spacing = curves.iter().map(|c| c.length()).sum::<f64>()
-                    / curves.iter().map(|c| c.points.len()).sum::<usize>() as f64;
-                let points: Vec<[f64; 2]> = curves
-                    .iter()
-                    .flat_map(|c| c.points.iter().copied())
-                    .map(|[x, y]| {
-                        [
-                            x + noise * spacing * rng.normal(),
-                            y + noise * spacing * rng.normal(),
-                        ]
-                    })
-                    .collect();
+                let points = noisy_curve_sample(&curves, noise, &mut rng);
                 let rec = wdm_crust::reconstruct(&points).unwrap();
                 checks::check_default(&points, &rec).unwrap();
             }

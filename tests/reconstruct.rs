@@ -647,20 +647,7 @@ fn degenerate_inputs_give_a_chain_or_nothing() {
 /// Evenly spaced samples of `curves` with Gaussian noise of `noise` × the mean spacing on
 /// each coordinate, shuffled.
 fn noisy_sample(curves: &[DenseCurve], noise: f64, rng: &mut Rng) -> Vec<[f64; 2]> {
-    let n: usize = curves.iter().map(|c| c.points.len()).sum();
-    let spacing = curves.iter().map(|c| c.length()).sum::<f64>() / n as f64;
-    let mut points: Vec<[f64; 2]> = curves
-        .iter()
-        .flat_map(|c| c.points.iter().copied())
-        .map(|[x, y]| {
-            [
-                x + noise * spacing * rng.normal(),
-                y + noise * spacing * rng.normal(),
-            ]
-        })
-        .collect();
-    rng.shuffle(&mut points);
-    points
+    wdm_crust_testkit::noisy_curve_sample(curves, noise, rng)
 }
 
 /// In how many of `trials` noisy samples the reconstruction is exactly `curves.len()`

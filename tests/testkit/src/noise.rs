@@ -1,5 +1,6 @@
 //! Noise and outliers for quality benchmarks.
 
+use super::curve::DenseCurve;
 use super::rng::Rng;
 use super::vec2::bbox;
 
@@ -30,4 +31,23 @@ pub fn uniform_outliers(points: &[[f64; 2]], percent: f64, rng: &mut Rng) -> Vec
     (0..count)
         .map(|_| [rng.range(lo[0], hi[0]), rng.range(lo[1], hi[1])])
         .collect()
+}
+
+/// The points of `curves` (evenly spaced dense curves) with Gaussian noise of `noise` × the
+/// mean sample spacing on each coordinate, shuffled: the noisy rows of the quality survey.
+pub fn noisy_curve_sample(curves: &[DenseCurve], noise: f64, rng: &mut Rng) -> Vec<[f64; 2]> {
+    let n: usize = curves.iter().map(|c| c.points.len()).sum();
+    let spacing = curves.iter().map(|c| c.length()).sum::<f64>() / n as f64;
+    let mut points: Vec<[f64; 2]> = curves
+        .iter()
+        .flat_map(|c| c.points.iter().copied())
+        .map(|[x, y]| {
+            [
+                x + noise * spacing * rng.normal(),
+                y + noise * spacing * rng.normal(),
+            ]
+        })
+        .collect();
+    rng.shuffle(&mut points);
+    points
 }

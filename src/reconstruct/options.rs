@@ -128,10 +128,12 @@ impl Options {
     }
 
     /// Outliers just outside a curve can make the water flow detour through them and skip a
-    /// stretch of samples. The repair reattaches a skipped stretch whose samples name each
-    /// other as nearest or half neighbours (NN-crust) and drops the detour, whose points are
-    /// then unassigned (ARCHITECTURE.md, "Outliers: detour repair"). On by default; WDM only.
-    /// Changes nothing when every point is on a curve.
+    /// stretch of samples. The repair, run on the first pass before peeling, reattaches a
+    /// skipped stretch (through the samples that name each other as nearest or half
+    /// neighbours, NN-crust, along the path whose longest edge is shortest) in place of a
+    /// detour whose longest edge is longer; the detour's points are then unassigned
+    /// (ARCHITECTURE.md, "Outliers: detour repair"). On by default; WDM only. Changes
+    /// nothing when every point is on a curve.
     pub fn with_detour_repair(mut self, detour_repair: bool) -> Self {
         self.detour_repair = detour_repair;
         self

@@ -400,7 +400,8 @@ impl<'a> Voronoi<'a> {
 
     /// Rays, by increasing dual half-edge: `(dual hull half-edge, vertex, outward direction)`.
     /// The direction is the outward normal of the hull edge, `(b − a)` turned clockwise,
-    /// rounded to f64.
+    /// rounded to f64; halved where a difference of coordinates near `f64::MAX` would
+    /// overflow (a direction, not a length: always finite).
     pub fn rays(&self) -> impl Iterator<Item = (u32, u32, [f64; 2])> + '_ {
         let halfedges = self.tri.halfedges();
         (0..halfedges.len() as u32)
@@ -408,11 +409,18 @@ impl<'a> Voronoi<'a> {
             .map(move |e| (e, self.vertex_of_halfedge(e), self.ray_direction(e)))
     }
 
-    /// Outward normal of the hull half-edge `e` (interior on its left).
+    /// Outward normal of the hull half-edge `e` (interior on its left): `(b − a)` turned
+    /// clockwise, rounded to f64, or half of it where that overflows (see [`rays`](Self::rays)).
     pub fn ray_direction(&self, e: u32) -> [f64; 2] {
         let a = self.tri.points[self.tri.org(e as usize) as usize];
         let b = self.tri.points[self.tri.dest(e as usize) as usize];
-        [b[1] - a[1], a[0] - b[0]]
+        let direction = [b[1] - a[1], a[0] - b[0]];
+        if direction.iter().all(|d| d.is_finite()) {
+            return direction;
+        }
+        // Differences of finite numbers overflow only near `f64::MAX`, where halving is
+        // exact; the halves' differences are then finite and round once.
+        [b[1] / 2.0 - a[1] / 2.0, a[0] / 2.0 - b[0] / 2.0]
     }
 
     /// Is the cell of point `p` bounded (is `p` strictly inside the convex hull)?

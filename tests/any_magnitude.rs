@@ -244,6 +244,26 @@ fn check_wide(points: &[P]) {
     for v in 0..voronoi.vertex_count() as u32 {
         assert_close(voronoi.vertex_position(v), &exact_vertex(&tri, v));
     }
+    // Every ray's direction is finite and a positive multiple of the hull edge's outward
+    // normal, up to one rounding per component: exactly perpendicular where the edge is
+    // axis-parallel, and never pointing inward.
+    for (e, _, d) in voronoi.rays() {
+        assert!(d.iter().all(|x| x.is_finite()) && d != [0.0, 0.0], "{d:?}");
+        let a = tri.point(tri.halfedge_origin(e as usize));
+        let b = tri.point(tri.halfedge_destination(e as usize));
+        let (ex, ey) = (rat(b[0]) - rat(a[0]), rat(b[1]) - rat(a[1]));
+        let outward = &ex * rat(d[1]) - &ey * rat(d[0]);
+        assert!(
+            !outward.is_positive(),
+            "ray {d:?} of {a:?} → {b:?} points inward"
+        );
+        let along = &ex * rat(d[0]) + &ey * rat(d[1]);
+        let scale = (ex.abs() + ey.abs()) * (rat(d[0]).abs() + rat(d[1]).abs());
+        assert!(
+            along.abs() * BigRational::from_float(2f64.powi(50)).unwrap() <= scale,
+            "ray {d:?} of {a:?} → {b:?} is no normal"
+        );
+    }
     let mut delaunay_edges = std::collections::HashSet::new();
     for [a, b, c] in tri.triangles() {
         for (p, q) in [(a, b), (b, c), (c, a)] {

@@ -200,6 +200,48 @@ fn collinear_and_tiny_inputs_have_no_vertices() {
     assert_eq!(value["rays"].as_array().unwrap().len(), 4);
 }
 
+/// Near ±f64::MAX a nearly collinear triangle's exact circumcenter lies beyond the f64
+/// range: the library's infinity is JSON `null` and text `inf`, and a note says so; the rays
+/// stay finite (their directions halved where the differences overflow).
+#[test]
+fn vertices_beyond_the_f64_range_are_written_as_null_with_a_note() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let input = b"1.7976931348623157e308 1.7976931348623157e308\n\
+                  -1.7976931348623157e308 1.7976931348623157e308\n\
+                  0 -1.7976931348623157e308\n\
+                  1e300 1.7976931348623155e308\n";
+    let run = run_in(d, &["voronoi"], input);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let value: Value = serde_json::from_str(&run.stdout).unwrap();
+    let vertices = value["vertices"].as_array().unwrap();
+    let nulls = vertices
+        .iter()
+        .flat_map(|v| v.as_array().unwrap())
+        .filter(|x| x.is_null())
+        .count();
+    assert_eq!(nulls, 1, "{}", run.stdout);
+    for ray in value["rays"].as_array().unwrap() {
+        assert!(
+            ray.as_array().unwrap().iter().all(Value::is_number),
+            "{ray}"
+        );
+    }
+    assert_eq!(
+        run.stderr,
+        "wdm-crust: note: <stdin>: Voronoi vertices beyond the f64 range (their exact position \
+         overflows): 1; written as null in JSON, inf in text\n"
+    );
+    let run = run_in(d, &["voronoi", "--format", "text"], input);
+    assert!(run
+        .stdout
+        .lines()
+        .any(|l| l.starts_with("v ") && l.contains("inf")));
+    // Ordinary input has no such note.
+    let run = run_in(d, &["voronoi"], b"0 0\n2 0\n0 2\n");
+    assert_eq!(run.stderr, "");
+}
+
 #[test]
 fn standard_input_output_file_and_timings() {
     let dir = tempfile::tempdir().unwrap();

@@ -113,6 +113,19 @@ fn triangulate_timed(
     Ok(tri)
 }
 
+/// A note on standard error when `count` of the written vertices (`what`) lie beyond the
+/// `f64` range: exact circumcenters of nearly collinear points near `±f64::MAX`, which the
+/// library returns as infinities and JSON can only write as `null`.
+fn note_infinite_vertices(input: &input::Input, count: usize, what: &str) {
+    if count > 0 {
+        eprintln!(
+            "wdm-crust: note: {}: {what} beyond the f64 range (their exact position overflows): {count}; \
+             written as null in JSON, inf in text",
+            input.name()
+        );
+    }
+}
+
 /// The last step of every subcommand: write the result as a timed phase, then report the
 /// timings.
 fn write_timed(

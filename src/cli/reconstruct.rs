@@ -255,6 +255,13 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
             rec.untouched_points().len()
         );
     }
+    let infinite = rec
+        .medial_axis()
+        .vertices
+        .iter()
+        .filter(|p| p.iter().any(|x| !x.is_finite()))
+        .count();
+    super::note_infinite_vertices(&input, infinite, "medial-axis vertices");
     let mut svg = SvgOptions::default();
     svg.delaunay = args.show.contains(&Layer::Delaunay);
     svg.voronoi = args.show.contains(&Layer::Voronoi);

@@ -157,6 +157,12 @@ pub fn run(args: &VoronoiArgs) -> Result<(), CliError> {
         )
     });
 
+    if format != VoronoiFormat::Geojson {
+        let infinite = (0..vor.vertex_count() as u32)
+            .filter(|&v| vor.vertex_position(v).iter().any(|x| !x.is_finite()))
+            .count();
+        super::note_infinite_vertices(&input, infinite, "Voronoi vertices");
+    }
     let bbox = args.clip.or_else(|| BoundingBox::around(&points));
     write_timed(&output, &mut timings, |out| match (format, bbox) {
         (VoronoiFormat::Json, _) => write_voronoi_json(&vor, out),

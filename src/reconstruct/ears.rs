@@ -32,11 +32,16 @@
 //! comparison), taken on the labels as the water flow left them, so neither the order of the
 //! points nor that of the pinch points matters. A well-formed reconstruction has no point of
 //! degree 4: clean samples never reach the rule.
+//!
+//! An **islet** ([`drop_islets`], first pass) is the same small loop standing alone in the
+//! noise band of a curve instead of hanging off it: dropped.
 
 use std::cmp::Ordering;
 
-use super::peel::MIN_LOOP_POINTS;
+use super::curves::Adjacency;
+use super::peel::{lies_apart, median_length, MIN_LOOP_POINTS};
 use super::wdm::Label;
+use crate::delaunay::NO_TWIN;
 use crate::predicates::compare_circumradius;
 use crate::voronoi::{EdgeEnd, Voronoi};
 
@@ -107,6 +112,112 @@ pub(super) fn repair_ears(
         }
     }
     change.apply(labels, edges)
+}
+
+/// Drops the *islets* of `labels`: small loops of the crust that stand alone in the noise
+/// band of a curve. Updates `edges`, the crust of `labels`, like [`repair_ears`] (first pass
+/// only); returns the number of vertices relabelled.
+///
+/// An islet is an inner component with fewer than [`MIN_LOOP_POINTS`] boundary points whose
+/// loop touches no other crust edge (all its points have degree 2) and does not lie apart
+/// from the rest of the crust: some point of it closer than peeling's `APART` (2) of the
+/// loop's own spacings (its median edge) to a crust edge at a Delaunay neighbour off the loop
+/// (peeling's [`lies_apart`]). On a noisy curve the water flow sometimes leaves such a small
+/// region inner just outside it, three to six points of its band around a face the water
+/// deactivated. Fewer than 7 points are no ε-sample of a closed curve (ε < 1, see the module
+/// docs), and two curves of an ε-sample lie farther apart than 2 spacings, so the islet is
+/// noise: relabelled outer, its points left without edges (leftovers for peeling, which has
+/// no loop of fewer than 7 points either). A small loop of a drawing away from other strokes
+/// stays; clean samples have none beside a curve (ARCHITECTURE.md, "Ears", measures both).
+///
+/// Decided on the labels as the water flow left them and on the crust they give: the
+/// islets are disjoint loops, each judged against the same crust, so the order of the points
+/// does not matter.
+pub(super) fn drop_islets(
+    vor: &Voronoi<'_>,
+    labels: &mut [Label],
+    edges: &mut Vec<[u32; 2]>,
+) -> usize {
+    let n = vor.triangulation().points.len();
+    let loops = small_loops(n, edges);
+    if loops.is_empty() {
+        return 0;
+    }
+    let curve = Adjacency::new(n, edges);
+    let mut search = Components {
+        of: vec![UNKNOWN; vor.vertex_count()],
+        list: Vec::new(),
+    };
+    let mut change = Change::default();
+    for points in &loops {
+        let own: Vec<[u32; 2]> = (0..points.len())
+            .map(|i| {
+                let (a, b) = (points[i], points[(i + 1) % points.len()]);
+                [a.min(b), a.max(b)]
+            })
+            .collect();
+        let spacing = median_length(&vor.triangulation().points, &own);
+        let beside_a_curve = !lies_apart(vor, &curve, points, spacing, |q| !points.contains(&q));
+        if !beside_a_curve {
+            continue;
+        }
+        // The inner side of its first edge: the islet's component when the loop encloses it
+        // (a loop around an outer pocket of a large region has the large one there).
+        let [a, b] = [points[0], points[1]];
+        let Some(e) = vor.delaunay_halfedge(a, b) else {
+            continue;
+        };
+        let twin = vor.triangulation().halfedges()[e as usize];
+        let sides = [e, twin]
+            .into_iter()
+            .filter(|&h| h != NO_TWIN)
+            .map(|h| vor.vertex_of_halfedge(h));
+        let Some(inner) = sides
+            .into_iter()
+            .find(|&v| labels[v as usize] == Label::Inner)
+        else {
+            continue;
+        };
+        let c = search.component(vor, labels, inner);
+        let component = &search.list[c as usize];
+        if component.is_small() && component.boundary_points.iter().all(|q| points.contains(q)) {
+            change.drop(component);
+        }
+    }
+    change.apply(labels, edges)
+}
+
+/// The closed loops of `edges` with fewer than [`MIN_LOOP_POINTS`] points, all of degree 2
+/// (their points, in order along the loop). This runs on every first pass, so it keeps no
+/// adjacency lists: a point of degree 2 keeps the XOR of its two neighbours, and a walk goes
+/// on from `prev` to `at` by `xor[at] ^ prev`. Each walk starts along an edge, stops after
+/// [`MIN_LOOP_POINTS`] points or at a point walked over before, so every point is walked over
+/// once (a walked point's degree is set to 0).
+fn small_loops(point_count: usize, edges: &[[u32; 2]]) -> Vec<Vec<u32>> {
+    let mut degree = degrees(point_count, edges);
+    let mut xor = vec![0u32; point_count];
+    for &[a, b] in edges {
+        xor[a as usize] ^= b;
+        xor[b as usize] ^= a;
+    }
+    let mut loops = Vec::new();
+    for &[start, next] in edges {
+        if degree[start as usize] != 2 {
+            continue;
+        }
+        degree[start as usize] = 0;
+        let mut path = vec![start];
+        let (mut prev, mut at) = (start, next);
+        while at != start && path.len() < MIN_LOOP_POINTS && degree[at as usize] == 2 {
+            degree[at as usize] = 0;
+            path.push(at);
+            (prev, at) = (at, xor[at as usize] ^ prev);
+        }
+        if at == start && path.len() >= 3 {
+            loops.push(path);
+        }
+    }
+    loops
 }
 
 /// The crust degree of every point (saturating at 255). Degrees are even: the labels change an

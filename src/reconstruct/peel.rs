@@ -287,7 +287,7 @@ fn close_by_chord(
     piece.closed = true;
     let points = &full.triangulation().points;
     let spacing = median_length(points, &piece_edges(piece));
-    if !lies_apart(full, earlier, piece, spacing) {
+    if !lies_apart(full, earlier, &piece.points, spacing, |_| true) {
         piece.closed = false;
     }
 }
@@ -338,16 +338,27 @@ fn is_a_curve(points: &[[f64; 2]], curve: &Curve, scale: f64) -> bool {
 /// its median edge) from the curves found before (`earlier`)? Measured from each of its
 /// points to the earlier curves' edges at the point's Delaunay neighbours (where the
 /// nearest curve is when no other point lies between).
-fn lies_apart(full: &Voronoi<'_>, earlier: &Adjacency, curve: &Curve, spacing: f64) -> bool {
+///
+/// Only the earlier curves' edges at the neighbours `q` with `counts(q)` are looked at (the
+/// islets of `ears.rs` leave out their own points).
+pub(super) fn lies_apart(
+    full: &Voronoi<'_>,
+    earlier: &Adjacency,
+    curve: &[u32],
+    spacing: f64,
+    counts: impl Fn(u32) -> bool,
+) -> bool {
     let points = &full.triangulation().points;
     let at = |i: u32| points[i as usize];
-    curve.points.iter().all(|&p| {
-        full.delaunay_neighbours_local(p).all(|q| {
-            earlier
-                .neighbours(q)
-                .iter()
-                .all(|&(_, r)| segment_distance(at(p), at(q), at(r)) >= APART * spacing)
-        })
+    curve.iter().all(|&p| {
+        full.delaunay_neighbours_local(p)
+            .filter(|&q| counts(q))
+            .all(|q| {
+                earlier
+                    .neighbours(q)
+                    .iter()
+                    .all(|&(_, r)| segment_distance(at(p), at(q), at(r)) >= APART * spacing)
+            })
     })
 }
 
@@ -361,7 +372,7 @@ fn turning_angle(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
 
 /// The median length of `edges` (0 for none). A rounded length: it only sets the scale of a
 /// rule's threshold, never an exact decision.
-fn median_length(points: &[[f64; 2]], edges: &[[u32; 2]]) -> f64 {
+pub(super) fn median_length(points: &[[f64; 2]], edges: &[[u32; 2]]) -> f64 {
     let mut lengths: Vec<f64> = edges
         .iter()
         .map(|&[a, b]| distance(points[a as usize], points[b as usize]))

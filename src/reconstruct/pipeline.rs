@@ -2,13 +2,13 @@
 
 use super::curves;
 use super::detours::{repair_detours, Repair};
-use super::ears::{repair_ears, Ears};
+use super::ears::{drop_islets, repair_ears, Ears};
 use super::extract::{chain_edges, medial_axis, wdm_crust_edges};
 use super::medial_axis::pruned_medial_axis;
 use super::options::{Algorithm, MedialAxisMode, Options};
 use super::peel::{hole_edges, parity_inside, peel, Peeling};
 use super::result::{untouched_points, MedialAxis, Reconstruction};
-use super::wdm::{self, Label};
+use super::wdm::{self, Label, LabelRule};
 use super::{crust, nn_crust};
 use crate::delaunay::{triangulate, Triangulation};
 use crate::error::Error;
@@ -127,6 +127,11 @@ pub fn reconstruct_observed(
         } else {
             let mut edges = wdm_crust_edges(&vor, &labels);
             repair_ears(&vor, &mut labels, &mut edges, Ears::Rejoin);
+            // The C++ convention leaves islets on clean samples too (ε = 1.2): its reading,
+            // which the variants compare, stays as it is.
+            if options.label_rule() != LabelRule::Complement {
+                drop_islets(&vor, &mut labels, &mut edges);
+            }
             edges
         };
         let first_pass_len = edges.len();
@@ -312,7 +317,9 @@ mod tests {
                 // The ear repair on local edges; its labels then give the same edges through
                 // the public view.
                 let mut local = wdm_crust_edges(&vor, &labels);
-                let repaired = repair_ears(&vor, &mut labels, &mut local, Ears::Rejoin);
+                let repaired = repair_ears(&vor, &mut labels, &mut local, Ears::Rejoin)
+                    + drop_islets(&vor, &mut labels, &mut local);
+                assert_eq!(options.label_rule(), LabelRule::WaterReached);
                 ears_repaired += usize::from(repaired > 0);
                 assert_eq!(rec.labels(), &labels[..], "round {round}");
                 let first_pass = public_crust_edges(&vor, &labels);

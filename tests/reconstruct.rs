@@ -514,12 +514,13 @@ fn outlier_row(percent: f64, seed: u64) -> OutlierRow {
 fn the_detour_repair_reattaches_stretches_and_leaves_most_far_outliers_unassigned() {
     let row = outlier_row(10.0, 400);
     let [repair, plain, crust] = [0, 1, 2];
-    // Measured: repair 0.973 / 0.946, no repair 0.942 / 0.936, crust 0.978 / 0.932 (the
-    // repair after peeling instead of before: 0.962 / 0.938).
+    // Measured: repair 0.980 / 0.960, no repair 0.942 / 0.936, crust 0.978 / 0.932 (before
+    // woven spikes were dropped, step 4 of the repair: 0.973 / 0.946; the repair after
+    // peeling instead of before: 0.962 / 0.938).
     assert!(row.recall[repair] > row.recall[plain] + 0.015);
     assert!(row.precision[repair] > row.precision[plain]);
     assert!(row.precision[repair] > row.precision[crust]);
-    assert!(row.recall[repair] > row.recall[crust] - 0.02);
+    assert!(row.recall[repair] >= row.recall[crust]);
     assert!(row.far_outliers > 50);
     // Measured: 0 of 59 (5 of 59, from later peeling passes, while the repair ran after
     // peeling).
@@ -530,21 +531,23 @@ fn the_detour_repair_reattaches_stretches_and_leaves_most_far_outliers_unassigne
     );
 }
 
-/// The 40 % and 70 % rows: outliers inside the shape link the skipped stretches into large
-/// groups and detours run through up to a dozen outliers; the bottleneck path, the longest-
-/// edge test and the rounds of the repair bring recall close to the crust's, with precision
-/// above it. Measured, recall / precision: 40 % 0.899 / 0.813 (no repair 0.742 / 0.724,
-/// crust 0.914 / 0.727; before the bottleneck path and the rounds 0.822 / 0.767); 70 %
-/// 0.809 / 0.680 (0.626 / 0.576, crust 0.824 / 0.549). Far outliers on a curve: 17 of 214
-/// at 40 %, 20 of 366 at 70 % (33 and 58 while the repair ran after peeling, 53 of 214
-/// before the bottleneck path).
+/// The 20 %, 40 % and 70 % rows: outliers inside the shape link the skipped stretches into
+/// large groups and detours run through up to a dozen outliers; the bottleneck path, the
+/// longest-edge test, the rounds of the repair and the woven spikes bring recall to the
+/// crust's or above, with precision far above it. Measured, recall / precision: 20 % 0.957 /
+/// 0.916 (crust 0.950 / 0.857; before the spikes 0.945 / 0.892); 40 % 0.922 / 0.854 (no
+/// repair 0.742 / 0.724, crust 0.914 / 0.727; before the spikes 0.899 / 0.813, before the
+/// bottleneck path and the rounds 0.822 / 0.767); 70 % 0.826 / 0.707 (no repair 0.626 /
+/// 0.576, crust 0.824 / 0.549; before the spikes 0.809 / 0.680). Far outliers on a curve:
+/// 2 of 107 at 20 %, 17 of 214 at 40 %, 18 of 366 at 70 % (33 and 58 while the repair ran after peeling, 53 of
+/// 214 before the bottleneck path; 20 of 366 at 70 % before the spikes).
 #[test]
 fn the_detour_repair_brings_recall_near_the_crust_under_many_outliers() {
-    for (percent, seed) in [(40.0, 402), (70.0, 403)] {
+    for (percent, seed) in [(20.0, 401), (40.0, 402), (70.0, 403)] {
         let row = outlier_row(percent, seed);
         let [repair, plain, crust] = [0, 1, 2];
-        assert!(row.recall[repair] > row.recall[plain] + 0.05, "{percent} %");
-        assert!(row.recall[repair] > row.recall[crust] - 0.03, "{percent} %");
+        assert!(row.recall[repair] > row.recall[plain] + 0.01, "{percent} %");
+        assert!(row.recall[repair] >= row.recall[crust], "{percent} %");
         assert!(row.precision[repair] > row.precision[crust], "{percent} %");
         assert!(row.precision[repair] > row.precision[plain], "{percent} %");
         assert!(

@@ -27,8 +27,12 @@
 //!    points become unassigned), the path added; the group's further pairs are tried
 //!    against the edited curves, with the path's points taken.
 //! 3. **Rounds.** A swap frees the detour's points and can complete a stretch that the
-//!    outliers split, so steps 1 and 2 run again on the edited curves, up to [`ROUNDS`]
-//!    times or until a round swaps nothing.
+//!    outliers split, so steps 1 and 2 (and 4) run again on the edited curves, up to
+//!    [`ROUNDS`] times or until a round changes nothing.
+//! 4. **Woven spikes.** At the end of each round, outliers woven into a curve beside a true
+//!    edge (`a → o → b` where the curve runs `a → b`, no sample skipped) are dropped
+//!    (`super::spikes`), when at least [`MIN_UNASSIGNED_FOR_SPIKES`] of the points are
+//!    unassigned.
 //!
 //! A swap keeps every point's degree (the ends keep two edges, the path's points get two, the
 //! detour's none), so it never turns a closed curve into chains or junctions: on noisy samples
@@ -37,13 +41,15 @@
 //! coordinates, as in the NN-crust), edge lengths by its exact length comparison (ties by the
 //! points); the rest is combinatorics on the edges, in an order fixed by the points (local
 //! indices follow the coordinates), so the result depends on neither the input order nor the
-//! thread count. When every point is on a curve (a clean sample) nothing runs.
+//! thread count (step 4 adds angle thresholds in rounded arithmetic, tolerances of its rule
+//! argued in `super::spikes`). When every point is on a curve (a clean sample) nothing runs.
 
 use std::cmp::Reverse;
 use std::collections::{BTreeMap, BTreeSet, BinaryHeap};
 
 use super::curves::Adjacency;
 use super::nn_crust::closer;
+use super::spikes::drop_woven_spikes;
 use crate::kernel::metric::{dot_sign, length_order};
 use crate::kernel::Sign;
 use crate::voronoi::Voronoi;
@@ -63,6 +69,14 @@ const MAX_ANCHORS: usize = 24;
 /// The most rounds of steps 1–2: one reached 85.5 / 73.6 % recall at 40 / 70 % outliers,
 /// three 90.2 / 80.6 %, five 90.2 / 80.4 %.
 const ROUNDS: usize = 3;
+
+/// The least share of unassigned points for step 4 (spikes) to run: a sample with fewer
+/// points off the curves shows no outliers to look for (as one with none: then the repair
+/// does not run at all). It bounds the cost on large, nearly clean inputs (the benches'
+/// noisy curve leaves 3 of 10^6 points off, and its noise of a tenth of a spacing has tens
+/// of turns sharp enough to pass for spikes); 0, 0.5 % and 1 % gave the same rows of
+/// `examples/quality.rs`.
+const MIN_UNASSIGNED_FOR_SPIKES: f64 = 0.01;
 
 /// What the repair changes: edges to add and edges to remove, each sorted.
 pub(super) struct Repair {
@@ -104,6 +118,9 @@ pub(super) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
     let mut named = NeighbourNames::new(vor);
     let mut curves = EditedCurves::new(n, edges);
     let original = on_curve.clone();
+    let mut median = None;
+    let unassigned = on_curve.iter().filter(|&&t| !t).count();
+    let look_for_spikes = unassigned as f64 >= MIN_UNASSIGNED_FOR_SPIKES * n as f64;
     for round in 0..ROUNDS {
         if round > 0 {
             on_curve = curves.on_curve(&original);
@@ -111,6 +128,11 @@ pub(super) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
         let mut swapped = false;
         for group in &stretches(&mut named, &on_curve) {
             swapped |= swap_detours(&mut named, &mut curves, &on_curve, group);
+        }
+        // Step 4: spikes, on the curves as the swaps left them. A dropped spike is
+        // unassigned, and the next round may swap it back in as part of a stretch.
+        if look_for_spikes {
+            swapped |= drop_woven_spikes(vor, &mut curves, &mut median) > 0;
         }
         if !swapped {
             break;
@@ -120,9 +142,9 @@ pub(super) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
 }
 
 /// A swap: the stretch's edges replace the detour's.
-struct Swap {
-    stretch: Vec<[u32; 2]>,
-    detour: Vec<[u32; 2]>,
+pub(super) struct Swap {
+    pub(super) stretch: Vec<[u32; 2]>,
+    pub(super) detour: Vec<[u32; 2]>,
 }
 
 /// A group of step 1 as its edges, sorted.
@@ -353,7 +375,7 @@ fn detour_to(chains: &[Vec<u32>], b: u32) -> Option<Vec<[u32; 2]>> {
 /// The curve edges with the swaps made so far: the original edges, and the current
 /// neighbours of every point a swap touched (a flag per point says which, so that walking
 /// untouched curves costs no lookup).
-struct EditedCurves {
+pub(super) struct EditedCurves {
     original: Adjacency,
     touched: Vec<bool>,
     current: BTreeMap<u32, Vec<u32>>,
@@ -362,7 +384,7 @@ struct EditedCurves {
 }
 
 impl EditedCurves {
-    fn new(n: usize, edges: &[[u32; 2]]) -> Self {
+    pub(super) fn new(n: usize, edges: &[[u32; 2]]) -> Self {
         EditedCurves {
             original: Adjacency::new(n, edges),
             touched: vec![false; n],
@@ -373,7 +395,7 @@ impl EditedCurves {
     }
 
     /// The current curve neighbours of `p`, when there are exactly two.
-    fn two_neighbours(&self, p: u32) -> Option<[u32; 2]> {
+    pub(super) fn two_neighbours(&self, p: u32) -> Option<[u32; 2]> {
         if self.touched[p as usize] {
             match self.current[&p].as_slice() {
                 &[x, y] => Some([x, y]),
@@ -405,7 +427,7 @@ impl EditedCurves {
             .or_insert_with(|| original.neighbours(p).iter().map(|&(_, q)| q).collect())
     }
 
-    fn swap(&mut self, swap: &Swap) {
+    pub(super) fn swap(&mut self, swap: &Swap) {
         for &[a, b] in &swap.detour {
             if !self.added.remove(&[a, b]) {
                 self.removed.insert([a, b]);
@@ -420,7 +442,7 @@ impl EditedCurves {
         }
     }
 
-    fn into_repair(self) -> Repair {
+    pub(super) fn into_repair(self) -> Repair {
         Repair {
             added: self.added.into_iter().collect(),
             removed: self.removed.into_iter().collect(),

@@ -8,7 +8,9 @@
 //!
 //! One module per job, in pipeline order: [`options`](Options) (what is asked), `pipeline`
 //! (the orchestration, top to bottom), [`wdm`] (the water flow), `extract` (crust and medial
-//! axis off the labels), `ears` (small loops hanging off a curve at one point), `peel` (holes), `detours` (outliers the crust ran through), `curves` (assembly), `result` (what is returned);
+//! axis off the labels), `ears` (small loops hanging off a curve at one point), `peel` (holes),
+//! `detours` (outliers the crust ran through), `spikes` (outliers woven into a curve), `curves`
+//! (assembly), `result` (what is returned);
 //! [`crust`] and [`nn_crust`] are the classical baselines on the same exact engine.
 
 pub mod crust;
@@ -25,6 +27,7 @@ mod pipeline;
 pub mod polygons;
 mod result;
 mod segment_walk;
+mod spikes;
 pub mod wdm;
 
 pub use curves::Curve;

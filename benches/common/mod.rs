@@ -4,6 +4,8 @@
 
 use std::f64::consts::TAU;
 
+pub mod baselines;
+
 /// SplitMix64, so the benches need no extra dependency.
 pub struct Rng(u64);
 

@@ -1,0 +1,130 @@
+//! The public `orient2d` / `incircle` against their baselines, timed so that a shared, loaded
+//! machine still gives stable numbers: each predicate runs in a loop of 1024 calls on random
+//! points, the loop is timed 400 times (20 repetitions each), and the best time is kept.
+//! Interference only ever adds time, so the best of many short timings is what the code
+//! costs; the spread between rounds is about 0.01 ns. (Criterion's means, in
+//! `cargo bench --bench pipeline -- predicates/`, move by 5–30 % when other builds run.)
+//!
+//! ```text
+//! cargo run --release --example predicate_timing
+//! ```
+//!
+//! Baselines: the public functions before issue 17 (Shewchuk's filters without an underflow
+//! term, then `robust`), and the `robust` crate itself, compared with zero as its callers do
+//! and classified into a sign as the public functions answer.
+
+#[path = "../benches/common/mod.rs"]
+mod common;
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use common::baselines::{incircle_before_17, orient_before_17, robust_incircle, robust_orient};
+use common::Rng;
+use wdm_crust::predicates::{incircle, incircle_added_slack, orient2d, orient2d_added_slack};
+
+const CALLS: usize = 1024;
+
+/// Nanoseconds per call of the best of 400 timings of `loop_once` (20 loops each).
+fn best_ns(mut loop_once: impl FnMut() -> usize) -> f64 {
+    let mut best = f64::INFINITY;
+    for _ in 0..400 {
+        let start = Instant::now();
+        for _ in 0..20 {
+            black_box(loop_once());
+        }
+        best = best.min(start.elapsed().as_secs_f64() / 20.0);
+    }
+    best * 1e9 / CALLS as f64
+}
+
+fn classified(x: f64) -> u8 {
+    if x > 0.0 {
+        0
+    } else if x < 0.0 {
+        1
+    } else {
+        2
+    }
+}
+
+fn main() {
+    let mut rng = Rng::new(7);
+    let points: Vec<[[f64; 2]; 4]> = (0..CALLS)
+        .map(|_| [0; 4].map(|_| [rng.uniform(), rng.uniform()]))
+        .collect();
+    let quads = black_box(&points);
+    println!("ns per call, random points, best of 400 timings of {CALLS}-call loops");
+    println!("| predicate | public | underflow term added to the bound (`*_added_slack`) | before issue 17 | robust, == 0 | robust, sign |");
+    println!("|---|---:|---:|---:|---:|---:|");
+    for round in 0..3 {
+        let orient = [
+            best_ns(|| {
+                quads
+                    .iter()
+                    .filter(|p| orient2d(p[0], p[1], p[2]) as u8 == 0)
+                    .count()
+            }),
+            best_ns(|| {
+                quads
+                    .iter()
+                    .filter(|p| orient2d_added_slack(p[0], p[1], p[2]) as u8 == 0)
+                    .count()
+            }),
+            best_ns(|| {
+                quads
+                    .iter()
+                    .filter(|p| orient_before_17(p[0], p[1], p[2]) == 0)
+                    .count()
+            }),
+            best_ns(|| {
+                quads
+                    .iter()
+                    .filter(|p| robust_orient(p[0], p[1], p[2]) == 0.0)
+                    .count()
+            }),
+            best_ns(|| {
+                quads
+                    .iter()
+                    .filter(|p| classified(robust_orient(p[0], p[1], p[2])) == 0)
+                    .count()
+            }),
+        ];
+        let in_circle = [
+            best_ns(|| {
+                quads
+                    .iter()
+                    .filter(|p| incircle(p[0], p[1], p[2], p[3]) as u8 == 0)
+                    .count()
+            }),
+            best_ns(|| {
+                quads
+                    .iter()
+                    .filter(|p| incircle_added_slack(p[0], p[1], p[2], p[3]) as u8 == 0)
+                    .count()
+            }),
+            best_ns(|| {
+                quads
+                    .iter()
+                    .filter(|p| incircle_before_17(p[0], p[1], p[2], p[3]) == 0)
+                    .count()
+            }),
+            best_ns(|| {
+                quads
+                    .iter()
+                    .filter(|p| robust_incircle(p[0], p[1], p[2], p[3]) == 0.0)
+                    .count()
+            }),
+            best_ns(|| {
+                quads
+                    .iter()
+                    .filter(|p| classified(robust_incircle(p[0], p[1], p[2], p[3])) == 0)
+                    .count()
+            }),
+        ];
+        for (name, row) in [("orient2d", orient), ("incircle", in_circle)] {
+            let cells: Vec<String> = row.iter().map(|t| format!("{t:.3}")).collect();
+            println!("| {name} (round {round}) | {} |", cells.join(" | "));
+        }
+    }
+}

@@ -595,6 +595,17 @@ fn key(a: [f64; 2], b: [f64; 2]) -> ([u64; 2], [u64; 2]) {
     (ka.min(kb), ka.max(kb))
 }
 
+/// The edges of `rec` by their ends' coordinates (the same set in any input order).
+fn edges_of(
+    rec: &wdm_crust::reconstruct::Reconstruction,
+    pts: &[[f64; 2]],
+) -> BTreeSet<([u64; 2], [u64; 2])> {
+    rec.edges()
+        .iter()
+        .map(|&[a, b]| key(pts[a as usize], pts[b as usize]))
+        .collect()
+}
+
 /// Points on the convex curve r = 1 + 0.1 cos 3θ: all on the hull, and the Delaunay
 /// triangulation has a central triangle whose circumcenter is the medial-axis junction.
 fn rounded_triangle(n: usize) -> Vec<[f64; 2]> {
@@ -746,12 +757,6 @@ fn ears_no_longer_split_noisy_curves() {
         )
         .unwrap();
         assert!(first.irregular_points().is_empty(), "seed {seed}");
-        let edges_of = |rec: &wdm_crust::reconstruct::Reconstruction, pts: &[[f64; 2]]| {
-            rec.edges()
-                .iter()
-                .map(|&[a, b]| key(pts[a as usize], pts[b as usize]))
-                .collect::<BTreeSet<_>>()
-        };
         let order = Rng::new(seed).permutation(points.len());
         let shuffled: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
         let again = reconstruct(&shuffled).unwrap();
@@ -789,12 +794,6 @@ fn islets_beside_a_noisy_curve_are_dropped() {
     let rec = reconstruct(&points).unwrap();
     assert_eq!(rec.curves().len(), 2);
     assert!(rec.curves().iter().all(|c| c.closed && c.points.len() >= 7));
-    let edges_of = |rec: &wdm_crust::reconstruct::Reconstruction, pts: &[[f64; 2]]| {
-        rec.edges()
-            .iter()
-            .map(|&[a, b]| key(pts[a as usize], pts[b as usize]))
-            .collect::<BTreeSet<_>>()
-    };
     let order = Rng::new(seed).permutation(points.len());
     let shuffled: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
     let again = reconstruct(&shuffled).unwrap();

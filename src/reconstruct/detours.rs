@@ -581,7 +581,7 @@ impl UnionFind {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::delaunay::triangulate;
     use std::f64::consts::TAU;
@@ -619,7 +619,11 @@ mod tests {
 
     /// Runs the repair on caller-index `edges` and returns the repaired edges, sorted, in
     /// caller indices.
-    fn repaired(points: &[[f64; 2]], edges: &[[u32; 2]]) -> Vec<[u32; 2]> {
+    /// The whole repair on `edges` (caller indices of `points`), sorted.
+    pub(in crate::reconstruct) fn repaired(
+        points: &[[f64; 2]],
+        edges: &[[u32; 2]],
+    ) -> Vec<[u32; 2]> {
         let tri = triangulate(points).unwrap();
         let vor = tri.voronoi();
         let mut local: Vec<[u32; 2]> = edges
@@ -686,7 +690,17 @@ mod tests {
         let points = circle_with(&[out(4.0, 1.7), out(7.0, 1.7), [0.1, 0.1]]);
         let edges = polygon_with_detour(3, 8, &[24, 25]);
         let expected = repaired(&points, &edges);
-        let mut rng = wdm_crust_testkit::Rng::new(5);
+        assert_repaired_alike_in_any_order(&points, &edges, &expected, 5);
+    }
+
+    /// [`repaired`] on ten shuffles of `points` (edges renamed along) gives `expected`.
+    pub(in crate::reconstruct) fn assert_repaired_alike_in_any_order(
+        points: &[[f64; 2]],
+        edges: &[[u32; 2]],
+        expected: &[[u32; 2]],
+        seed: u64,
+    ) {
+        let mut rng = wdm_crust_testkit::Rng::new(seed);
         for _ in 0..10 {
             let order = rng.permutation(points.len());
             // Point `i` of the original is point `position[i]` of the shuffled input.

@@ -244,6 +244,7 @@ fn median_turn(points: &[[f64; 2]], curves: &EditedCurves) -> f64 {
 mod tests {
     use super::*;
     use crate::delaunay::triangulate;
+    use crate::reconstruct::detours::tests::{assert_repaired_alike_in_any_order, repaired};
     use std::f64::consts::TAU;
 
     /// `k` points on the ellipse with half-axes 1 and `b`, counterclockwise from angle 0.
@@ -395,43 +396,10 @@ mod tests {
         order.insert(26, 41);
         order.insert(11, 40);
         let edges = polygon(&order);
-        let repaired_in = |points: &[[f64; 2]], edges: &[[u32; 2]]| -> Vec<[u32; 2]> {
-            let tri = triangulate(points).unwrap();
-            let vor = tri.voronoi();
-            let mut local: Vec<[u32; 2]> = edges
-                .iter()
-                .map(|&[a, b]| edge(tri.local_index(a), tri.local_index(b)))
-                .collect();
-            super::super::detours::repair_detours(&vor, &local).apply(&mut local);
-            let mut caller: Vec<[u32; 2]> = local
-                .iter()
-                .map(|&[a, b]| edge(tri.input_index(a), tri.input_index(b)))
-                .collect();
-            caller.sort_unstable();
-            caller
-        };
-        let expected = repaired_in(&points, &edges);
+        let expected = repaired(&points, &edges);
         let mut clean: Vec<[u32; 2]> = polygon(&(0..40).collect::<Vec<u32>>());
         clean.sort_unstable();
         assert_eq!(expected, clean);
-        let mut rng = wdm_crust_testkit::Rng::new(4);
-        for _ in 0..10 {
-            let shuffle = rng.permutation(points.len());
-            let mut position = vec![0u32; points.len()];
-            for (k, &i) in shuffle.iter().enumerate() {
-                position[i] = k as u32;
-            }
-            let shuffled: Vec<[f64; 2]> = shuffle.iter().map(|&i| points[i]).collect();
-            let renamed: Vec<[u32; 2]> = edges
-                .iter()
-                .map(|&[a, b]| edge(position[a as usize], position[b as usize]))
-                .collect();
-            let mut back: Vec<[u32; 2]> = repaired_in(&shuffled, &renamed)
-                .iter()
-                .map(|&[a, b]| edge(shuffle[a as usize] as u32, shuffle[b as usize] as u32))
-                .collect();
-            back.sort_unstable();
-            assert_eq!(back, expected);
-        }
+        assert_repaired_alike_in_any_order(&points, &edges, &expected, 4);
     }
 }

@@ -52,11 +52,17 @@ pub(super) fn repair_corridors(
         let (p, q) = (points[a as usize], points[b as usize]);
         ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt()
     };
-    let median = median(edges.iter().map(|&e| length(e)).collect());
+    // Squared lengths for the screen, which runs on every first pass (no square roots).
+    let squared = |[a, b]: [u32; 2]| {
+        let (p, q) = (points[a as usize], points[b as usize]);
+        (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)
+    };
+    let mut lengths: Vec<f64> = edges.iter().map(|&e| squared(e)).collect();
+    let bound = CHORD * CHORD * median(&mut lengths);
     let chords: Vec<[u32; 2]> = edges
         .iter()
         .copied()
-        .filter(|&e| length(e) > CHORD * median)
+        .filter(|&e| squared(e) > bound)
         .collect();
     if chords.is_empty() {
         return 0;
@@ -95,8 +101,8 @@ pub(super) fn repair_corridors(
     relabelled
 }
 
-/// The median of `lengths` (0 when empty).
-fn median(mut lengths: Vec<f64>) -> f64 {
+/// The median of `lengths` (0 when empty); reorders them.
+fn median(lengths: &mut [f64]) -> f64 {
     if lengths.is_empty() {
         return 0.0;
     }

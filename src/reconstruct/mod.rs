@@ -8,11 +8,13 @@
 //!
 //! One module per job, in pipeline order: [`options`](Options) (what is asked), `pipeline`
 //! (the orchestration, top to bottom), [`wdm`] (the water flow), `extract` (crust and medial
-//! axis off the labels), `ears` (small loops hanging off a curve at one point), `peel` (holes),
-//! `detours` (outliers the crust ran through), `spikes` (outliers woven into a curve), `curves`
-//! (assembly), `result` (what is returned);
+//! axis off the labels), `corridors` (water that leaked through a gap of a noisy curve),
+//! `ears` (small loops hanging off a curve at one point), `peel` (holes), `detours` (outliers
+//! the crust ran through), `spikes` (outliers woven into a curve), `curves` (assembly),
+//! `result` (what is returned);
 //! [`crust`] and [`nn_crust`] are the classical baselines on the same exact engine.
 
+mod corridors;
 pub mod crust;
 mod curves;
 mod detours;

@@ -1,5 +1,6 @@
 //! The reconstruction, top to bottom: triangulate, dual, label, extract, peel, assemble.
 
+use super::corridors::repair_corridors;
 use super::curves;
 use super::detours::{repair_detours, Repair};
 use super::ears::{drop_islets, repair_ears, Ears};
@@ -126,6 +127,11 @@ pub fn reconstruct_observed(
             chain_edges(&triangulation)
         } else {
             let mut edges = wdm_crust_edges(&vor, &labels);
+            // The widths assume the default reading (outer = wet); the others are compared
+            // as they are.
+            if options.label_rule() == LabelRule::WaterReached {
+                repair_corridors(&vor, &mut labels, &mut edges);
+            }
             repair_ears(&vor, &mut labels, &mut edges, Ears::Rejoin);
             // The C++ convention leaves islets on clean samples too (ε = 1.2): its reading,
             // which the variants compare, stays as it is.
@@ -317,7 +323,8 @@ mod tests {
                 // The ear repair on local edges; its labels then give the same edges through
                 // the public view.
                 let mut local = wdm_crust_edges(&vor, &labels);
-                let repaired = repair_ears(&vor, &mut labels, &mut local, Ears::Rejoin)
+                let repaired = repair_corridors(&vor, &mut labels, &mut local)
+                    + repair_ears(&vor, &mut labels, &mut local, Ears::Rejoin)
                     + drop_islets(&vor, &mut labels, &mut local);
                 assert_eq!(options.label_rule(), LabelRule::WaterReached);
                 ears_repaired += usize::from(repaired > 0);

@@ -102,7 +102,7 @@
 //! superellipse its corner branches); the excess is a matter of noise, so the tolerance for
 //! it is measured from the noise:
 //!
-//! * `η` ([`noise::loop_noise`]) is a length computed from the samples of each closed curve,
+//! * `η` ([`noise::loop_estimates`]) is a length computed from the samples of each closed curve,
 //!   the part of each sample's offset from its neighbours' chord that the neighbours'
 //!   curvature does not explain: about 2σ under Gaussian noise of σ, under a hundredth of
 //!   the spacing on clean evenly spaced samples (unit test). Clean input is pruned as before (the
@@ -136,7 +136,7 @@
 //! 6.4 % of the diameter; at 45° 4.5 %, at 30° 2.5 %. Smaller angles let whiskers through
 //! on noise, so the smaller angle is given only where there is no noise to grow one.
 //! `η` cannot tell that: it reads the quickly changing curvature of sparse clean corners
-//! as noise. [`noise::loop_oscillation`] can: a smooth curve bends one way between
+//! as noise. [`noise::loop_estimates`] can: a smooth curve bends one way between
 //! inflections, so consecutive offsets of the samples from their neighbours' chords keep
 //! their sign (exactly 0 on a clean convex stretch, however sparse), while noise makes
 //! them anticorrelated (about `σ / spacing`). A leaf is clean when the oscillation at each
@@ -190,7 +190,7 @@ const PRUNE_ANGLE_DEGREES: f64 = 60.0;
 /// module docs).
 const CLEAN_PRUNE_ANGLE_DEGREES: f64 = 30.0;
 
-/// The relative oscillation ([`noise::loop_oscillation`]) below which a face's samples are
+/// The relative oscillation ([`noise::loop_estimates`]) below which a face's samples are
 /// clean: about that of Gaussian noise of 0.02 × the spacing (see the module docs).
 const CLEAN_OSCILLATION: f32 = 0.02;
 
@@ -298,35 +298,28 @@ fn subset_axis(vor: &mut Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
     axis.pruned().into_medial_axis()
 }
 
-/// The noise amplitude ([`noise::loop_noise`]) and the relative oscillation
-/// ([`noise::loop_oscillation`]) at every point of `loops`, by local index (`count` points;
-/// `position` and `local` map a caller index).
+/// The noise amplitude ([`noise::loop_estimates`]) at every point of `loops`, by local
+/// index (`count` points; `position` and `local` map a caller index), negated (its sign bit
+/// set, `-0.0` too) where the samples zig-zag: oscillation at least [`CLEAN_OSCILLATION`].
+/// One `f32` per point, as before the oscillation was read (the memory peak).
 fn noise_at_points(
     loops: &[&Curve],
     position: impl Fn(u32) -> [f64; 2],
     local: impl Fn(u32) -> u32,
     count: usize,
-) -> Vec<Noise> {
-    let mut noise = vec![Noise::default(); count];
+) -> Vec<f32> {
+    let mut noise = vec![0.0f32; count];
     for c in loops {
         let points: Vec<[f64; 2]> = c.points.iter().map(|&i| position(i)).collect();
-        let amplitudes = noise::loop_noise(&points);
-        let oscillations = noise::loop_oscillation(&points);
-        for ((&i, amplitude), oscillation) in c.points.iter().zip(amplitudes).zip(oscillations) {
-            noise[local(i) as usize] = Noise {
-                amplitude: amplitude as f32,
-                oscillation: oscillation as f32,
+        for (&i, estimate) in c.points.iter().zip(noise::loop_estimates(&points)) {
+            noise[local(i) as usize] = if estimate.oscillation >= CLEAN_OSCILLATION {
+                -estimate.amplitude
+            } else {
+                estimate.amplitude
             };
         }
     }
     noise
-}
-
-/// What the pruning reads of the samples around a point ([`noise`]).
-#[derive(Clone, Copy, Default)]
-struct Noise {
-    amplitude: f32,
-    oscillation: f32,
 }
 
 /// The edges of `loops` as sorted pairs of local indices (`local` maps a caller index).
@@ -490,7 +483,7 @@ impl Graph {
         vor: &Voronoi<'_>,
         inside: &[bool],
         loops: &LoopMarks,
-        noise: &[Noise],
+        noise: &[f32],
         cavity: Option<&Cavity>,
     ) -> Graph {
         let tri = vor.triangulation();
@@ -514,12 +507,12 @@ impl Graph {
         };
         // The slack, or none (`None`) when the face's samples do not zig-zag: clean.
         let slack = |sites: &mut dyn Iterator<Item = u32>| {
-            let (amplitude, oscillation) = sites
+            let (amplitude, noisy) = sites
                 .map(|p| noise[p as usize])
-                .fold((0.0f32, 0.0f32), |(a, o), n| {
-                    (a.max(n.amplitude), o.max(n.oscillation))
+                .fold((0.0f32, false), |(a, noisy), n| {
+                    (a.max(n.abs()), noisy || n.is_sign_negative())
                 });
-            (oscillation >= CLEAN_OSCILLATION).then_some(NOISE_TOLERANCE as f32 * amplitude)
+            noisy.then_some(NOISE_TOLERANCE as f32 * amplitude)
         };
         let mut used = Vec::new();
         let mut edges = Vec::new();

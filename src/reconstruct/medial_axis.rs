@@ -45,6 +45,8 @@
 //!
 //!    (`η_u` the largest noise amplitude, estimated from the curve samples alone by
 //!    [`noise`], among the points of `u`'s face; [`NOISE_TOLERANCE`], [`NOISE_RADIUS_RATIO`]).
+//!    A *clean* leaf, one whose face's samples do not zig-zag (see "Clean leaves" below),
+//!    is tested at `θ` = [`CLEAN_PRUNE_ANGLE_DEGREES`] (30°) instead, without the slack.
 //!    A leaf whose circumcenter lies beyond one of
 //!    its own curve edges (an obtuse triangle on the curve: its ball is no ball of the shape)
 //!    always goes. The last
@@ -82,7 +84,8 @@
 //! alone left whiskers on the narrow arms of a star, which the noise slack below removes.
 //! At 45° with the slack the superellipse's corners keep more (trunk gap 4.5 % instead of
 //! 6.4 %, still not 3 %) but whiskers come back at 0.3 × the spacing (8 of 12 trials of
-//! the two shapes within 3 % at `k = 8`, 10 of 12 at `k = 14`), so 60° stays. (Also measured and left: a second, wider
+//! the two shapes within 3 % at `k = 8`, 10 of 12 at `k = 14`), so 60° stays for leaves
+//! on noisy samples and clean ones get 30° ("Clean leaves" below). (Also measured and left: a second, wider
 //! angle for branches bounded by at most 4–6 curve edges removed the star's whiskers but cut
 //! the smooth ends of sparse clean samples, which have that few samples there.)
 //!
@@ -99,7 +102,7 @@
 //! superellipse its corner branches); the excess is a matter of noise, so the tolerance for
 //! it is measured from the noise:
 //!
-//! * `η` ([`noise::loop_noise`]) is a length computed from the samples of each closed curve,
+//! * `η` ([`noise::loop_estimates`]) is a length computed from the samples of each closed curve,
 //!   the part of each sample's offset from its neighbours' chord that the neighbours'
 //!   curvature does not explain: about 2σ under Gaussian noise of σ, under a hundredth of
 //!   the spacing on clean evenly spaced samples (unit test). Clean input is pruned as before (the
@@ -126,14 +129,40 @@
 //!   and 23 segments), and capping the slack at the leaf's own radius (the mushroom kept
 //!   its 27 segments, but hooks came back: two shapes 7/12, star 10/12, hole 10/12).
 //!
+//! # Clean leaves
+//!
+//! At 60° the rounded corners of a superellipse (p = 4) lose their branches where the
+//! object angle falls below 60° while the radius is still large: the clean trunk gap was
+//! 6.4 % of the diameter; at 45° 4.5 %, at 30° 2.5 %. Smaller angles let whiskers through
+//! on noise, so the smaller angle is given only where there is no noise to grow one.
+//! `η` cannot tell that: it reads the quickly changing curvature of sparse clean corners
+//! as noise. [`noise::loop_estimates`] can: a smooth curve bends one way between
+//! inflections, so consecutive offsets of the samples from their neighbours' chords keep
+//! their sign (exactly 0 on a clean convex stretch, however sparse), while noise makes
+//! them anticorrelated (about `σ / spacing`). A leaf is clean when the oscillation at each
+//! of its face's points is below [`CLEAN_OSCILLATION`] = 0.02, about that of noise of
+//! 0.02 × the spacing; a whisker needs noise, so its leaf is never clean, and a branch of a
+//! clean leaf is a branch of the shape, kept down to 30°. Clean leaves get no slack either
+//! (there is no noise to tolerate).
+//!
+//! Measured on the six shapes (`tests/medial_axis.rs`): the threshold at 0.015, 0.02 and
+//! 0.03 leaves every noisy row as it was in every digit and takes the clean superellipse's
+//! trunk gap from 6.4 % to 2.5 % (the other clean shapes' smooth ends keep more too: ellipse
+//! 2.7 → 1.3 %, star 1.9 → 0.8 %); at 0.06 whiskers come through at σ = 0.1 × the spacing
+//! (star 9/12, ellipse and star 6/12 within 3 %, worst 6 %). Measured before and not kept:
+//! the angle chosen by `η < τ·r` (the corners look noisy to `η`) and protecting leaves
+//! whose dual Delaunay edge cuts off at least 4 or 6 loop samples (the superellipse gap
+//! unchanged, precision under noise collapsed). The README's mushroom does not gain its
+//! brim branches back: hand-digitised samples zig-zag, so its leaves count as noisy.
+//!
 //! # Exactness
 //!
 //! The subset's triangles (the cavity's walk and its in-circle tests), its merged faces,
 //! the parity and the "beyond its own edge" test (`orient2d_circumcenter`) are exact, as
 //! everywhere in the crate. The coverage test compares lengths computed from the
-//! circumcenters rounded to `f64`, and the noise slack is an `f64` estimate: the angle and
-//! the slack are tolerances of the *rule* (a branch at 59.9999° or 60.0001° is equally a
-//! whisker), and the rounding moves the decision only for balls within about `10⁻¹⁵`
+//! circumcenters rounded to `f64`, and the noise slack and the oscillation are `f64`
+//! estimates: the angles, the slack and the clean threshold are tolerances of the *rule*
+//! (a branch at 59.9999° or 60.0001° is equally a whisker), and the rounding moves the decision only for balls within about `10⁻¹⁵`
 //! (relative) of the threshold. The order of the removals, and every tie, is decided by radius and then by
 //! coordinates, so the result depends on the points, never on their order.
 
@@ -156,6 +185,19 @@ use crate::voronoi::{rounded_circumcenter, smallest_corner, EdgeEnd, Voronoi};
 /// The object angle `θ` of the pruning rule: a leaf is removed when some ball near it grows
 /// out of its ball at least at the rate `cos(θ/2)` of the distance (see the module docs).
 const PRUNE_ANGLE_DEGREES: f64 = 60.0;
+
+/// The object angle of the rule for a leaf whose samples do not zig-zag ([`CLEAN_OSCILLATION`]):
+/// no noise there can grow a whisker, so only branches narrower than this go (see the
+/// module docs).
+const CLEAN_PRUNE_ANGLE_DEGREES: f64 = 30.0;
+
+/// The relative oscillation ([`noise::loop_estimates`]) below which a face's samples are
+/// clean: about that of Gaussian noise of 0.02 × the spacing (see the module docs).
+const CLEAN_OSCILLATION: f32 = 0.02;
+
+/// The `slack` of a clean ball ([`Ball`]): the angle [`CLEAN_PRUNE_ANGLE_DEGREES`] applies,
+/// and no noise slack.
+const CLEAN: f32 = -1.0;
 
 /// How many vertices (along its branch, then beyond the junction) a leaf is compared with.
 const NEIGHBOURHOOD: usize = 64;
@@ -257,8 +299,10 @@ fn subset_axis(vor: &mut Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
     axis.pruned().into_medial_axis()
 }
 
-/// The noise amplitude ([`noise::loop_noise`]) at every point of `loops`, by local index
-/// (`count` points; `position` and `local` map a caller index).
+/// The noise amplitude ([`noise::loop_estimates`]) at every point of `loops`, by local
+/// index (`count` points; `position` and `local` map a caller index), negated (its sign bit
+/// set, `-0.0` too) where the samples zig-zag: oscillation at least [`CLEAN_OSCILLATION`].
+/// One `f32` per point, as before the oscillation was read (the memory peak).
 fn noise_at_points(
     loops: &[&Curve],
     position: impl Fn(u32) -> [f64; 2],
@@ -268,8 +312,12 @@ fn noise_at_points(
     let mut noise = vec![0.0f32; count];
     for c in loops {
         let points: Vec<[f64; 2]> = c.points.iter().map(|&i| position(i)).collect();
-        for (&i, amplitude) in c.points.iter().zip(noise::loop_noise(&points)) {
-            noise[local(i) as usize] = amplitude as f32;
+        for (&i, estimate) in c.points.iter().zip(noise::loop_estimates(&points)) {
+            noise[local(i) as usize] = if estimate.oscillation >= CLEAN_OSCILLATION {
+                -estimate.amplitude
+            } else {
+                estimate.amplitude
+            };
         }
     }
     noise
@@ -420,7 +468,8 @@ struct Ball {
     /// Distance from the rounded circumcenter to a corner of the face.
     radius: f64,
     /// How far the ball may stick out of a ball that covers it: [`NOISE_TOLERANCE`] × the
-    /// largest noise amplitude among the face's points.
+    /// largest noise amplitude among the face's points; [`CLEAN`] (negative) when none of
+    /// them zig-zags.
     slack: f32,
     /// Whether the circumcenter lies beyond one of the face's own loop edges, outside the
     /// region (an obtuse triangle on the curve): its ball is no ball of the shape.
@@ -457,9 +506,14 @@ impl Graph {
             vor.vertex_edges_local(v)
                 .any(|edge| beyond_edge(edge.halfedge as usize, face))
         };
+        // The slack, or none (`None`) when the face's samples do not zig-zag: clean.
         let slack = |sites: &mut dyn Iterator<Item = u32>| {
-            let most = sites.map(|p| noise[p as usize]).fold(0.0f32, f32::max);
-            NOISE_TOLERANCE as f32 * most
+            let (amplitude, noisy) = sites
+                .map(|p| noise[p as usize])
+                .fold((0.0f32, false), |(a, noisy), n| {
+                    (a.max(n.abs()), noisy || n.is_sign_negative())
+                });
+            noisy.then_some(NOISE_TOLERANCE as f32 * amplitude)
         };
         let mut used = Vec::new();
         let mut edges = Vec::new();
@@ -510,7 +564,7 @@ impl Graph {
                 Ball {
                     centre,
                     radius: distance(centre, face[smallest_corner(face)]),
-                    slack: slack(&mut vor.vertex_sites_local(v)),
+                    slack: slack(&mut vor.vertex_sites_local(v)).unwrap_or(CLEAN),
                     beyond: beyond(v),
                 }
             } else {
@@ -520,7 +574,7 @@ impl Graph {
                 Ball {
                     centre,
                     radius: distance(centre, face[smallest_corner(face)]),
-                    slack: slack(&mut new_triangles[k].iter().copied()),
+                    slack: slack(&mut new_triangles[k].iter().copied()).unwrap_or(CLEAN),
                     beyond: new_beyond[k],
                 }
             }
@@ -568,7 +622,10 @@ impl Graph {
 
     /// Removes leaves by the rule of the module docs.
     fn pruned(mut self) -> Graph {
-        let scale = 1.0 / (PRUNE_ANGLE_DEGREES.to_radians() / 2.0).cos();
+        let scale = [
+            1.0 / (PRUNE_ANGLE_DEGREES.to_radians() / 2.0).cos(),
+            1.0 / (CLEAN_PRUNE_ANGLE_DEGREES.to_radians() / 2.0).cos(),
+        ];
         let mut tree = Pruning::new(&self);
         let mut waiting = Waiting::new(self.ball.len());
         let mut queue = std::collections::VecDeque::new();
@@ -613,11 +670,14 @@ impl Graph {
     /// Whether the ball of `w` covers `u`'s: `s·B_u ⊂ s·B_w` (the ball of `w` is at least
     /// as far ahead of `u`'s, in radius, as `1/s` of the distance between their centres), or
     /// `B_w` is at least [`NOISE_RADIUS_RATIO`] times larger and `B_u` sticks out of it by
-    /// no more than `u`'s noise slack.
-    fn covers(&self, w: u32, u: u32, scale: f64) -> bool {
+    /// no more than `u`'s noise slack. `scale`: `s` for noisy leaves, then for clean ones.
+    fn covers(&self, w: u32, u: u32, scale: [f64; 2]) -> bool {
         let (u, w) = (&self.ball[u as usize], &self.ball[w as usize]);
         let (apart, gain) = (distance(u.centre, w.centre), w.radius - u.radius);
-        apart <= scale * gain
+        if u.slack < 0.0 {
+            return apart <= scale[1] * gain;
+        }
+        apart <= scale[0] * gain
             || (w.radius >= NOISE_RADIUS_RATIO * u.radius && apart - gain <= f64::from(u.slack))
     }
 

@@ -26,12 +26,14 @@ use crate::reconstruct::lengths::distance;
 /// Samples on either side of a sample that its amplitude averages over.
 const HALF_WINDOW: usize = 3;
 
-/// The noise amplitude at every sample of the closed loop `points` (in loop order), in the
-/// units of the points; zeros when the loop is too short to tell noise from shape.
-pub(super) fn loop_noise(points: &[[f64; 2]]) -> Vec<f64> {
+/// The noise amplitude and the relative oscillation ([`Estimate`]) at every sample of the
+/// closed loop `points` (in loop order); zeros when the loop is too short to tell noise
+/// from shape. Computed together: they share the edges and the curvatures, and the
+/// temporaries are those of the amplitude alone (the memory peak of the pruned axis).
+pub(super) fn loop_estimates(points: &[[f64; 2]]) -> Vec<Estimate> {
     let n = points.len();
     if n < 2 * HALF_WINDOW + 3 {
-        return vec![0.0; n];
+        return vec![Estimate::default(); n];
     }
     let at = |i: usize, k: isize| (i as isize + k).rem_euclid(n as isize) as usize;
     // `edge[i]` = |p_i p_i+1|, computed once for both samples it is an arm of (`hypot`, which
@@ -40,7 +42,7 @@ pub(super) fn loop_noise(points: &[[f64; 2]]) -> Vec<f64> {
         .map(|i| distance(points[i], points[at(i, 1)]))
         .collect();
     let arms = |i: usize| edge[at(i, -1)] * edge[i];
-    let curvature: Vec<f64> = (0..n)
+    let mut curvature: Vec<f64> = (0..n)
         .map(|i| {
             let (a, b, c) = (points[at(i, -1)], points[i], points[at(i, 1)]);
             signed_curvature(a, b, c, arms(i) * distance(a, c))
@@ -54,6 +56,19 @@ pub(super) fn loop_noise(points: &[[f64; 2]]) -> Vec<f64> {
             psi * psi
         })
         .collect();
+    // The curvatures become, in place, the offsets `d_i = κ_i·a·c/2` from the neighbours'
+    // chords (negated exactly when the loop is reversed), then `zig[i]`, of the pair
+    // `i, i + 1` (the product of two offsets is not negated).
+    let zig = &mut curvature;
+    for (i, d) in zig.iter_mut().enumerate() {
+        *d *= arms(i) / 2.0;
+    }
+    let first = zig[0];
+    for i in 0..n {
+        let next = if i + 1 < n { zig[i + 1] } else { first };
+        zig[i] = (-zig[i] * next).max(0.0);
+    }
+    let pairs = (2 * HALF_WINDOW) as f64;
     (0..n)
         .map(|i| {
             let mut sum = 0.0;
@@ -61,9 +76,42 @@ pub(super) fn loop_noise(points: &[[f64; 2]]) -> Vec<f64> {
                 // A pair at a time: the same sum whichever way the loop runs.
                 sum += unexplained[at(i, -k)] + unexplained[at(i, k)];
             }
-            ((sum + unexplained[i]) / (2 * HALF_WINDOW + 1) as f64).sqrt()
+            let amplitude = ((sum + unexplained[i]) / (2 * HALF_WINDOW + 1) as f64).sqrt();
+            let (mut zigs, mut edges) = (0.0, 0.0);
+            for k in 0..HALF_WINDOW as isize {
+                // The pairs and edges `i + k` and `i − 1 − k` swap when the loop runs the
+                // other way: summed two at a time, the same value either way.
+                zigs += zig[at(i, k)] + zig[at(i, -1 - k)];
+                edges += edge[at(i, k)] + edge[at(i, -1 - k)];
+            }
+            let oscillation = if edges > 0.0 {
+                (zigs / pairs).sqrt() / (edges / pairs)
+            } else {
+                0.0
+            };
+            Estimate {
+                amplitude: amplitude as f32,
+                oscillation: oscillation as f32,
+            }
         })
         .collect()
+}
+
+/// What the pruning reads of the samples around a point.
+#[derive(Clone, Copy, Default, Debug, PartialEq)]
+pub(super) struct Estimate {
+    /// The noise amplitude: the root mean square of `ψ` over the sample and its
+    /// [`HALF_WINDOW`] neighbours on either side (module docs), in the units of the points.
+    pub(super) amplitude: f32,
+    /// How much the samples zig-zag, relative to their spacing: over the [`HALF_WINDOW`]
+    /// pairs of consecutive samples on either side, the root mean square of
+    /// `sqrt(max(0, −d_j·d_{j+1}))` (`d` the signed offset of a sample from its neighbours'
+    /// chord), divided by the mean edge length there. A smooth curve bends one way between
+    /// inflections, so consecutive offsets have one sign and this is exactly 0 on a clean
+    /// convex stretch however sparse or quickly curving; noise of `σ` makes consecutive
+    /// offsets anticorrelated (correlation −2/3) and reads as about `σ / spacing` (unit
+    /// test).
+    pub(super) oscillation: f32,
 }
 
 /// The signed curvature of the circle through `a`, `b`, `c` (positive when they turn
@@ -84,6 +132,16 @@ fn signed_curvature(a: [f64; 2], b: [f64; 2], c: [f64; 2], lengths: f64) -> f64 
 mod tests {
     use super::*;
     use wdm_crust_testkit::Rng;
+
+    fn loop_noise(points: &[[f64; 2]]) -> Vec<f64> {
+        let estimates = loop_estimates(points);
+        estimates.iter().map(|e| f64::from(e.amplitude)).collect()
+    }
+
+    fn loop_oscillation(points: &[[f64; 2]]) -> Vec<f64> {
+        let estimates = loop_estimates(points);
+        estimates.iter().map(|e| f64::from(e.oscillation)).collect()
+    }
 
     fn ellipse(n: usize, jitter: f64, rng: &mut Rng) -> Vec<[f64; 2]> {
         (0..n)
@@ -115,6 +173,34 @@ mod tests {
         );
     }
 
+    /// Clean samples of a convex curve, however sparse and irregular, do not zig-zag at
+    /// all; Gaussian noise of σ reads as about `σ / spacing` (the pruning's threshold,
+    /// 0.02, is that of σ ≈ 0.02 × the spacing).
+    #[test]
+    fn the_oscillation_tells_noise_from_sparse_curvature() {
+        let mut rng = Rng::new(5);
+        // A superellipse-like squarish loop, 24 irregular samples: its curvature changes
+        // quickly from sample to sample, but keeps its sign.
+        let square: Vec<[f64; 2]> = (0..24)
+            .map(|i| {
+                let t = (i as f64 + 0.4 * rng.f64()) / 24.0 * std::f64::consts::TAU;
+                let (c, s) = (t.cos(), t.sin());
+                [
+                    c.signum() * c.abs().sqrt(),
+                    0.6 * s.signum() * s.abs().sqrt(),
+                ]
+            })
+            .collect();
+        assert!(loop_oscillation(&square).iter().all(|&o| o == 0.0));
+        let n = 300;
+        let spacing = 9.69 / n as f64;
+        for f in [0.1, 0.3] {
+            let noisy = loop_oscillation(&ellipse(n, f * spacing, &mut rng));
+            let mean = noisy.iter().sum::<f64>() / n as f64;
+            assert!((0.7 * f..1.3 * f).contains(&mean), "{mean} at {f}");
+        }
+    }
+
     /// The same values whichever way the loop runs and wherever it starts.
     #[test]
     fn the_amplitude_does_not_depend_on_the_loop_order() {
@@ -125,6 +211,11 @@ mod tests {
         turned.rotate_left(17);
         turned.reverse();
         let mut again = loop_noise(&turned);
+        again.reverse();
+        again.rotate_right(17);
+        assert_eq!(base, again);
+        let base = loop_oscillation(&points);
+        let mut again = loop_oscillation(&turned);
         again.reverse();
         again.rotate_right(17);
         assert_eq!(base, again);

@@ -48,6 +48,9 @@ pub(super) fn repair_corridors(
     edges: &mut Vec<[u32; 2]>,
 ) -> usize {
     let points = &vor.triangulation().points;
+    if every_point_on_two_edges(points.len(), edges) {
+        return 0;
+    }
     let length = |[a, b]: [u32; 2]| {
         let (p, q) = (points[a as usize], points[b as usize]);
         ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt()
@@ -99,6 +102,25 @@ pub(super) fn repair_corridors(
     }
     *edges = wdm_crust_edges(vor, labels);
     relabelled
+}
+
+/// Whether every point lies on exactly two of `edges`: the crust is then closed curves
+/// through every sample, and no water leaked through a gap (a corridor strands the samples of
+/// the hole beyond it). Such a first pass is left as it is, which also keeps the widths off
+/// clean samples whose spacing varies (random parameters: crust edges of 4 median ones are
+/// common there, and the widths cost 0.16 s at 10^6 points, measured).
+fn every_point_on_two_edges(point_count: usize, edges: &[[u32; 2]]) -> bool {
+    if edges.len() != point_count {
+        return false;
+    }
+    let mut degree = vec![0u8; point_count];
+    for &[a, b] in edges {
+        for p in [a, b] {
+            let d = &mut degree[p as usize];
+            *d = d.saturating_add(1);
+        }
+    }
+    degree.iter().all(|&d| d == 2)
 }
 
 /// The median of `lengths` (0 when empty); reorders them.

@@ -740,12 +740,7 @@ fn a_noisy_hole_stays_a_closed_curve() {
 #[test]
 fn ears_no_longer_split_noisy_curves() {
     let star = vec![Star { a: 0.25, k: 5 }.dense(200)];
-    let annulus = vec![
-        Ellipse { a: 1.5, b: 1.0 }.dense(200),
-        Ellipse::circle(0.4)
-            .dense(64)
-            .transformed(&Similarity::translation([0.3, 0.0])),
-    ];
+    let annulus = noise_failures_annulus();
     for (curves, seed) in [(&star, 25), (&star, 48), (&star, 87), (&annulus, 8)] {
         let points = noisy_sample(curves, 1.0, &mut Rng::new(seed * 7919 + 1));
         let rec = reconstruct(&points).unwrap();
@@ -776,12 +771,7 @@ fn ears_no_longer_split_noisy_curves() {
 /// peeling adds the hole, and the result does not depend on the input order.
 #[test]
 fn islets_beside_a_noisy_curve_are_dropped() {
-    let annulus = vec![
-        Ellipse { a: 1.5, b: 1.0 }.dense(200),
-        Ellipse::circle(0.4)
-            .dense(64)
-            .transformed(&Similarity::translation([0.3, 0.0])),
-    ];
+    let annulus = noise_failures_annulus();
     let seed = 250;
     let points = noisy_sample(&annulus, 1.0, &mut Rng::new(seed * 7919 + 1));
     let first = reconstruct_with(
@@ -799,6 +789,16 @@ fn islets_beside_a_noisy_curve_are_dropped() {
     let shuffled: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
     let again = reconstruct(&shuffled).unwrap();
     assert_eq!(edges_of(&again, &shuffled), edges_of(&rec, &points));
+}
+
+/// The ellipse with a hole of `examples/noise_failures.rs` (200 and 64 samples).
+fn noise_failures_annulus() -> Vec<DenseCurve> {
+    vec![
+        Ellipse { a: 1.5, b: 1.0 }.dense(200),
+        Ellipse::circle(0.4)
+            .dense(64)
+            .transformed(&Similarity::translation([0.3, 0.0])),
+    ]
 }
 
 /// Unassigned points: sorted, distinct, on no edge; duplicates are not listed.
@@ -830,12 +830,7 @@ fn unassigned_points_are_the_points_on_no_curve() {
 /// the hole, and the result does not depend on the input order.
 #[test]
 fn corridors_into_a_hole_are_closed_off() {
-    let annulus = vec![
-        Ellipse { a: 1.5, b: 1.0 }.dense(200),
-        Ellipse::circle(0.4)
-            .dense(64)
-            .transformed(&Similarity::translation([0.3, 0.0])),
-    ];
+    let annulus = noise_failures_annulus();
     // The hole's samples lie within 0.2 of its circle (five standard deviations); the outer
     // curve is 0.6 or more away from its centre.
     let in_hole = |p: [f64; 2]| (p[0] - 0.3).hypot(p[1]) < 0.65;

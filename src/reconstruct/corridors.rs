@@ -29,6 +29,7 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
+use super::ears::degrees;
 use super::extract::wdm_crust_edges;
 use super::wdm::Label;
 use crate::delaunay::NO_TWIN;
@@ -110,17 +111,7 @@ pub(super) fn repair_corridors(
 /// clean samples whose spacing varies (random parameters: crust edges of 4 median ones are
 /// common there, and the widths cost 0.16 s at 10^6 points, measured).
 fn every_point_on_two_edges(point_count: usize, edges: &[[u32; 2]]) -> bool {
-    if edges.len() != point_count {
-        return false;
-    }
-    let mut degree = vec![0u8; point_count];
-    for &[a, b] in edges {
-        for p in [a, b] {
-            let d = &mut degree[p as usize];
-            *d = d.saturating_add(1);
-        }
-    }
-    degree.iter().all(|&d| d == 2)
+    edges.len() == point_count && degrees(point_count, edges).iter().all(|&d| d == 2)
 }
 
 /// The median of `lengths` (0 when empty); reorders them.

@@ -222,7 +222,7 @@ fn small_loops(point_count: usize, edges: &[[u32; 2]]) -> Vec<Vec<u32>> {
 
 /// The crust degree of every point (saturating at 255). Degrees are even: the labels change an
 /// even number of times around a cell.
-fn degrees(point_count: usize, edges: &[[u32; 2]]) -> Vec<u8> {
+pub(super) fn degrees(point_count: usize, edges: &[[u32; 2]]) -> Vec<u8> {
     let mut degree = vec![0u8; point_count];
     for &[a, b] in edges {
         degree[a as usize] = degree[a as usize].saturating_add(1);

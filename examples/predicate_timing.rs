@@ -9,6 +9,10 @@
 //! cargo run --release --example predicate_timing
 //! ```
 //!
+//! In-circle is also timed on the tests a Delaunay triangulation of curve samples makes (each
+//! interior edge: its triangle and the opposite point; the Voronoi dual and `validate` make
+//! exactly these): thin, nearly cocircular quadruples, where the filters decline more often.
+//!
 //! Baselines: the public functions before issue 17 (Shewchuk's filters without an underflow
 //! term, then `robust`), and the `robust` crate itself, compared with zero as its callers do
 //! and classified into a sign as the public functions answer.
@@ -20,7 +24,7 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use common::baselines::{incircle_before_17, orient_before_17, robust_incircle, robust_orient};
-use common::Rng;
+use common::{PointSet, Rng};
 use wdm_crust::predicates::{incircle, incircle_added_slack, orient2d, orient2d_added_slack};
 
 const CALLS: usize = 1024;
@@ -46,6 +50,62 @@ fn classified(x: f64) -> u8 {
     } else {
         2
     }
+}
+
+/// `count` in-circle tests of the Delaunay triangulation of `points`, spread over all of
+/// them: each interior edge's triangle and the point opposite it.
+fn delaunay_tests(points: &[[f64; 2]], count: usize) -> Vec<[[f64; 2]; 4]> {
+    let tri = wdm_crust::triangulate(points).expect("valid points");
+    let twins = tri.halfedges();
+    let tests: Vec<[[f64; 2]; 4]> = (0..twins.len())
+        .filter(|&e| twins[e] != u32::MAX && (twins[e] as usize) > e)
+        .map(|e| {
+            let twin = twins[e] as usize;
+            let opposite = tri.point(tri.halfedge_origin(twin / 3 * 3 + (twin + 2) % 3));
+            let [a, b, c] = tri.triangle_points(e / 3);
+            [a, b, c, opposite]
+        })
+        .collect();
+    let step = (tests.len() / count).max(1);
+    tests.into_iter().step_by(step).take(count).collect()
+}
+
+/// A five-armed star sampled at uniformly random parameters (uneven spacing, thin triangles).
+fn random_parameter_star(n: usize, rng: &mut Rng) -> Vec<[f64; 2]> {
+    (0..n)
+        .map(|_| {
+            let t = rng.uniform() * std::f64::consts::TAU;
+            let r = 1.0 + 0.5 * (5.0 * t).cos();
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect()
+}
+
+/// One row per timing: the public `incircle`, the pre-17 one and `robust`, on `quads`.
+fn time_incircle(name: &str, quads: &[[[f64; 2]; 4]]) {
+    let quads = black_box(quads);
+    let row = [
+        best_ns(|| {
+            quads
+                .iter()
+                .filter(|p| incircle(p[0], p[1], p[2], p[3]) as u8 == 0)
+                .count()
+        }),
+        best_ns(|| {
+            quads
+                .iter()
+                .filter(|p| incircle_before_17(p[0], p[1], p[2], p[3]) == 0)
+                .count()
+        }),
+        best_ns(|| {
+            quads
+                .iter()
+                .filter(|p| classified(robust_incircle(p[0], p[1], p[2], p[3])) == 0)
+                .count()
+        }),
+    ];
+    let cells: Vec<String> = row.iter().map(|t| format!("{t:.3}")).collect();
+    println!("| {name} | {} |", cells.join(" | "));
 }
 
 fn main() {
@@ -126,5 +186,21 @@ fn main() {
             let cells: Vec<String> = row.iter().map(|t| format!("{t:.3}")).collect();
             println!("| {name} (round {round}) | {} |", cells.join(" | "));
         }
+    }
+    println!();
+    println!("in-circle on the Delaunay tests of curve samples ({CALLS} tests from 2^16 points)");
+    println!("| tests | public | before issue 17 | robust, sign |");
+    println!("|---|---:|---:|---:|");
+    let star = random_parameter_star(1 << 16, &mut rng);
+    let even = PointSet::Curve.points(1 << 16, 7);
+    for round in 0..2 {
+        time_incircle(
+            &format!("star, random parameters (round {round})"),
+            &delaunay_tests(&star, CALLS),
+        );
+        time_incircle(
+            &format!("benches' curve set (round {round})"),
+            &delaunay_tests(&even, CALLS),
+        );
     }
 }

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Issue 14's checks for a many-core machine (the `device` tool's 16-core machine; see
+# ../.library/device/README.md): parallel scaling of the triangulation and the whole
+# reconstruction at 10^7, and 10^8 points, in one run of about 7 minutes.
+#
+# The machine has no network and no Rust toolchain is assumed there: build here, carry the
+# binary in an ignored folder, then run this script there.
+#
+#   cargo build --release --example stress
+#   mkdir -p .device-bin && cp target/release/examples/stress .device-bin/
+#   grep -qx '/.device-bin/' .git/info/exclude || echo /.device-bin/ >> .git/info/exclude
+#   device run: command "bash scripts/device-scaling.sh", carry [".device-bin"], timeout_s 600
+#
+# Everything goes to standard output and to $OUT/scaling.txt (set by the device tool; a
+# temporary folder elsewhere). Each run has its own time limit, so one slow run cannot take
+# the rest with it. Compare thread counts within this one run: the machine is shared.
+set -u
+bin=${STRESS_BIN:-.device-bin/stress}
+out=${OUT:-$(mktemp -d)}
+mkdir -p "$out"
+log="$out/scaling.txt"
+: >"$log"
+
+# `run LIMIT THREADS ARGS…`: one stress run with RAYON_NUM_THREADS=THREADS.
+run() {
+    local limit=$1 threads=$2
+    shift 2
+    echo "## threads $threads: stress $*" | tee -a "$log"
+    RAYON_NUM_THREADS=$threads timeout "$limit" "$bin" "$@" 2>&1 | tee -a "$log"
+    echo "(exit ${PIPESTATUS[0]})" | tee -a "$log"
+}
+
+{ nproc; grep -m1 'model name' /proc/cpuinfo; free -g | head -2; } 2>&1 | tee -a "$log"
+
+# Item 2: the triangulation on 1..16 threads (target >= 6x at 16), same points each time.
+for threads in 1 2 4 8 16; do
+    run 60 "$threads" curve 10000000 points,triangulate
+done
+run 60 1 uniform 10000000 points,triangulate
+run 60 16 uniform 10000000 points,triangulate
+
+# Item 2: the whole reconstruction (target >= 4x at 16), both curve sets.
+for set in curve even-curve; do
+    run 90 1 "$set" 10000000 reconstruct
+    run 60 16 "$set" 10000000 reconstruct
+done
+
+# Item 3: 10^8 points, triangulated on one thread (n log n flatness) and reconstructed with
+# the default pruned axis on all cores (peak memory per point).
+run 150 1 curve 100000000 points,triangulate
+run 150 16 curve 100000000 reconstruct
+echo "done" | tee -a "$log"

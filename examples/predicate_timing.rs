@@ -42,6 +42,11 @@ fn best_ns(mut loop_once: impl FnMut() -> usize) -> f64 {
     best * 1e9 / CALLS as f64
 }
 
+/// [`best_ns`] of counting the tests among `tests` that `accepts` (every test is run).
+fn per_call<T>(tests: &[T], accepts: impl Fn(&T) -> bool) -> f64 {
+    best_ns(|| tests.iter().filter(|&t| accepts(t)).count())
+}
+
 fn classified(x: f64) -> u8 {
     if x > 0.0 {
         0
@@ -85,23 +90,10 @@ fn random_parameter_star(n: usize, rng: &mut Rng) -> Vec<[f64; 2]> {
 fn time_incircle(name: &str, quads: &[[[f64; 2]; 4]]) {
     let quads = black_box(quads);
     let row = [
-        best_ns(|| {
-            quads
-                .iter()
-                .filter(|p| incircle(p[0], p[1], p[2], p[3]) as u8 == 0)
-                .count()
-        }),
-        best_ns(|| {
-            quads
-                .iter()
-                .filter(|p| incircle_before_17(p[0], p[1], p[2], p[3]) == 0)
-                .count()
-        }),
-        best_ns(|| {
-            quads
-                .iter()
-                .filter(|p| classified(robust_incircle(p[0], p[1], p[2], p[3])) == 0)
-                .count()
+        per_call(quads, |p| incircle(p[0], p[1], p[2], p[3]) as u8 == 0),
+        per_call(quads, |p| incircle_before_17(p[0], p[1], p[2], p[3]) == 0),
+        per_call(quads, |p| {
+            classified(robust_incircle(p[0], p[1], p[2], p[3])) == 0
         }),
     ];
     let cells: Vec<String> = row.iter().map(|t| format!("{t:.3}")).collect();
@@ -119,67 +111,21 @@ fn main() {
     println!("|---|---:|---:|---:|---:|---:|");
     for round in 0..3 {
         let orient = [
-            best_ns(|| {
-                quads
-                    .iter()
-                    .filter(|p| orient2d(p[0], p[1], p[2]) as u8 == 0)
-                    .count()
-            }),
-            best_ns(|| {
-                quads
-                    .iter()
-                    .filter(|p| orient2d_added_slack(p[0], p[1], p[2]) as u8 == 0)
-                    .count()
-            }),
-            best_ns(|| {
-                quads
-                    .iter()
-                    .filter(|p| orient_before_17(p[0], p[1], p[2]) == 0)
-                    .count()
-            }),
-            best_ns(|| {
-                quads
-                    .iter()
-                    .filter(|p| robust_orient(p[0], p[1], p[2]) == 0.0)
-                    .count()
-            }),
-            best_ns(|| {
-                quads
-                    .iter()
-                    .filter(|p| classified(robust_orient(p[0], p[1], p[2])) == 0)
-                    .count()
-            }),
+            per_call(quads, |p| orient2d(p[0], p[1], p[2]) as u8 == 0),
+            per_call(quads, |p| orient2d_added_slack(p[0], p[1], p[2]) as u8 == 0),
+            per_call(quads, |p| orient_before_17(p[0], p[1], p[2]) == 0),
+            per_call(quads, |p| robust_orient(p[0], p[1], p[2]) == 0.0),
+            per_call(quads, |p| classified(robust_orient(p[0], p[1], p[2])) == 0),
         ];
         let in_circle = [
-            best_ns(|| {
-                quads
-                    .iter()
-                    .filter(|p| incircle(p[0], p[1], p[2], p[3]) as u8 == 0)
-                    .count()
+            per_call(quads, |p| incircle(p[0], p[1], p[2], p[3]) as u8 == 0),
+            per_call(quads, |p| {
+                incircle_added_slack(p[0], p[1], p[2], p[3]) as u8 == 0
             }),
-            best_ns(|| {
-                quads
-                    .iter()
-                    .filter(|p| incircle_added_slack(p[0], p[1], p[2], p[3]) as u8 == 0)
-                    .count()
-            }),
-            best_ns(|| {
-                quads
-                    .iter()
-                    .filter(|p| incircle_before_17(p[0], p[1], p[2], p[3]) == 0)
-                    .count()
-            }),
-            best_ns(|| {
-                quads
-                    .iter()
-                    .filter(|p| robust_incircle(p[0], p[1], p[2], p[3]) == 0.0)
-                    .count()
-            }),
-            best_ns(|| {
-                quads
-                    .iter()
-                    .filter(|p| classified(robust_incircle(p[0], p[1], p[2], p[3])) == 0)
-                    .count()
+            per_call(quads, |p| incircle_before_17(p[0], p[1], p[2], p[3]) == 0),
+            per_call(quads, |p| robust_incircle(p[0], p[1], p[2], p[3]) == 0.0),
+            per_call(quads, |p| {
+                classified(robust_incircle(p[0], p[1], p[2], p[3])) == 0
             }),
         ];
         for (name, row) in [("orient2d", orient), ("incircle", in_circle)] {

@@ -158,21 +158,27 @@ const ROW_FLOOR: f64 = 1.1830521861667747e-271;
 /// `2^-950`: the floor of the second stage's permanent.
 const INCIRCLE_PERMANENT_FLOOR: f64 = ORIENT_PERMANENT_FLOOR;
 
+/// The sign of `det` where it exceeds `bound` (which no NaN does), else `exact()`: the
+/// answers branched to straight from the comparisons (an `Option` between filter and exact
+/// stage cost 0.2 ns a call in a loop, measured: the answer was then converted after a join).
+#[inline(always)]
+fn decide(det: f64, bound: f64, exact: impl FnOnce() -> Sign) -> Sign {
+    if det > bound {
+        Sign::Positive
+    } else if -det > bound {
+        Sign::Negative
+    } else {
+        exact()
+    }
+}
+
 /// The sign of the orientation determinant of `a → b → c`: `Positive` iff `c` lies strictly
 /// left of the directed line `a → b` (counterclockwise), `Zero` iff collinear. Any finite
 /// input.
 #[inline(always)]
 pub(crate) fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
     let (det, bound) = orient_floored_bound(a, b, c);
-    // Branches straight to the answers (an `Option` between filter and exact stage cost
-    // 0.2 ns a call in a loop, measured: the answer was then converted after a join).
-    if det > bound {
-        Sign::Positive
-    } else if -det > bound {
-        Sign::Negative
-    } else {
-        exact_orient::<false>(a, b, c)
-    }
+    decide(det, bound, || exact_orient::<false>(a, b, c))
 }
 
 /// The orientation determinant in floating point and its permanent `|left| + |right|`.
@@ -181,21 +187,6 @@ fn orient_terms(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> (f64, f64) {
     let left = (a[0] - c[0]) * (b[1] - c[1]);
     let right = (a[1] - c[1]) * (b[0] - c[0]);
     (left - right, left.abs() + right.abs())
-}
-
-/// [`orient`]'s filter: Shewchuk's bound on `|left + right|` floored at
-/// [`ORIENT_PERMANENT_FLOOR`], one comparison per sign (module docs, "The orientation
-/// filter").
-#[cfg(test)]
-fn orient_filter(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Sign> {
-    let (det, bound) = orient_floored_bound(a, b, c);
-    if det > bound {
-        Some(Sign::Positive)
-    } else if -det > bound {
-        Some(Sign::Negative)
-    } else {
-        None
-    }
 }
 
 /// The orientation determinant and [`orient`]'s bound on it.
@@ -223,13 +214,7 @@ fn orient_floored_bound(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> (f64, f64) {
 #[inline(always)]
 pub(crate) fn orient_in<const IN_RANGE: bool>(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
     let (det, bound) = orient_with_bound::<IN_RANGE>(a, b, c);
-    if det > bound {
-        Sign::Positive
-    } else if -det > bound {
-        Sign::Negative
-    } else {
-        exact_orient::<IN_RANGE>(a, b, c)
-    }
+    decide(det, bound, || exact_orient::<IN_RANGE>(a, b, c))
 }
 
 /// The orientation determinant and Shewchuk's bound, with the underflow term unless
@@ -332,13 +317,7 @@ fn incircle_with_bound<const IN_RANGE: bool>(
 #[inline(always)]
 pub(crate) fn incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Sign {
     let (det, bound) = incircle_pair_bound(a, b, c, d);
-    if det > bound {
-        Sign::Positive
-    } else if -det > bound {
-        Sign::Negative
-    } else {
-        incircle_second_stage(a, b, c, d)
-    }
+    decide(det, bound, || incircle_second_stage(a, b, c, d))
 }
 
 /// Shewchuk's in-circle determinant and the pair bound on its error (module docs, "The
@@ -359,13 +338,7 @@ fn incircle_pair_bound(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> (f
 #[inline(always)]
 fn incircle_second_stage(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Sign {
     let (det, bound) = incircle_floored_permanent_bound(a, b, c, d);
-    if det > bound {
-        Sign::Positive
-    } else if -det > bound {
-        Sign::Negative
-    } else {
-        exact_incircle::<false>(a, b, c, d)
-    }
+    decide(det, bound, || exact_incircle::<false>(a, b, c, d))
 }
 
 /// The in-circle determinant and the second stage's bound: Shewchuk's permanent with
@@ -398,13 +371,7 @@ pub(crate) fn incircle_in<const IN_RANGE: bool>(
     d: [f64; 2],
 ) -> Sign {
     let (det, bound) = incircle_with_bound::<IN_RANGE>(a, b, c, d);
-    if det > bound {
-        Sign::Positive
-    } else if -det > bound {
-        Sign::Negative
-    } else {
-        exact_incircle::<IN_RANGE>(a, b, c, d)
-    }
+    decide(det, bound, || exact_incircle::<IN_RANGE>(a, b, c, d))
 }
 
 /// The exact stage of the in-circle tests, on the points' coordinates.
@@ -582,7 +549,7 @@ mod tests {
             let [a, b, c, d] = [pick(), pick(), pick(), pick()];
             let proven = decided(orient_with_bound::<false>(a, b, c)).is_some();
             orient_proven[tiny] += usize::from(proven);
-            let fast = orient_filter(a, b, c);
+            let fast = decided(orient_floored_bound(a, b, c));
             if let Some(sign) = fast {
                 orient_fast[tiny] += 1;
                 assert!(proven, "{a:?} {b:?} {c:?}");
@@ -671,7 +638,10 @@ mod tests {
             ([-big, big], [big, big], [0.0, 0.0]),
         ];
         for (a, b, c) in opposite {
-            assert_eq!(orient_filter(a, b, c), Some(exact_orient::<false>(a, b, c)));
+            assert_eq!(
+                decided(orient_floored_bound(a, b, c)),
+                Some(exact_orient::<false>(a, b, c))
+            );
         }
         let declined = [
             // Both +inf: NaN determinant.
@@ -687,7 +657,7 @@ mod tests {
         for (a, b, c) in opposite.into_iter().chain(declined) {
             for [p, q, r] in [[a, b, c], [b, c, a], [c, a, b], [b, a, c]] {
                 let exact = exact_orient::<false>(p, q, r);
-                if let Some(sign) = orient_filter(p, q, r) {
+                if let Some(sign) = decided(orient_floored_bound(p, q, r)) {
                     assert_eq!(sign, exact, "{p:?} {q:?} {r:?}");
                 }
                 assert_eq!(orient(p, q, r), exact, "{p:?} {q:?} {r:?}");

@@ -64,6 +64,28 @@ where
     all
 }
 
+/// `items.sort_unstable_by(compare)`, on the pool where it pays. `compare` must be a total
+/// order in which only equal items compare equal: then there is one sorted order, whichever
+/// algorithm finds it, and the result does not depend on the number of threads.
+pub(crate) fn sort_unstable_by<T, F>(items: &mut [T], compare: F)
+where
+    T: Send,
+    F: Fn(&T, &T) -> std::cmp::Ordering + Sync,
+{
+    #[cfg(feature = "parallel")]
+    if pays(items.len()) {
+        use rayon::prelude::*;
+        return items.par_sort_unstable_by(compare);
+    }
+    items.sort_unstable_by(compare)
+}
+
+/// `items.sort_unstable()`, on the pool where it pays (items equal in `Ord` are identical:
+/// integers, tuples and arrays of them).
+pub(crate) fn sort_unstable<T: Ord + Send>(items: &mut [T]) {
+    sort_unstable_by(items, T::cmp)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -81,27 +103,32 @@ mod tests {
         ] {
             let plain: Vec<u64> = (0..n as u64).map(|i| i * i % 97).collect();
             let evens: Vec<usize> = (0..n).filter(|i| i % 3 == 0).collect();
+            let mut by_sequential_sort: Vec<u64> = (0..n as u64).map(|i| i * 7919 % 1009).collect();
+            by_sequential_sort.sort();
             for threads in [1, 2, 5] {
                 let run = || {
                     let mapped = map_range(n, |i| (i as u64) * (i as u64) % 97);
                     let chunked = flat_map_chunks(n, |range, out| {
                         out.extend(range.filter(|i| i % 3 == 0));
                     });
-                    (mapped, chunked)
+                    let mut sorted: Vec<u64> = (0..n as u64).map(|i| i * 7919 % 1009).collect();
+                    sort_unstable(&mut sorted);
+                    (mapped, chunked, sorted)
                 };
                 #[cfg(feature = "parallel")]
-                let (mapped, chunked) = rayon::ThreadPoolBuilder::new()
+                let (mapped, chunked, sorted) = rayon::ThreadPoolBuilder::new()
                     .num_threads(threads)
                     .build()
                     .unwrap()
                     .install(run);
                 #[cfg(not(feature = "parallel"))]
-                let (mapped, chunked) = {
+                let (mapped, chunked, sorted) = {
                     let _ = threads;
                     run()
                 };
                 assert_eq!(mapped, plain, "n {n}, {threads} threads");
                 assert_eq!(chunked, evens, "n {n}, {threads} threads");
+                assert_eq!(sorted, by_sequential_sort, "n {n}, {threads} threads");
             }
         }
     }

@@ -87,7 +87,7 @@ pub(super) fn medial_axis(
             axis.edges.push([ia.min(ib), ia.max(ib)]);
         }
     }
-    axis.edges.sort_unstable();
+    parallel::sort_unstable(&mut axis.edges);
     axis
 }
 

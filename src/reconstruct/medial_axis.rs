@@ -176,6 +176,7 @@ use self::cavity::Cavity;
 use super::curves::Curve;
 use super::lengths::distance;
 use super::result::MedialAxis;
+use super::segment_walk::faces_across;
 use crate::delaunay::triangulate;
 use crate::delaunay::NO_TWIN;
 use crate::parallel;
@@ -225,7 +226,7 @@ pub(super) fn pruned_medial_axis(vor: &mut Voronoi<'_>, curves: &[Curve]) -> Med
     }
     let local = |i| tri.local_index(i);
     let edges = loop_edges(&loops, local);
-    let marks = LoopMarks::new(vor, &edges);
+    let marks = LoopMarks::new(vor, &edges, false);
     if marks.unresolved {
         drop((marks, edges));
         return subset_axis(vor, &loops);
@@ -291,7 +292,12 @@ fn subset_axis(vor: &mut Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
     let noise = noise_at_points(&renumbered, |i| sub.point(i), local, points.len());
     let vor = sub.voronoi();
     let axis = {
-        let marks = LoopMarks::new(&vor, &edges);
+        let marks = LoopMarks::new(&vor, &edges, true);
+        if marks.unresolved {
+            // A loop edge through another sample point: these are no curves of a plane
+            // drawing, and they bound no region to take an axis of.
+            return MedialAxis::default();
+        }
         let inside = marks.inside_faces(&vor);
         drop(edges);
         Graph::inside_edges(&vor, inside, &marks, &noise, None)
@@ -350,20 +356,23 @@ fn off_loop_points_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]], inside: &[bool]
         .collect()
 }
 
-/// Which Delaunay half-edges lie on a loop (both directions), and which faces hold a loop
-/// edge without a dual (a chord of a merged cocircular face): marks per half-edge, so that
-/// the walks below test an edge in O(1).
+/// Which Delaunay half-edges lie on a loop (both directions), and which faces a loop passes
+/// through (a loop edge without a dual, or no edge of this triangulation): marks per
+/// half-edge and per face, so that the walks below test an edge in O(1).
 struct LoopMarks {
     on_loop: Vec<bool>,
     on_chord: Vec<bool>,
-    /// Some loop edge is no Delaunay edge of these points, nor a chord of a merged face:
-    /// the loops do not divide this diagram's faces (a later pass of the peeling may close
-    /// a loop by an edge of its own points only).
+    /// Some loop edge is no Delaunay edge of these points nor a chord of a merged face, and
+    /// its faces were not marked (or it runs through another sample point, which no curve
+    /// does): the loops do not divide this diagram's faces.
     unresolved: bool,
 }
 
 impl LoopMarks {
-    fn new(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> LoopMarks {
+    /// `across`: whether a loop edge that is no edge of `vor`'s triangulation (nor a chord
+    /// of a merged face) marks the faces it passes through, or leaves the marks
+    /// `unresolved`.
+    fn new(vor: &Voronoi<'_>, edges: &[[u32; 2]], across: bool) -> LoopMarks {
         let tri = vor.triangulation();
         let halfedges = tri.halfedges();
         let mut on_loop = vec![false; halfedges.len()];
@@ -385,8 +394,9 @@ impl LoopMarks {
                         on_chord[vor.vertex_of_halfedge(e) as usize] = true;
                     }
                 }
-                // Not an edge of this triangulation: it crosses the merged face that holds
-                // both ends (two faces sharing two corners share the edge between them).
+                // Not an edge of this triangulation: a chord of the merged face that holds
+                // both ends (two faces sharing two corners share the edge between them), or
+                // an edge that a later pass of the peeling drew on its own points.
                 None => {
                     let mut shared = false;
                     for v in vor.cell_local(a) {
@@ -395,7 +405,21 @@ impl LoopMarks {
                             shared = true;
                         }
                     }
-                    unresolved |= !shared;
+                    if !shared {
+                        // The faces the edge passes through lie on the loop, as a merged
+                        // face under a chord does (marking nothing, the loop would stay
+                        // open, and which faces are inside would depend on the order of
+                        // the search: found on `fish.txt`). Where that is not asked for,
+                        // the caller takes the loops' points alone instead.
+                        match faces_across(vor, a, b).filter(|_| across) {
+                            Some(faces) => {
+                                for v in faces {
+                                    on_chord[v as usize] = true;
+                                }
+                            }
+                            None => unresolved = true,
+                        }
+                    }
                 }
             }
         }
@@ -415,9 +439,13 @@ impl LoopMarks {
 }
 
 /// Every Voronoi vertex not marked in `blocked`: is it separated from infinity by an odd
-/// number of the Delaunay edges `crosses` accepts (breadth first from the rays)? Blocked
+/// number of the Delaunay edges `crosses` accepts (searched from the rays)? Blocked
 /// vertices, and those reached only through them, are `false`. Well defined when the
-/// accepted edges form disjoint closed loops whose every crossing is a Voronoi edge.
+/// accepted edges form disjoint closed loops whose every crossing is a Voronoi edge: then
+/// every closed walk crosses them an even number of times, and the answer does not depend
+/// on the path, hence not on the order of the search. Depth first, which stays among
+/// neighbours in memory (the vertices follow the triangulation's locality order): the
+/// axis phase 2 % faster than breadth first at 10^6 and 10^7 noisy points, the same axes.
 pub(super) fn parity_from_infinity(
     vor: &Voronoi<'_>,
     mut blocked: Vec<bool>,
@@ -425,21 +453,21 @@ pub(super) fn parity_from_infinity(
 ) -> Vec<bool> {
     let seen = &mut blocked;
     let mut inside = vec![false; vor.vertex_count()];
-    let mut queue = std::collections::VecDeque::new();
+    let mut stack = Vec::new();
     for (e, v, _) in vor.rays() {
         if !seen[v as usize] {
             seen[v as usize] = true;
             inside[v as usize] = crosses(e);
-            queue.push_back(v);
+            stack.push(v);
         }
-    }
-    while let Some(v) = queue.pop_front() {
-        for edge in vor.vertex_edges_local(v) {
-            if let EdgeEnd::Vertex(u) = edge.to {
-                if !seen[u as usize] {
-                    seen[u as usize] = true;
-                    inside[u as usize] = inside[v as usize] ^ crosses(edge.halfedge);
-                    queue.push_back(u);
+        while let Some(v) = stack.pop() {
+            for edge in vor.vertex_edges_local(v) {
+                if let EdgeEnd::Vertex(u) = edge.to {
+                    if !seen[u as usize] {
+                        seen[u as usize] = true;
+                        inside[u as usize] = inside[v as usize] ^ crosses(edge.halfedge);
+                        stack.push(u);
+                    }
                 }
             }
         }
@@ -1096,7 +1124,7 @@ mod tests {
 
             let local = |i| tri.local_index(i);
             let edges = loop_edges(&loops, local);
-            let inside = LoopMarks::new(&vor, &edges).inside_faces(&vor);
+            let inside = LoopMarks::new(&vor, &edges, false).inside_faces(&vor);
             let off_loop = off_loop_points_inside(&vor, &edges, &inside);
             replaced += usize::from(
                 Cavity::around(&vor, &off_loop).is_some_and(|c| !c.replaced.is_empty()),

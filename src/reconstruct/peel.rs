@@ -480,7 +480,7 @@ pub(super) fn hole_edges(
 }
 
 /// Every Voronoi vertex: is it separated from infinity by an odd number of the given edges
-/// (breadth first from the rays)? Well defined only for a set of closed loops, see
+/// (searched from the rays)? Well defined only for a set of closed loops, see
 /// [`hole_edges`].
 pub(super) fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
     let tri = vor.triangulation();

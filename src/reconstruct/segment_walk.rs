@@ -1,7 +1,10 @@
-//! Does a segment between two sample points cross a curve already found? Decided exactly by
-//! walking the full triangulation along the segment (every side test is the exact
-//! `orient`). Peeling asks it of a later pass's edges that are no edges of the full
-//! triangulation (see `peel.rs`, [`crosses_a_curve`]).
+//! Walks along a segment between two sample points through the full triangulation, every
+//! side test the exact `orient`: does the segment cross a curve already found (peeling asks
+//! it of a later pass's edges that are no edges of the full triangulation, see `peel.rs`,
+//! [`crosses_a_curve`]), and which faces does it pass through (the medial axis blocks them,
+//! [`faces_across`])?
+
+use std::ops::ControlFlow;
 
 use super::curves::Adjacency;
 use crate::delaunay::{next_in_triangle, prev_in_triangle, NO_TWIN};
@@ -10,17 +13,55 @@ use crate::voronoi::Voronoi;
 
 /// Does the segment from local point `a` to local point `b` of the full triangulation cross
 /// an edge of `curve`, or pass through another sample point? An edge of the triangulation
-/// crosses nothing. Otherwise the walk visits the triangles the open segment meets, in
-/// order, and tests every triangulation edge it crosses; a point on the segment (collinear,
-/// strictly between `a` and `b`) counts as a crossing: a curve never runs over a sample.
+/// crosses nothing. Otherwise every triangulation edge the open segment crosses is tested; a
+/// point on the segment (collinear, strictly between `a` and `b`) counts as a crossing: a
+/// curve never runs over a sample.
 pub(super) fn crosses_a_curve(full: &Voronoi<'_>, curve: &Adjacency, a: u32, b: u32) -> bool {
     if a == b || full.is_delaunay_edge(a, b) {
         return false;
     }
     let tri = full.triangulation();
+    let on_curve = |u: u32, v: u32| curve.neighbours(u).iter().any(|&(_, w)| w == v);
+    let reached = walk(full, a, b, |x| {
+        if on_curve(tri.org(x), tri.dest(x)) {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
+        }
+    });
+    !reached
+}
+
+/// The faces (Voronoi vertices, in order, a merged face once per triangle of it) that the
+/// open segment from local point `a` to local point `b` passes through, when it is no edge of
+/// the triangulation; `None` where it runs through another sample point.
+pub(super) fn faces_across(full: &Voronoi<'_>, a: u32, b: u32) -> Option<Vec<u32>> {
+    let twins = full.triangulation().halfedges();
+    let mut faces = Vec::new();
+    let reached = walk(full, a, b, |x| {
+        if faces.is_empty() {
+            faces.push(full.vertex_of_halfedge(x as u32));
+        }
+        faces.push(full.vertex_of_halfedge(twins[x]));
+        ControlFlow::Continue(())
+    });
+    reached.then_some(faces)
+}
+
+/// Walks from local point `a` to local point `b` (distinct, no edge of the triangulation)
+/// through the triangles the open segment meets, handing `crossing` every triangulation edge
+/// it crosses, in order, as the half-edge running from the segment's right to its left
+/// (whose twin exists: the segment stays inside the hull). True when the walk reaches `b`;
+/// false when `crossing` stops it or the segment runs through another sample point.
+fn walk(
+    full: &Voronoi<'_>,
+    a: u32,
+    b: u32,
+    mut crossing: impl FnMut(usize) -> ControlFlow<()>,
+) -> bool {
+    let tri = full.triangulation();
     let at = |p: u32| tri.points[p as usize];
     let (pa, pb) = (at(a), at(b));
-    let on_curve = |u: u32, v: u32| curve.neighbours(u).iter().any(|&(_, w)| w == v);
     let side = |p: u32| orient(pa, pb, at(p));
     let twin = |e: usize| tri.halfedges()[e];
     // A point collinear with the segment lies on it when it lies on the side of `a` towards
@@ -38,7 +79,7 @@ pub(super) fn crosses_a_curve(full: &Voronoi<'_>, curve: &Adjacency, a: u32, b: 
         .and_then(|q| full.delaunay_halfedge(a, q))
         .filter(|&e| tri.org(e as usize) == a)
     else {
-        return true;
+        return false;
     };
     let mut e = first as usize;
     let mut crossed = None;
@@ -46,7 +87,7 @@ pub(super) fn crosses_a_curve(full: &Voronoi<'_>, curve: &Adjacency, a: u32, b: 
         let (d, c) = (tri.dest(e), tri.org(prev_in_triangle(e)));
         let (sd, sc) = (side(d), side(c));
         if (sd == Sign::Zero && ahead(d)) || (sc == Sign::Zero && ahead(c)) {
-            return true;
+            return false;
         }
         // Triangle `a, d, c` is counterclockwise: the segment runs between `d` (right) and
         // `c` (left).
@@ -61,33 +102,29 @@ pub(super) fn crosses_a_curve(full: &Voronoi<'_>, curve: &Adjacency, a: u32, b: 
         e = incoming as usize;
     }
     let Some(mut x) = crossed else {
-        return true;
+        return false;
     };
     // `x` runs from the right of the segment to its left.
     for _ in 0..tri.halfedges().len() {
-        let (right, left) = (tri.org(x), tri.dest(x));
-        if on_curve(right, left) {
-            return true;
-        }
         let y = twin(x);
-        if y == NO_TWIN {
-            return true;
+        if y == NO_TWIN || crossing(x).is_break() {
+            return false;
         }
         // `y` runs from left to right; the third point of its triangle is `w`.
         let y = y as usize;
         let w = tri.dest(next_in_triangle(y));
         if w == b {
-            return false;
+            return true;
         }
         x = match side(w) {
-            Sign::Zero => return true,
+            Sign::Zero => return false,
             // `w` left: the segment leaves through `right → w`, the edge after `y`.
             Sign::Positive => next_in_triangle(y),
             // `w` right: it leaves through `w → left`, the edge before `y`.
             Sign::Negative => prev_in_triangle(y),
         };
     }
-    true
+    false
 }
 
 #[cfg(test)]
@@ -122,6 +159,65 @@ mod tests {
                 && opposite(orient(pu, pv, pa), orient(pu, pv, pb))
         });
         on_segment || crossing
+    }
+
+    /// The faces across a segment are those of the triangles whose interior the open
+    /// segment meets (no separating line among the triangle's sides and the segment's),
+    /// tested triangle by triangle.
+    #[test]
+    fn the_faces_across_are_the_triangles_the_segment_meets() {
+        let mut rng = Rng::new(43);
+        let mut walked = 0;
+        for round in 0..200 {
+            let n = 4 + rng.below(60);
+            let points: Vec<[f64; 2]> = (0..n)
+                .map(|_| {
+                    if round % 2 == 0 {
+                        [rng.f64(), rng.f64()]
+                    } else {
+                        [rng.below(7) as f64, rng.below(7) as f64]
+                    }
+                })
+                .collect();
+            let tri = triangulate(&points).unwrap();
+            if tri.is_degenerate() {
+                continue;
+            }
+            let vor = tri.voronoi();
+            let local = &tri.points;
+            for _ in 0..30 {
+                let m = local.len();
+                let (a, b) = (rng.below(m) as u32, rng.below(m) as u32);
+                if a == b || vor.is_delaunay_edge(a, b) {
+                    continue;
+                }
+                let Some(mut faces) = faces_across(&vor, a, b) else {
+                    continue;
+                };
+                walked += 1;
+                let (pa, pb) = (local[a as usize], local[b as usize]);
+                let mut expected: Vec<u32> = (0..tri.triangles.len())
+                    .filter(|&t| {
+                        let corners = tri.triangles[t].map(|p| local[p as usize]);
+                        let sides = corners.map(|q| orient(pa, pb, q));
+                        let apart = sides.iter().all(|&s| s != Sign::Positive)
+                            || sides.iter().all(|&s| s != Sign::Negative);
+                        let outside_a_side = (0..3).any(|k| {
+                            let (p, q) = (corners[k], corners[(k + 1) % 3]);
+                            orient(p, q, pa) != Sign::Positive && orient(p, q, pb) != Sign::Positive
+                        });
+                        !apart && !outside_a_side
+                    })
+                    .map(|t| vor.vertex_of_triangle(t))
+                    .collect();
+                for list in [&mut faces, &mut expected] {
+                    list.sort_unstable();
+                    list.dedup();
+                }
+                assert_eq!(faces, expected, "round {round}: {a} → {b}");
+            }
+        }
+        assert!(walked > 1000, "only {walked} walks");
     }
 
     #[test]

@@ -164,7 +164,7 @@ pub fn reconstruct_observed(
         // Edges the first pass did not find (reattached stretches, peeling's): holes may be
         // among them, and the medial axis must not cross them.
         let holes_possible = peeling.extra_passes > 0 || !repair.added.is_empty();
-        let (mut first_pass, mut later_pass) = (Vec::new(), Vec::new());
+        let (mut first_pass, mut later_pass) = (Vec::<[u32; 2]>::new(), Vec::new());
         if holes_possible {
             first_pass = found_first_pass.unwrap_or_else(|| edges[..first_pass_len].to_vec());
             first_pass.sort_unstable();
@@ -180,6 +180,9 @@ pub fn reconstruct_observed(
         } else {
             Vec::new()
         };
+        // A copy of the first pass's edges, 8 bytes a point: not held through the axis, the
+        // memory peak.
+        drop(first_pass);
         lap(Phase::Curves);
         let axis = if options.medial_axis() == MedialAxisMode::Pruned {
             pruned_medial_axis(&mut vor, &curves)

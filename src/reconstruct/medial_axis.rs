@@ -250,6 +250,10 @@ pub(super) fn pruned_medial_axis(vor: &mut Voronoi<'_>, curves: &[Curve]) -> Med
         return subset_axis(vor, &loops);
     };
     let noise = noise_at_points(&loops, |i| tri.point(i), local, tri.distinct_point_count());
+    // The positions of all vertices (16 bytes each, 32 a point) are not held through the
+    // graph's balls, the memory peak: the balls' centres are computed again, the same way
+    // (a few per cent of the axis phase).
+    vor.forget_positions();
     let axis = Graph::inside_edges(vor, inside, &marks, &noise, cavity.as_ref());
     drop((marks, edges, noise, cavity));
     axis.pruned().into_medial_axis()
@@ -360,12 +364,31 @@ fn off_loop_points_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]], inside: &[bool]
 /// through (a loop edge without a dual, or no edge of this triangulation): marks per
 /// half-edge and per face, so that the walks below test an edge in O(1).
 struct LoopMarks {
-    on_loop: Vec<bool>,
+    /// One bit per half-edge (six per point: a byte each was 5 bytes a point more at the
+    /// memory peak).
+    on_loop: HalfedgeBits,
     on_chord: Vec<bool>,
     /// Some loop edge is no Delaunay edge of these points nor a chord of a merged face, and
     /// its faces were not marked (or it runs through another sample point, which no curve
     /// does): the loops do not divide this diagram's faces.
     unresolved: bool,
+}
+
+/// A set of half-edges, one bit each.
+struct HalfedgeBits(Vec<u64>);
+
+impl HalfedgeBits {
+    fn new(count: usize) -> HalfedgeBits {
+        HalfedgeBits(vec![0; count.div_ceil(64)])
+    }
+
+    fn set(&mut self, e: usize) {
+        self.0[e / 64] |= 1 << (e % 64);
+    }
+
+    fn get(&self, e: usize) -> bool {
+        self.0[e / 64] >> (e % 64) & 1 == 1
+    }
 }
 
 impl LoopMarks {
@@ -375,7 +398,7 @@ impl LoopMarks {
     fn new(vor: &Voronoi<'_>, edges: &[[u32; 2]], across: bool) -> LoopMarks {
         let tri = vor.triangulation();
         let halfedges = tri.halfedges();
-        let mut on_loop = vec![false; halfedges.len()];
+        let mut on_loop = HalfedgeBits::new(halfedges.len());
         let mut on_chord = vec![false; vor.vertex_count()];
         let mut unresolved = false;
         // Finding a loop edge's half-edge walks around its end: in parallel.
@@ -386,9 +409,9 @@ impl LoopMarks {
         for (&[a, b], found) in edges.iter().zip(found) {
             match found {
                 Some(e) => {
-                    on_loop[e as usize] = true;
+                    on_loop.set(e as usize);
                     if let Some(&twin) = halfedges.get(e as usize).filter(|&&t| t != NO_TWIN) {
-                        on_loop[twin as usize] = true;
+                        on_loop.set(twin as usize);
                     }
                     if !vor.has_dual(e) {
                         on_chord[vor.vertex_of_halfedge(e) as usize] = true;
@@ -434,7 +457,7 @@ impl LoopMarks {
     /// lies on the loop: it is neither inside nor passed through, so the parity of every
     /// other face is still well defined.
     fn inside_faces(&self, vor: &Voronoi<'_>) -> Vec<bool> {
-        parity_from_infinity(vor, self.on_chord.clone(), |e| self.on_loop[e as usize])
+        parity_from_infinity(vor, self.on_chord.clone(), |e| self.on_loop.get(e as usize))
     }
 }
 
@@ -538,7 +561,7 @@ impl Graph {
         // A face lies on the left of its boundary half-edges; the circumcenter is beyond
         // a loop edge when it lies strictly on its right (exact).
         let beyond_edge = |e: usize, face: [[f64; 2]; 3]| {
-            loops.on_loop[e]
+            loops.on_loop.get(e)
                 && orient2d_circumcenter(
                     tri.points[tri.org(e) as usize],
                     tri.points[tri.dest(e) as usize],
@@ -586,7 +609,7 @@ impl Graph {
                 let face = new_triangles[k as usize].map(|p| tri.points[p as usize]);
                 new_beyond[k as usize] |= beyond_edge(e as usize, face);
                 let twin = tri.halfedges()[e as usize];
-                if twin == NO_TWIN || loops.on_loop[e as usize] {
+                if twin == NO_TWIN || loops.on_loop.get(e as usize) {
                     continue;
                 }
                 let w = vor.vertex_of_halfedge(twin);
@@ -596,7 +619,6 @@ impl Graph {
             }
         }
         drop((index, inside));
-        let positions = vor.vertex_positions();
         // Computed in order of first use, which follows the triangulation's locality. The
         // radius is measured to the face's smallest corner, as its position is computed from
         // it: the same value whichever triangulation the face came from.
@@ -607,7 +629,7 @@ impl Graph {
             let v = used[i];
             if v < vertex_count {
                 let face = vor.vertex_triangle(v);
-                let centre = positions[v as usize];
+                let centre = vor.vertex_position(v);
                 Ball {
                     centre,
                     radius: distance(centre, face[smallest_corner(face)]),

@@ -122,6 +122,12 @@ pub fn reconstruct_observed(
         // Only the labels go on: the sources and the visit marks are freed here (10 bytes per
         // point at the memory peak, which is later).
         let mut labels = wdm::label_vertices_local(&vor, options.label_rule()).labels;
+        // The water flow's rounded circumcenters of all vertices (32 bytes a point): nothing
+        // up to the pruned axis reads them, and it computes its balls' centres again, so they
+        // are not held through the repairs and peeling. The raw axis reads them back.
+        if options.medial_axis() == MedialAxisMode::Pruned {
+            vor.forget_positions();
+        }
         lap(Phase::Label);
         let mut edges = if triangulation.is_degenerate() {
             chain_edges(&triangulation)

@@ -140,6 +140,21 @@ mod tests {
         )
     }
 
+    /// 4 to 63 random points in even rounds; in odd ones points of a small lattice (segments
+    /// through points, collinear runs).
+    fn random_or_lattice(rng: &mut Rng, round: usize) -> Vec<[f64; 2]> {
+        let n = 4 + rng.below(60);
+        (0..n)
+            .map(|_| {
+                if round % 2 == 0 {
+                    [rng.f64(), rng.f64()]
+                } else {
+                    [rng.below(7) as f64, rng.below(7) as f64]
+                }
+            })
+            .collect()
+    }
+
     /// The reference: every curve edge and every point, tested against the segment.
     fn crosses_by_brute_force(points: &[[f64; 2]], curve: &[[u32; 2]], a: u32, b: u32) -> bool {
         let (pa, pb) = (points[a as usize], points[b as usize]);
@@ -169,16 +184,7 @@ mod tests {
         let mut rng = Rng::new(43);
         let mut walked = 0;
         for round in 0..200 {
-            let n = 4 + rng.below(60);
-            let points: Vec<[f64; 2]> = (0..n)
-                .map(|_| {
-                    if round % 2 == 0 {
-                        [rng.f64(), rng.f64()]
-                    } else {
-                        [rng.below(7) as f64, rng.below(7) as f64]
-                    }
-                })
-                .collect();
+            let points = random_or_lattice(&mut rng, round);
             let tri = triangulate(&points).unwrap();
             if tri.is_degenerate() {
                 continue;
@@ -225,17 +231,7 @@ mod tests {
         let mut rng = Rng::new(41);
         let mut crossings = 0;
         for round in 0..200 {
-            let n = 4 + rng.below(60);
-            // Random points, or a small lattice (segments through points, collinear runs).
-            let points: Vec<[f64; 2]> = (0..n)
-                .map(|_| {
-                    if round % 2 == 0 {
-                        [rng.f64(), rng.f64()]
-                    } else {
-                        [rng.below(7) as f64, rng.below(7) as f64]
-                    }
-                })
-                .collect();
+            let points = random_or_lattice(&mut rng, round);
             let tri = triangulate(&points).unwrap();
             if tri.is_degenerate() {
                 continue;

@@ -366,7 +366,7 @@ fn off_loop_points_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]], inside: &[bool]
 struct LoopMarks {
     /// One bit per half-edge (six per point: a byte each was 5 bytes a point more at the
     /// memory peak).
-    on_loop: HalfedgeBits,
+    on_loop: Bits,
     on_chord: Vec<bool>,
     /// Some loop edge is no Delaunay edge of these points nor a chord of a merged face, and
     /// its faces were not marked (or it runs through another sample point, which no curve
@@ -374,20 +374,35 @@ struct LoopMarks {
     unresolved: bool,
 }
 
-/// A set of half-edges, one bit each.
-struct HalfedgeBits(Vec<u64>);
+/// A set of indices below a fixed bound, one bit each: the loops' half-edges, the leaves
+/// waiting to be tested.
+struct Bits(Vec<u64>);
 
-impl HalfedgeBits {
-    fn new(count: usize) -> HalfedgeBits {
-        HalfedgeBits(vec![0; count.div_ceil(64)])
+impl Bits {
+    fn new(count: usize) -> Bits {
+        Bits(vec![0; count.div_ceil(64)])
     }
 
-    fn set(&mut self, e: usize) {
-        self.0[e / 64] |= 1 << (e % 64);
+    fn set(&mut self, i: usize) {
+        self.0[i / 64] |= 1 << (i % 64);
     }
 
-    fn get(&self, e: usize) -> bool {
-        self.0[e / 64] >> (e % 64) & 1 == 1
+    fn get(&self, i: usize) -> bool {
+        self.0[i / 64] >> (i % 64) & 1 == 1
+    }
+
+    /// Removes and returns the smallest index at least `from`, reading a word at a time.
+    fn take_first_from(&mut self, from: usize) -> Option<usize> {
+        let mut word = from / 64;
+        // The bits below `from` in its word are masked off.
+        let mut bits = *self.0.get(word)? & (u64::MAX << (from % 64));
+        while bits == 0 {
+            word += 1;
+            bits = *self.0.get(word)?;
+        }
+        let i = word * 64 + bits.trailing_zeros() as usize;
+        self.0[word] &= !(1 << (i % 64));
+        Some(i)
     }
 }
 
@@ -398,7 +413,7 @@ impl LoopMarks {
     fn new(vor: &Voronoi<'_>, edges: &[[u32; 2]], across: bool) -> LoopMarks {
         let tri = vor.triangulation();
         let halfedges = tri.halfedges();
-        let mut on_loop = HalfedgeBits::new(halfedges.len());
+        let mut on_loop = Bits::new(halfedges.len());
         let mut on_chord = vec![false; vor.vertex_count()];
         let mut unresolved = false;
         // Finding a loop edge's half-edge walks around its end: in parallel.
@@ -980,9 +995,9 @@ impl Waiting {
 /// 10^7 noisy points: a pop's sift-down misses the cache at every level of a heap of
 /// millions; one heap of all the leaves had been a third of the run at 10^6.)
 struct LeafQueue {
-    /// Bit `i % 64` of word `i / 64`: leaf `i` waits (only for `i ≥ scan`).
-    waiting: Vec<u64>,
-    /// Every waiting number in `waiting` is at least this.
+    /// The waiting leaves numbered at least `scan`.
+    waiting: Bits,
+    /// Every leaf in `waiting` is numbered at least this.
     scan: usize,
     /// Waiting leaves numbered below `scan`.
     behind: BinaryHeap<Reverse<u32>>,
@@ -990,9 +1005,9 @@ struct LeafQueue {
 
 impl LeafQueue {
     fn new(count: usize, leaves: impl Iterator<Item = u32>) -> LeafQueue {
-        let mut waiting = vec![0u64; count.div_ceil(64)];
+        let mut waiting = Bits::new(count);
         for leaf in leaves {
-            waiting[leaf as usize / 64] |= 1 << (leaf % 64);
+            waiting.set(leaf as usize);
         }
         LeafQueue {
             waiting,
@@ -1003,7 +1018,7 @@ impl LeafQueue {
 
     fn push(&mut self, leaf: u32) {
         if leaf as usize >= self.scan {
-            self.waiting[leaf as usize / 64] |= 1 << (leaf % 64);
+            self.waiting.set(leaf as usize);
         } else {
             self.behind.push(Reverse(leaf));
         }
@@ -1013,20 +1028,9 @@ impl LeafQueue {
         if let Some(Reverse(leaf)) = self.behind.pop() {
             return Some(leaf);
         }
-        let mut word = self.scan / 64;
-        // The bits below `scan` in its word are clear (taken, or never set).
-        while word < self.waiting.len() {
-            let bits = self.waiting[word];
-            if bits != 0 {
-                let leaf = word * 64 + bits.trailing_zeros() as usize;
-                self.waiting[word] = bits & (bits - 1);
-                self.scan = leaf + 1;
-                return Some(leaf as u32);
-            }
-            word += 1;
-        }
-        self.scan = self.waiting.len() * 64;
-        None
+        let leaf = self.waiting.take_first_from(self.scan)?;
+        self.scan = leaf + 1;
+        Some(leaf as u32)
     }
 }
 

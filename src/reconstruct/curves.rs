@@ -2,6 +2,7 @@
 
 use super::polygons::ring_orientation_by;
 use crate::kernel::Sign;
+use crate::parallel;
 
 /// One reconstructed curve.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -91,6 +92,21 @@ pub(crate) fn assemble_named(
             .then_with(|| a.points.iter().take(2).cmp(b.points.iter().take(2)))
     });
     curves
+}
+
+/// The edges of `curves` as `[i, j]`, `i < j`, sorted: the edges they were assembled from
+/// ([`assemble_named`] puts every edge in exactly one curve).
+pub(crate) fn edges_of(curves: &[Curve]) -> Vec<[u32; 2]> {
+    let mut edges = Vec::with_capacity(curves.iter().map(|c| c.points.len()).sum());
+    for c in curves {
+        let closing = c
+            .closed
+            .then(|| [c.points[c.points.len() - 1], c.points[0]]);
+        let pairs = c.points.windows(2).map(|w| [w[0], w[1]]).chain(closing);
+        edges.extend(pairs.map(|[a, b]| [a.min(b), a.max(b)]));
+    }
+    parallel::sort_unstable(&mut edges);
+    edges
 }
 
 /// [`assemble_named`] with the indices as names.
@@ -342,5 +358,39 @@ mod tests {
         assert_eq!(curves.len(), 3);
         assert!(curves.iter().all(|c| !c.closed && c.points.len() == 2));
         assert_eq!(irregular_points(4, &edges), vec![0, 1, 2, 3]);
+    }
+
+    /// Every edge is in exactly one curve: the curves' edges are the edges assembled, on
+    /// random graphs of every degree (loops, chains, junctions, isolated points), under
+    /// random names.
+    #[test]
+    fn the_curves_edges_are_the_edges() {
+        let mut rng = wdm_crust_testkit::Rng::new(21);
+        for round in 0..300 {
+            let n = 2 + rng.below(40);
+            let points: Vec<[f64; 2]> = (0..n).map(|_| [rng.f64(), rng.f64()]).collect();
+            let mut edges = Vec::new();
+            for _ in 0..rng.below(2 * n) {
+                let (a, b) = (rng.below(n) as u32, rng.below(n) as u32);
+                if a != b {
+                    edges.push([a.min(b), a.max(b)]);
+                }
+            }
+            edges.sort_unstable();
+            edges.dedup();
+            // Names: a permutation, so that the curves come in caller order.
+            let mut names: Vec<u32> = (0..n as u32).collect();
+            for i in (1..n).rev() {
+                names.swap(i, rng.below(i + 1));
+            }
+            let curves = assemble_named(n, &edges, &points, |p| names[p as usize]);
+            let mut named: Vec<[u32; 2]> = edges
+                .iter()
+                .map(|e| e.map(|p| names[p as usize]))
+                .map(|[a, b]| [a.min(b), a.max(b)])
+                .collect();
+            named.sort_unstable();
+            assert_eq!(edges_of(&curves), named, "round {round}");
+        }
     }
 }

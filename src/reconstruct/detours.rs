@@ -45,7 +45,7 @@
 //! argued in `super::spikes`). When every point is on a curve (a clean sample) nothing runs.
 
 use std::cmp::Reverse;
-use std::collections::{BTreeMap, BTreeSet, BinaryHeap};
+use std::collections::{BTreeMap, BTreeSet, BinaryHeap, HashMap};
 
 use super::curves::Adjacency;
 use super::nn_crust::closer;
@@ -116,29 +116,33 @@ pub(super) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
         return Repair::none();
     }
     let mut named = NeighbourNames::new(vor);
-    let mut curves = EditedCurves::new(n, edges);
+    // The curves as edited, built at the first edit (an adjacency of all the edges, 20
+    // bytes a point: most inputs with a few points off the curves have nothing to swap).
+    let mut edited: Option<EditedCurves> = None;
     let original = on_curve.clone();
     let mut median = None;
     let unassigned = on_curve.iter().filter(|&&t| !t).count();
     let look_for_spikes = unassigned as f64 >= MIN_UNASSIGNED_FOR_SPIKES * n as f64;
-    for round in 0..ROUNDS {
-        if round > 0 {
+    for _ in 0..ROUNDS {
+        if let Some(curves) = &edited {
             on_curve = curves.on_curve(&original);
         }
         let mut swapped = false;
         for group in &stretches(&mut named, &on_curve) {
-            swapped |= swap_detours(&mut named, &mut curves, &on_curve, group);
+            let curves = edited.get_or_insert_with(|| EditedCurves::new(n, edges));
+            swapped |= swap_detours(&mut named, curves, &on_curve, group);
         }
         // Step 4: spikes, on the curves as the swaps left them. A dropped spike is
         // unassigned, and the next round may swap it back in as part of a stretch.
         if look_for_spikes {
-            swapped |= drop_woven_spikes(vor, &mut curves, &mut median) > 0;
+            let curves = edited.get_or_insert_with(|| EditedCurves::new(n, edges));
+            swapped |= drop_woven_spikes(vor, curves, &mut median) > 0;
         }
         if !swapped {
             break;
         }
     }
-    curves.into_repair()
+    edited.map_or_else(Repair::none, EditedCurves::into_repair)
 }
 
 /// A swap: the stretch's edges replace the detour's.
@@ -155,6 +159,10 @@ type Group = Vec<[u32; 2]>;
 fn stretches(named: &mut NeighbourNames<'_, '_>, on_curve: &[bool]) -> Vec<Group> {
     let mut candidates = candidate_edges(named, on_curve);
     without_loose_ends(&mut candidates, on_curve);
+    if candidates.is_empty() {
+        // Nothing to group (the groups below take 4 bytes a point).
+        return Vec::new();
+    }
     let mut groups = UnionFind::new(on_curve.len());
     for &[a, b] in &candidates {
         groups.union(a, b);
@@ -475,6 +483,9 @@ fn candidate_edges(named: &mut NeighbourNames<'_, '_>, on_curve: &[bool]) -> Vec
 /// Removes, repeatedly, the edges with an unassigned end that no other edge touches: what is
 /// left of a group joins points on curves through unassigned points.
 fn without_loose_ends(edges: &mut Vec<[u32; 2]>, on_curve: &[bool]) {
+    if edges.is_empty() {
+        return;
+    }
     let adjacency = Adjacency::new(on_curve.len(), edges);
     let mut removed = vec![false; edges.len()];
     let mut degree: Vec<u32> = (0..on_curve.len() as u32)
@@ -508,18 +519,18 @@ fn without_loose_ends(edges: &mut Vec<[u32; 2]>, on_curve: &[bool]) {
 }
 
 /// Every point's nearest neighbour and half neighbour (NN-crust), computed on demand: only
-/// the unassigned points and those they name are ever asked.
+/// the unassigned points and those they name are ever asked, so they are kept in a map (an
+/// array over all points was 16 bytes a point at the memory peak of this phase).
 struct NeighbourNames<'v, 't> {
     vor: &'v Voronoi<'t>,
-    cache: Vec<Option<[Option<u32>; 2]>>,
+    cache: HashMap<u32, [Option<u32>; 2]>,
 }
 
 impl<'v, 't> NeighbourNames<'v, 't> {
     fn new(vor: &'v Voronoi<'t>) -> Self {
-        let n = vor.triangulation().points.len();
         NeighbourNames {
             vor,
-            cache: vec![None; n],
+            cache: HashMap::new(),
         }
     }
 
@@ -531,7 +542,7 @@ impl<'v, 't> NeighbourNames<'v, 't> {
     /// `[nearest, half]` neighbour of `p` among its Delaunay neighbours along edges with a
     /// dual Voronoi edge (the NN-crust's candidates, so cocircular diagonals never count).
     fn of(&mut self, p: u32) -> [Option<u32>; 2] {
-        if let Some(names) = self.cache[p as usize] {
+        if let Some(&names) = self.cache.get(&p) {
             return names;
         }
         let points = &self.vor.triangulation().points;
@@ -544,7 +555,7 @@ impl<'v, 't> NeighbourNames<'v, 't> {
         let half = q.and_then(|q| {
             nearest(&mut around.filter(|&s| dot_sign(at(p), at(s), at(q)) == Sign::Negative))
         });
-        self.cache[p as usize] = Some([q, half]);
+        self.cache.insert(p, [q, half]);
         [q, half]
     }
 }

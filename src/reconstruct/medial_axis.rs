@@ -166,12 +166,12 @@
 //! (relative) of the threshold. The order of the removals, and every tie, is decided by radius and then by
 //! coordinates, so the result depends on the points, never on their order.
 
+mod bits;
 mod cavity;
 mod noise;
+mod pruning;
 
-use std::cmp::Reverse;
-use std::collections::BinaryHeap;
-
+use self::bits::Bits;
 use self::cavity::Cavity;
 use super::curves::Curve;
 use super::lengths::distance;
@@ -218,7 +218,7 @@ const NOISE_RADIUS_RATIO: f64 = 2.0;
 /// Read off `vor` itself, with the triangles around points off the loops inside the region
 /// replaced ([`cavity`]); where that cannot be decided on `vor` (exactly cocircular points
 /// there), the loops' points are triangulated on their own.
-pub(super) fn pruned_medial_axis(vor: &mut Voronoi<'_>, curves: &[Curve]) -> MedialAxis {
+pub(super) fn pruned_medial_axis(mut vor: Voronoi<'_>, curves: &[Curve]) -> MedialAxis {
     let tri = vor.triangulation();
     let loops: Vec<&Curve> = curves.iter().filter(|c| c.closed).collect();
     if loops.is_empty() || tri.is_degenerate() {
@@ -226,27 +226,29 @@ pub(super) fn pruned_medial_axis(vor: &mut Voronoi<'_>, curves: &[Curve]) -> Med
     }
     let local = |i| tri.local_index(i);
     let edges = loop_edges(&loops, local);
-    let marks = LoopMarks::new(vor, &edges, false);
+    let mut marks = LoopMarks::new(&vor, &edges, false);
     if marks.unresolved {
         drop((marks, edges));
         return subset_axis(vor, &loops);
     }
-    let mut inside = marks.inside_faces(vor);
+    let mut inside = marks.inside_faces(&vor);
     // Points off the loops change the region's triangles only where they lie inside it
     // ([`cavity`]): when none does (always when the loops use every point), the region's
     // triangles of all the points are the subset's; when some do, the triangles around
     // them are replaced, and only where the diagram cannot decide that is the subset
     // triangulated again.
-    let off_loop = off_loop_points_inside(vor, &edges, &inside);
+    let off_loop = off_loop_points_inside(&vor, &edges, &inside);
+    // 8 bytes a point, not held through the graph's balls.
+    drop(edges);
     let cavity = if off_loop.is_empty() {
         None
-    } else if let Some(cavity) = Cavity::around(vor, &off_loop) {
+    } else if let Some(cavity) = Cavity::around(&vor, &off_loop) {
         for &v in &cavity.replaced {
             inside[v as usize] = false;
         }
         Some(cavity)
     } else {
-        drop((marks, inside, edges));
+        drop((marks, inside));
         return subset_axis(vor, &loops);
     };
     let noise = noise_at_points(&loops, |i| tri.point(i), local, tri.distinct_point_count());
@@ -254,17 +256,18 @@ pub(super) fn pruned_medial_axis(vor: &mut Voronoi<'_>, curves: &[Curve]) -> Med
     // graph's balls, the memory peak: the balls' centres are computed again, the same way
     // (a few per cent of the axis phase).
     vor.forget_positions();
-    let axis = Graph::inside_edges(vor, inside, &marks, &noise, cavity.as_ref());
-    drop((marks, edges, noise, cavity));
-    axis.pruned().into_medial_axis()
+    let axis = Graph::inside_edges(&vor, inside, &marks, &noise, cavity.as_ref());
+    // Nothing below reads the diagram (4 bytes a point).
+    drop((vor, marks, noise, cavity));
+    axis.pruned()
 }
 
-/// [`pruned_medial_axis`] on a triangulation of the points of `loops` alone. `vor`'s
-/// vertex positions are freed first (the caller has no more use for them), so that the two
-/// sets of positions never coexist at the memory peak.
-fn subset_axis(vor: &mut Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
-    vor.forget_positions();
+/// [`pruned_medial_axis`] on a triangulation of the points of `loops` alone. `vor` is
+/// freed first (the caller has no more use for it), so that the two diagrams' vertex
+/// positions never coexist at the memory peak.
+fn subset_axis(vor: Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
     let tri = vor.triangulation();
+    drop(vor);
     let points: Vec<[f64; 2]> = loops
         .iter()
         .flat_map(|c| c.points.iter().map(|&i| tri.point(i)))
@@ -296,7 +299,7 @@ fn subset_axis(vor: &mut Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
     let noise = noise_at_points(&renumbered, |i| sub.point(i), local, points.len());
     let vor = sub.voronoi();
     let axis = {
-        let marks = LoopMarks::new(&vor, &edges, true);
+        let mut marks = LoopMarks::new(&vor, &edges, true);
         if marks.unresolved {
             // A loop edge through another sample point: these are no curves of a plane
             // drawing, and they bound no region to take an axis of.
@@ -306,7 +309,7 @@ fn subset_axis(vor: &mut Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
         drop(edges);
         Graph::inside_edges(&vor, inside, &marks, &noise, None)
     };
-    axis.pruned().into_medial_axis()
+    axis.pruned()
 }
 
 /// The noise amplitude ([`noise::loop_estimates`]) at every point of `loops`, by local
@@ -321,14 +324,18 @@ fn noise_at_points(
 ) -> Vec<f32> {
     let mut noise = vec![0.0f32; count];
     for c in loops {
-        let points: Vec<[f64; 2]> = c.points.iter().map(|&i| position(i)).collect();
-        for (&i, estimate) in c.points.iter().zip(noise::loop_estimates(&points)) {
-            noise[local(i) as usize] = if estimate.oscillation >= CLEAN_OSCILLATION {
-                -estimate.amplitude
-            } else {
-                estimate.amplitude
-            };
-        }
+        let on_loop = |k: usize| c.points[k];
+        noise::loop_estimates(
+            c.points.len(),
+            |k| position(on_loop(k)),
+            |k, estimate| {
+                noise[local(on_loop(k)) as usize] = if estimate.oscillation >= CLEAN_OSCILLATION {
+                    -estimate.amplitude
+                } else {
+                    estimate.amplitude
+                };
+            },
+        );
     }
     noise
 }
@@ -372,38 +379,6 @@ struct LoopMarks {
     /// its faces were not marked (or it runs through another sample point, which no curve
     /// does): the loops do not divide this diagram's faces.
     unresolved: bool,
-}
-
-/// A set of indices below a fixed bound, one bit each: the loops' half-edges, the leaves
-/// waiting to be tested.
-struct Bits(Vec<u64>);
-
-impl Bits {
-    fn new(count: usize) -> Bits {
-        Bits(vec![0; count.div_ceil(64)])
-    }
-
-    fn set(&mut self, i: usize) {
-        self.0[i / 64] |= 1 << (i % 64);
-    }
-
-    fn get(&self, i: usize) -> bool {
-        self.0[i / 64] >> (i % 64) & 1 == 1
-    }
-
-    /// Removes and returns the smallest index at least `from`, reading a word at a time.
-    fn take_first_from(&mut self, from: usize) -> Option<usize> {
-        let mut word = from / 64;
-        // The bits below `from` in its word are masked off.
-        let mut bits = *self.0.get(word)? & (u64::MAX << (from % 64));
-        while bits == 0 {
-            word += 1;
-            bits = *self.0.get(word)?;
-        }
-        let i = word * 64 + bits.trailing_zeros() as usize;
-        self.0[word] &= !(1 << (i % 64));
-        Some(i)
-    }
 }
 
 impl LoopMarks {
@@ -470,9 +445,11 @@ impl LoopMarks {
 
     /// Every Voronoi vertex: inside the loops? A face holding a loop edge without a dual
     /// lies on the loop: it is neither inside nor passed through, so the parity of every
-    /// other face is still well defined.
-    fn inside_faces(&self, vor: &Voronoi<'_>) -> Vec<bool> {
-        parity_from_infinity(vor, self.on_chord.clone(), |e| self.on_loop.get(e as usize))
+    /// other face is still well defined. The faces on a chord are read here only: their
+    /// marks become the search's (a copy was 2 bytes a point at the memory peak).
+    fn inside_faces(&mut self, vor: &Voronoi<'_>) -> Vec<bool> {
+        let on_chord = std::mem::take(&mut self.on_chord);
+        parity_from_infinity(vor, on_chord, |e| self.on_loop.get(e as usize))
     }
 }
 
@@ -690,348 +667,59 @@ impl Graph {
         Graph { ball, edges }
     }
 
-    /// Removes leaves by the rule of the module docs.
-    fn pruned(mut self) -> Graph {
+    /// Removes leaves by the rule of the module docs: the axis that remains.
+    fn pruned(self) -> MedialAxis {
         let scale = [
             1.0 / (PRUNE_ANGLE_DEGREES.to_radians() / 2.0).cos(),
             1.0 / (CLEAN_PRUNE_ANGLE_DEGREES.to_radians() / 2.0).cos(),
         ];
-        let mut tree = Pruning::new(&self);
-        let mut waiting = Waiting::new(self.ball.len());
-        let mut queue = std::collections::VecDeque::new();
-        let mut leaves = LeafQueue::new(
-            self.ball.len(),
-            (0..self.ball.len() as u32).filter(|&v| tree.degree(v) == 1),
+        let Graph { ball, edges } = self;
+        let tree = pruning::prune(
+            ball.len(),
+            edges,
+            |u| ball[u as usize].beyond(),
+            |w, u| covers(&ball[w as usize], &ball[u as usize], scale),
         );
-        while let Some(u) = leaves.pop() {
-            let Some((e, v)) = tree.leaf_edge(u) else {
-                continue;
-            };
-            // The last edge of a component stays: pruning removes branches, not shapes.
-            if tree.degree(v) == 1 {
-                continue;
-            }
-            if !self.ball[u as usize].beyond() {
-                match tree.neighbourhood_test(u, &mut queue, |w| self.covers(w, u, scale)) {
-                    Test::Covered => {}
-                    Test::Uncovered { junction } => {
-                        if let Some(j) = junction {
-                            waiting.add(u, j);
-                        }
-                        continue;
-                    }
-                }
-            }
-            tree.remove(e, [u, v]);
-            match tree.degree(v) {
-                1 => leaves.push(v),
-                // A junction became a path vertex: the branches that ended at it grew, and
-                // their leaves are tested again.
-                2 => waiting.release(v, |leaf| leaves.push(leaf)),
-                _ => {}
-            }
-        }
-        let mut kept = tree.removed.iter().map(|&r| !r);
-        self.edges.retain(|_| kept.next().unwrap_or(false));
-        self
-    }
-
-    /// Whether the ball of `w` covers `u`'s: `s·B_u ⊂ s·B_w` (the ball of `w` is at least
-    /// as far ahead of `u`'s, in radius, as `1/s` of the distance between their centres), or
-    /// `B_w` is at least [`NOISE_RADIUS_RATIO`] times larger and `B_u` sticks out of it by
-    /// no more than `u`'s noise slack. `scale`: `s` for noisy leaves, then for clean ones.
-    fn covers(&self, w: u32, u: u32, scale: [f64; 2]) -> bool {
-        let (u, w) = (&self.ball[u as usize], &self.ball[w as usize]);
-        let (apart, gain) = (distance(u.centre, w.centre), w.radius - u.radius);
-        if u.slack < 0.0 {
-            return apart <= scale[1] * gain;
-        }
-        apart <= scale[0] * gain
-            || (w.radius >= NOISE_RADIUS_RATIO * u.radius && apart - gain <= f64::from(u.slack))
-    }
-
-    /// The used vertices renumbered in order of first use, edges sorted.
-    fn into_medial_axis(self) -> MedialAxis {
-        let mut index = vec![u32::MAX; self.ball.len()];
-        let mut axis = MedialAxis::default();
-        for &[a, b] in &self.edges {
-            let [a, b] = [a, b].map(|v| {
-                if index[v as usize] == u32::MAX {
-                    index[v as usize] = axis.vertices.len() as u32;
-                    axis.vertices.push(self.ball[v as usize].centre);
-                }
-                index[v as usize]
-            });
-            axis.edges.push([a.min(b), a.max(b)]);
-        }
-        parallel::sort_unstable(&mut axis.edges);
-        axis
+        let edges: Vec<[u32; 2]> = tree.edges().collect();
+        drop(tree);
+        axis_of(&ball, edges)
     }
 }
 
-/// The axis graph while leaves are taken off: removed edges are marked, not taken out.
-///
-/// Laid out for the pruning's access pattern, one leaf after another in order of radius,
-/// so all over the graph: a vertex's record and its adjacency are one cache line each, and
-/// an adjacency entry carries the other end and its removal mark (separate arrays of
-/// degrees, offsets, edges and marks cost a cache miss each per step, measured at 10^6).
-struct Pruning {
-    node: Vec<Node>,
-    /// `adjacency[node.first..node.first + node.slots]`: `(edge, other end)`, the other end
-    /// [`REMOVED`] once the edge is gone.
-    adjacency: Vec<(u32, u32)>,
-    removed: Vec<bool>,
+/// Whether the ball of `w` covers `u`'s: `s·B_u ⊂ s·B_w` (the ball of `w` is at least
+/// as far ahead of `u`'s, in radius, as `1/s` of the distance between their centres), or
+/// `B_w` is at least [`NOISE_RADIUS_RATIO`] times larger and `B_u` sticks out of it by
+/// no more than `u`'s noise slack. `scale`: `s` for noisy leaves, then for clean ones.
+fn covers(w: &Ball, u: &Ball, scale: [f64; 2]) -> bool {
+    let (apart, gain) = (distance(u.centre, w.centre), w.radius - u.radius);
+    if u.slack < 0.0 {
+        return apart <= scale[1] * gain;
+    }
+    apart <= scale[0] * gain
+        || (w.radius >= NOISE_RADIUS_RATIO * u.radius && apart - gain <= f64::from(u.slack))
 }
 
-#[derive(Clone, Copy)]
-struct Node {
-    first: u32,
-    slots: u32,
-    /// Edges remaining.
-    degree: u32,
-}
-
-/// The other end of an adjacency entry whose edge was removed.
-const REMOVED: u32 = u32::MAX;
-
-impl Pruning {
-    fn new(graph: &Graph) -> Pruning {
-        let mut node = vec![
-            Node {
-                first: 0,
-                slots: 0,
-                degree: 0
-            };
-            graph.ball.len()
-        ];
-        for &[a, b] in &graph.edges {
-            node[a as usize].slots += 1;
-            node[b as usize].slots += 1;
-        }
-        let mut total = 0u32;
-        for n in &mut node {
-            n.first = total;
-            total += n.slots;
-        }
-        let mut adjacency = vec![(0u32, REMOVED); total as usize];
-        for (i, &[a, b]) in graph.edges.iter().enumerate() {
-            for (v, w) in [(a, b), (b, a)] {
-                let n = &mut node[v as usize];
-                adjacency[(n.first + n.degree) as usize] = (i as u32, w);
-                n.degree += 1;
-            }
-        }
-        Pruning {
-            node,
-            adjacency,
-            removed: vec![false; graph.edges.len()],
+/// The axis of the `edges` that remain between `ball`s: the vertices on them numbered in
+/// their order of first use (which follows the triangulation's locality), the edges sorted.
+fn axis_of(ball: &[Ball], mut edges: Vec<[u32; 2]>) -> MedialAxis {
+    // By first use: the ball used then, and then its number in the axis.
+    let mut number = vec![u32::MAX; ball.len()];
+    for &[a, b] in &edges {
+        for v in [a, b] {
+            number[ball[v as usize].first_use() as usize] = v;
         }
     }
-
-    fn degree(&self, v: u32) -> u32 {
-        self.node[v as usize].degree
+    let mut vertices = Vec::new();
+    for slot in number.iter_mut().filter(|s| **s != u32::MAX) {
+        vertices.push(ball[*slot as usize].centre);
+        *slot = vertices.len() as u32 - 1;
     }
-
-    fn slots(&self, v: u32) -> std::ops::Range<usize> {
-        let n = self.node[v as usize];
-        n.first as usize..(n.first + n.slots) as usize
+    for edge in &mut edges {
+        let [a, b] = edge.map(|v| number[ball[v as usize].first_use() as usize]);
+        *edge = [a.min(b), a.max(b)];
     }
-
-    /// The remaining edges at `v`, each with its other end.
-    fn around(&self, v: u32) -> impl Iterator<Item = (u32, u32)> + '_ {
-        self.adjacency[self.slots(v)]
-            .iter()
-            .filter(|&&(_, w)| w != REMOVED)
-            .copied()
-    }
-
-    /// The one remaining edge of `u` and its other end, when `u` is a leaf.
-    fn leaf_edge(&self, u: u32) -> Option<(u32, u32)> {
-        (self.degree(u) == 1).then(|| self.around(u).next())?
-    }
-
-    /// The vertices after leaf `u` along its branch: up to and including the first one that
-    /// is not of degree 2.
-    fn branch(&self, u: u32) -> impl Iterator<Item = u32> + '_ {
-        let mut step = self.around(u).next().map(|(_, v)| (u, v));
-        std::iter::from_fn(move || {
-            let (prev, cur) = step?;
-            step = if self.degree(cur) == 2 {
-                self.around(cur)
-                    .map(|(_, w)| w)
-                    .find(|&w| w != prev)
-                    .map(|w| (cur, w))
-            } else {
-                None
-            };
-            Some(cur)
-        })
-    }
-
-    /// Whether `hit` holds for one of the balls a leaf's ball is tested against: its branch
-    /// up to the junction, then the nearest vertices beyond it in the tree (breadth first),
-    /// where the trunk passes the whisker's foot; [`NEIGHBOURHOOD`] vertices in all, so that
-    /// a test costs O(1). Stops at the first hit: on noisy input the first ball tested
-    /// nearly always covers, and the walk is then a step or two (the whole neighbourhood,
-    /// visited for every leaf, was most of the run at 10^6 points: cache misses). When
-    /// nothing covers, the junction its branch reached (if any) is returned: the leaf is
-    /// tested again when that junction becomes a path vertex ([`Waiting`]).
-    fn neighbourhood_test(
-        &self,
-        u: u32,
-        queue: &mut std::collections::VecDeque<(u32, u32)>,
-        mut hit: impl FnMut(u32) -> bool,
-    ) -> Test {
-        let mut count = 0;
-        let (mut before, mut last) = (u, None);
-        for v in self.branch(u).take(NEIGHBOURHOOD) {
-            if hit(v) {
-                return Test::Covered;
-            }
-            count += 1;
-            if let Some(previous) = last {
-                before = previous;
-            }
-            last = Some(v);
-        }
-        let Some(last) = last else {
-            return Test::Uncovered { junction: None };
-        };
-        let uncovered = Test::Uncovered {
-            junction: (self.degree(last) >= 3).then_some(last),
-        };
-        // Breadth first away from the branch; in a tree nothing is met twice (around a hole
-        // a vertex may be, which changes nothing but the count).
-        queue.clear();
-        queue.push_back((last, before));
-        while let Some((v, parent)) = queue.pop_front() {
-            for (_, w) in self.around(v) {
-                if count >= NEIGHBOURHOOD {
-                    return uncovered;
-                }
-                if w != parent {
-                    if hit(w) {
-                        return Test::Covered;
-                    }
-                    count += 1;
-                    queue.push_back((w, v));
-                }
-            }
-        }
-        uncovered
-    }
-
-    fn remove(&mut self, e: u32, ends: [u32; 2]) {
-        self.removed[e as usize] = true;
-        for v in ends {
-            let slots = self.slots(v);
-            for entry in &mut self.adjacency[slots] {
-                if entry.0 == e {
-                    entry.1 = REMOVED;
-                }
-            }
-            self.node[v as usize].degree -= 1;
-        }
-    }
-}
-
-/// What a leaf's test found.
-enum Test {
-    Covered,
-    /// Nothing covers the leaf; `junction` is where its branch ended, within
-    /// [`NEIGHBOURHOOD`] vertices (`None` when the branch is longer or ends at a leaf).
-    Uncovered {
-        junction: Option<u32>,
-    },
-}
-
-/// The leaves whose test failed, listed at the junction their branch ended at.
-///
-/// A failed leaf's test changes only when its branch grows, that is when its junction
-/// becomes a path vertex: nothing else on its branch can change while it stays a leaf (only
-/// leaves lose edges). So the leaves to test again when a junction dissolves are exactly
-/// those listed at it (a walk along the paths from the junction found the same leaves, plus
-/// untested ones already waiting in the queue; it cost a cache miss per step, a quarter of
-/// the pruning on 10^6 noisy points).
-struct Waiting {
-    /// The first leaf listed at each vertex, [`REMOVED`] for none.
-    first: Vec<u32>,
-    /// The next leaf listed at the same junction.
-    next: Vec<u32>,
-}
-
-impl Waiting {
-    fn new(vertices: usize) -> Waiting {
-        Waiting {
-            first: vec![REMOVED; vertices],
-            next: vec![REMOVED; vertices],
-        }
-    }
-
-    fn add(&mut self, leaf: u32, junction: u32) {
-        self.next[leaf as usize] = self.first[junction as usize];
-        self.first[junction as usize] = leaf;
-    }
-
-    /// Hands over, and forgets, the leaves listed at `junction`.
-    fn release(&mut self, junction: u32, mut each: impl FnMut(u32)) {
-        let mut leaf = std::mem::replace(&mut self.first[junction as usize], REMOVED);
-        while leaf != REMOVED {
-            each(leaf);
-            leaf = std::mem::replace(&mut self.next[leaf as usize], REMOVED);
-        }
-    }
-}
-
-/// The leaves waiting to be tested, smallest ball first, which is smallest number first
-/// ([`Ball`]), as one min-heap over all of them would give them.
-///
-/// Numbers at or after the scan's position are bits of a set, read forward one word at a
-/// time; a leaf pushed behind the scan (a neighbour with a smaller ball, or a leaf that
-/// failed earlier and is tested again) is smaller than every bit, and waits in a small heap
-/// that pops first. No leaf is ever waiting twice (a leaf is pushed when its degree drops to
-/// one, or released once from the one junction it waits at), so a set loses nothing. (A
-/// heap of the pushed leaves beside the list of the first ones was a fifth of the pruning at
-/// 10^7 noisy points: a pop's sift-down misses the cache at every level of a heap of
-/// millions; one heap of all the leaves had been a third of the run at 10^6.)
-struct LeafQueue {
-    /// The waiting leaves numbered at least `scan`.
-    waiting: Bits,
-    /// Every leaf in `waiting` is numbered at least this.
-    scan: usize,
-    /// Waiting leaves numbered below `scan`.
-    behind: BinaryHeap<Reverse<u32>>,
-}
-
-impl LeafQueue {
-    fn new(count: usize, leaves: impl Iterator<Item = u32>) -> LeafQueue {
-        let mut waiting = Bits::new(count);
-        for leaf in leaves {
-            waiting.set(leaf as usize);
-        }
-        LeafQueue {
-            waiting,
-            scan: 0,
-            behind: BinaryHeap::new(),
-        }
-    }
-
-    fn push(&mut self, leaf: u32) {
-        if leaf as usize >= self.scan {
-            self.waiting.set(leaf as usize);
-        } else {
-            self.behind.push(Reverse(leaf));
-        }
-    }
-
-    fn pop(&mut self) -> Option<u32> {
-        if let Some(Reverse(leaf)) = self.behind.pop() {
-            return Some(leaf);
-        }
-        let leaf = self.waiting.take_first_from(self.scan)?;
-        self.scan = leaf + 1;
-        Some(leaf as u32)
-    }
+    parallel::sort_unstable(&mut edges);
+    MedialAxis { vertices, edges }
 }
 
 /// An integer key whose order is `f64::total_cmp`'s.
@@ -1048,41 +736,6 @@ fn total_order_key(x: f64) -> u64 {
 mod tests {
     use super::*;
     use wdm_crust_testkit::Rng;
-
-    /// The leaf queue pops what one min-heap of the same leaves pops, pushes in front of and
-    /// behind its scan interleaved, never a leaf that is already waiting.
-    #[test]
-    fn the_leaf_queue_pops_in_heap_order() {
-        let mut rng = Rng::new(11);
-        for round in 0..200 {
-            let count = 1 + rng.below(300);
-            let mut waiting = vec![false; count];
-            for w in waiting.iter_mut() {
-                *w = rng.f64() < 0.2;
-            }
-            let initial: Vec<u32> = (0..count as u32).filter(|&i| waiting[i as usize]).collect();
-            let mut queue = LeafQueue::new(count, initial.iter().copied());
-            let mut heap: BinaryHeap<Reverse<u32>> = initial.iter().map(|&i| Reverse(i)).collect();
-            for step in 0.. {
-                // Pushes for a while, then the queue drains.
-                let pushes = if step < 2 * count { rng.below(4) } else { 0 };
-                for _ in 0..pushes {
-                    let leaf = rng.below(count) as u32;
-                    if !waiting[leaf as usize] {
-                        waiting[leaf as usize] = true;
-                        queue.push(leaf);
-                        heap.push(Reverse(leaf));
-                    }
-                }
-                let popped = queue.pop();
-                assert_eq!(popped, heap.pop().map(|r| r.0), "round {round}");
-                match popped {
-                    Some(leaf) => waiting[leaf as usize] = false,
-                    None => break,
-                }
-            }
-        }
-    }
 
     /// Points on two separate closed curves (a squashed star and a circle), in scrambled
     /// order, with the loops through them.
@@ -1135,21 +788,21 @@ mod tests {
         for round in 0..20 {
             let (points, curves) = two_shapes(&mut rng, 60 + 10 * round);
             let tri = triangulate(&points).unwrap();
-            let direct = pruned_medial_axis(&mut tri.voronoi(), &curves);
+            let direct = pruned_medial_axis(tri.voronoi(), &curves);
             assert!(direct.edges.len() > 20, "round {round}");
 
             let mut noisy = points.clone();
             noisy.extend((0..5 + round).map(|_| [rng.range(-2.0, 6.0), rng.range(-1.5, 1.5)]));
             let tri = triangulate(&noisy).unwrap();
-            let mut vor = tri.voronoi();
-            let with_cavity = pruned_medial_axis(&mut vor, &curves);
+            let with_cavity = pruned_medial_axis(tri.voronoi(), &curves);
             let loops: Vec<&Curve> = curves.iter().collect();
-            let via_subset = subset_axis(&mut vor, &loops);
+            let via_subset = subset_axis(tri.voronoi(), &loops);
             assert_eq!(segments(&direct), segments(&with_cavity), "round {round}");
             assert_eq!(segments(&direct), segments(&via_subset), "round {round}");
 
             let local = |i| tri.local_index(i);
             let edges = loop_edges(&loops, local);
+            let vor = tri.voronoi();
             let inside = LoopMarks::new(&vor, &edges, false).inside_faces(&vor);
             let off_loop = off_loop_points_inside(&vor, &edges, &inside);
             replaced += usize::from(
@@ -1175,13 +828,13 @@ mod tests {
             points: (0..points.len() as u32).collect(),
         }];
         let tri = triangulate(&points).unwrap();
-        let direct = pruned_medial_axis(&mut tri.voronoi(), &curves);
+        let direct = pruned_medial_axis(tri.voronoi(), &curves);
         assert!(!direct.edges.is_empty());
         for inside in [vec![[3.0, 3.0]], vec![[2.0, 2.0], [5.0, 3.0], [7.5, 4.0]]] {
             let mut with_inside = points.clone();
             with_inside.extend(inside);
             let tri = triangulate(&with_inside).unwrap();
-            let axis = pruned_medial_axis(&mut tri.voronoi(), &curves);
+            let axis = pruned_medial_axis(tri.voronoi(), &curves);
             assert_eq!(segments(&direct), segments(&axis));
         }
     }

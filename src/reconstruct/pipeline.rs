@@ -8,7 +8,7 @@ use super::extract::{chain_edges, medial_axis, wdm_crust_edges};
 use super::medial_axis::pruned_medial_axis;
 use super::options::{Algorithm, MedialAxisMode, Options};
 use super::peel::{hole_edges, parity_inside, peel, Peeling};
-use super::result::{untouched_points, MedialAxis, Reconstruction};
+use super::result::{untouched_local_points, untouched_points, MedialAxis, Reconstruction};
 use super::wdm::{self, Label, LabelRule};
 use super::{crust, nn_crust};
 use crate::delaunay::{triangulate, Triangulation};
@@ -56,7 +56,8 @@ pub enum Phase {
     Peel,
     /// Curve assembly, the translation to caller indices and the unassigned points.
     Curves,
-    /// The medial axis (WDM).
+    /// The medial axis (WDM); then, for WDM, the edges in the caller's indices, read off
+    /// the curves (not held through the axis, the memory peak).
     MedialAxis,
 }
 
@@ -179,19 +180,19 @@ pub fn reconstruct_observed(
             later_pass.sort_unstable();
         }
         let curves = assemble(&triangulation, &edges);
-        let edges = triangulation.to_input_edges(edges);
-        let unassigned = untouched_points(&triangulation, &edges);
+        let unassigned = untouched_local_points(&triangulation, &edges);
         let holes = if holes_possible {
             hole_edges(&vor, &curves, &first_pass)
         } else {
             Vec::new()
         };
-        // A copy of the first pass's edges, 8 bytes a point: not held through the axis, the
-        // memory peak.
-        drop(first_pass);
+        // The edges (8 bytes a point) and a copy of the first pass's are not held through
+        // the axis, the memory peak: every edge is in exactly one curve, and the edges are
+        // read off the curves after the axis.
+        drop((edges, first_pass));
         lap(Phase::Curves);
         let axis = if options.medial_axis() == MedialAxisMode::Pruned {
-            pruned_medial_axis(&mut vor, &curves)
+            pruned_medial_axis(vor, &curves)
         } else if holes.is_empty() {
             medial_axis(&vor, &labels, &later_pass)
         } else {
@@ -211,6 +212,7 @@ pub fn reconstruct_observed(
                 .collect();
             medial_axis(&vor, &combined, &later_pass)
         };
+        let edges = curves::edges_of(&curves);
         lap(Phase::MedialAxis);
         (labels, edges, curves, axis, peeling, unassigned)
     };

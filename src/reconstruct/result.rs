@@ -108,3 +108,15 @@ pub(super) fn untouched_points(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<u
         .filter(|&i| !touched[i as usize] && !tri.is_duplicate(i))
         .collect()
 }
+
+/// [`untouched_points`] of `edges` in local indices.
+pub(super) fn untouched_local_points(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<u32> {
+    let mut touched = vec![false; tri.distinct_point_count()];
+    for &[a, b] in edges {
+        touched[a as usize] = true;
+        touched[b as usize] = true;
+    }
+    (0..tri.point_count() as u32)
+        .filter(|&i| !tri.is_duplicate(i) && !touched[tri.local_index(i) as usize])
+        .collect()
+}

@@ -26,75 +26,107 @@ use crate::reconstruct::lengths::distance;
 /// Samples on either side of a sample that its amplitude averages over.
 const HALF_WINDOW: usize = 3;
 
+/// Samples whose estimates are computed together: the temporaries are those of a block
+/// (about 170 KiB), not of the loop (40 bytes a sample were the memory peak of the pruned
+/// axis at 10^6 points on one loop).
+const BLOCK: usize = 4096;
+
+/// How far around a sample its estimates read: the amplitude averages `ψ` over
+/// [`HALF_WINDOW`] samples on either side, and `ψ` reads the curvatures of the neighbours,
+/// which read their neighbours' edges.
+const MARGIN: usize = HALF_WINDOW + 2;
+
 /// The noise amplitude and the relative oscillation ([`Estimate`]) at every sample of the
-/// closed loop `points` (in loop order); zeros when the loop is too short to tell noise
-/// from shape. Computed together: they share the edges and the curvatures, and the
-/// temporaries are those of the amplitude alone (the memory peak of the pruned axis).
-pub(super) fn loop_estimates(points: &[[f64; 2]]) -> Vec<Estimate> {
-    let n = points.len();
+/// closed loop of `n` samples, sample `i` at `position(i)` (in loop order), handed to
+/// `each(i, estimate)` in increasing `i`; zeros when the loop is too short to tell noise
+/// from shape. Computed together (they share the edges and the curvatures) a block of
+/// [`BLOCK`] samples at a time, each with its [`MARGIN`] on either side: every value is
+/// computed from the same samples by the same operations as on the whole loop at once, so
+/// it does not depend on the block it falls in.
+pub(super) fn loop_estimates(
+    n: usize,
+    position: impl Fn(usize) -> [f64; 2],
+    mut each: impl FnMut(usize, Estimate),
+) {
     if n < 2 * HALF_WINDOW + 3 {
-        return vec![Estimate::default(); n];
+        (0..n).for_each(|i| each(i, Estimate::default()));
+        return;
     }
-    let at = |i: usize, k: isize| (i as isize + k).rem_euclid(n as isize) as usize;
-    // `edge[i]` = |p_i p_i+1|, computed once for both samples it is an arm of (`hypot`, which
-    // cannot overflow at any magnitude, is the costly part of this estimate).
-    let edge: Vec<f64> = (0..n)
-        .map(|i| distance(points[i], points[at(i, 1)]))
-        .collect();
-    let arms = |i: usize| edge[at(i, -1)] * edge[i];
-    let mut curvature: Vec<f64> = (0..n)
-        .map(|i| {
-            let (a, b, c) = (points[at(i, -1)], points[i], points[at(i, 1)]);
-            signed_curvature(a, b, c, arms(i) * distance(a, c))
-        })
-        .collect();
-    let unexplained: Vec<f64> = (0..n)
-        .map(|i| {
-            let neighbours = (curvature[at(i, -1)] + curvature[at(i, 1)]) / 2.0;
-            let arms = arms(i);
-            let psi = (curvature[i] - neighbours).abs() * arms / 2.0;
-            psi * psi
-        })
-        .collect();
-    // The curvatures become, in place, the offsets `d_i = κ_i·a·c/2` from the neighbours'
-    // chords (negated exactly when the loop is reversed), then `zig[i]`, of the pair
-    // `i, i + 1` (the product of two offsets is not negated).
-    let zig = &mut curvature;
-    for (i, d) in zig.iter_mut().enumerate() {
-        *d *= arms(i) / 2.0;
-    }
-    let first = zig[0];
-    for i in 0..n {
-        let next = if i + 1 < n { zig[i + 1] } else { first };
-        zig[i] = (-zig[i] * next).max(0.0);
-    }
-    let pairs = (2 * HALF_WINDOW) as f64;
-    (0..n)
-        .map(|i| {
-            let mut sum = 0.0;
-            for k in 1..=HALF_WINDOW as isize {
-                // A pair at a time: the same sum whichever way the loop runs.
-                sum += unexplained[at(i, -k)] + unexplained[at(i, k)];
+    let mut points = Vec::with_capacity(BLOCK + 2 * MARGIN);
+    let (mut edge, mut curvature, mut offset) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut unexplained, mut zig) = (Vec::new(), Vec::new());
+    for first in (0..n).step_by(BLOCK) {
+        let count = BLOCK.min(n - first);
+        // Slot `s` holds sample `first + s − MARGIN` (around the loop: `n` exceeds
+        // `MARGIN`).
+        let len = count + 2 * MARGIN;
+        points.clear();
+        points.extend((0..len).map(|s| position((first + n + s - MARGIN) % n)));
+        // `edge[s]` = |p_s p_s+1|, computed once for both samples it is an arm of (`hypot`,
+        // which cannot overflow at any magnitude, is the costly part of this estimate).
+        edge.clear();
+        edge.extend((0..len - 1).map(|s| distance(points[s], points[s + 1])));
+        let arms = |s: usize| edge[s - 1] * edge[s];
+        // Curvatures at slots 1..len − 1 (slot 0 unused).
+        curvature.clear();
+        curvature.extend((0..len - 1).map(|s| {
+            if s == 0 {
+                return 0.0;
             }
-            let amplitude = ((sum + unexplained[i]) / (2 * HALF_WINDOW + 1) as f64).sqrt();
+            let (a, b, c) = (points[s - 1], points[s], points[s + 1]);
+            signed_curvature(a, b, c, arms(s) * distance(a, c))
+        }));
+        unexplained.clear();
+        unexplained.extend((0..len - 2).map(|s| {
+            if s < 2 {
+                return 0.0;
+            }
+            let neighbours = (curvature[s - 1] + curvature[s + 1]) / 2.0;
+            let psi = (curvature[s] - neighbours).abs() * arms(s) / 2.0;
+            psi * psi
+        }));
+        // The offsets `d_s = κ_s·a·c/2` from the neighbours' chords (negated exactly when
+        // the loop is reversed), then `zig[s]`, of the pair `s, s + 1` (the product of two
+        // offsets is not negated).
+        offset.clear();
+        offset.extend((0..len - 1).map(|s| {
+            if s == 0 {
+                0.0
+            } else {
+                curvature[s] * (arms(s) / 2.0)
+            }
+        }));
+        zig.clear();
+        zig.extend((0..len - 2).map(|s| (-offset[s] * offset[s + 1]).max(0.0)));
+        let pairs = (2 * HALF_WINDOW) as f64;
+        for s in MARGIN..MARGIN + count {
+            let mut sum = 0.0;
+            for k in 1..=HALF_WINDOW {
+                // A pair at a time: the same sum whichever way the loop runs.
+                sum += unexplained[s - k] + unexplained[s + k];
+            }
+            let amplitude = ((sum + unexplained[s]) / (2 * HALF_WINDOW + 1) as f64).sqrt();
             let (mut zigs, mut edges) = (0.0, 0.0);
-            for k in 0..HALF_WINDOW as isize {
-                // The pairs and edges `i + k` and `i − 1 − k` swap when the loop runs the
+            for k in 0..HALF_WINDOW {
+                // The pairs and edges `s + k` and `s − 1 − k` swap when the loop runs the
                 // other way: summed two at a time, the same value either way.
-                zigs += zig[at(i, k)] + zig[at(i, -1 - k)];
-                edges += edge[at(i, k)] + edge[at(i, -1 - k)];
+                zigs += zig[s + k] + zig[s - 1 - k];
+                edges += edge[s + k] + edge[s - 1 - k];
             }
             let oscillation = if edges > 0.0 {
                 (zigs / pairs).sqrt() / (edges / pairs)
             } else {
                 0.0
             };
-            Estimate {
-                amplitude: amplitude as f32,
-                oscillation: oscillation as f32,
-            }
-        })
-        .collect()
+            each(
+                first + s - MARGIN,
+                Estimate {
+                    amplitude: amplitude as f32,
+                    oscillation: oscillation as f32,
+                },
+            );
+        }
+    }
 }
 
 /// What the pruning reads of the samples around a point.
@@ -133,14 +165,119 @@ mod tests {
     use super::*;
     use wdm_crust_testkit::Rng;
 
+    fn estimates(points: &[[f64; 2]]) -> Vec<Estimate> {
+        let mut all = Vec::new();
+        loop_estimates(
+            points.len(),
+            |i| points[i],
+            |i, e| {
+                assert_eq!(i, all.len());
+                all.push(e);
+            },
+        );
+        all
+    }
+
     fn loop_noise(points: &[[f64; 2]]) -> Vec<f64> {
-        let estimates = loop_estimates(points);
+        let estimates = estimates(points);
         estimates.iter().map(|e| f64::from(e.amplitude)).collect()
     }
 
     fn loop_oscillation(points: &[[f64; 2]]) -> Vec<f64> {
-        let estimates = loop_estimates(points);
+        let estimates = estimates(points);
         estimates.iter().map(|e| f64::from(e.oscillation)).collect()
+    }
+
+    /// The estimates on the whole loop at once (the form before blocks): the reference.
+    fn whole_loop_estimates(points: &[[f64; 2]]) -> Vec<Estimate> {
+        let n = points.len();
+        if n < 2 * HALF_WINDOW + 3 {
+            return vec![Estimate::default(); n];
+        }
+        let at = |i: usize, k: isize| (i as isize + k).rem_euclid(n as isize) as usize;
+        // `edge[i]` = |p_i p_i+1|, computed once for both samples it is an arm of (`hypot`, which
+        // cannot overflow at any magnitude, is the costly part of this estimate).
+        let edge: Vec<f64> = (0..n)
+            .map(|i| distance(points[i], points[at(i, 1)]))
+            .collect();
+        let arms = |i: usize| edge[at(i, -1)] * edge[i];
+        let mut curvature: Vec<f64> = (0..n)
+            .map(|i| {
+                let (a, b, c) = (points[at(i, -1)], points[i], points[at(i, 1)]);
+                signed_curvature(a, b, c, arms(i) * distance(a, c))
+            })
+            .collect();
+        let unexplained: Vec<f64> = (0..n)
+            .map(|i| {
+                let neighbours = (curvature[at(i, -1)] + curvature[at(i, 1)]) / 2.0;
+                let arms = arms(i);
+                let psi = (curvature[i] - neighbours).abs() * arms / 2.0;
+                psi * psi
+            })
+            .collect();
+        // The curvatures become, in place, the offsets `d_i = κ_i·a·c/2` from the neighbours'
+        // chords (negated exactly when the loop is reversed), then `zig[i]`, of the pair
+        // `i, i + 1` (the product of two offsets is not negated).
+        let zig = &mut curvature;
+        for (i, d) in zig.iter_mut().enumerate() {
+            *d *= arms(i) / 2.0;
+        }
+        let first = zig[0];
+        for i in 0..n {
+            let next = if i + 1 < n { zig[i + 1] } else { first };
+            zig[i] = (-zig[i] * next).max(0.0);
+        }
+        let pairs = (2 * HALF_WINDOW) as f64;
+        (0..n)
+            .map(|i| {
+                let mut sum = 0.0;
+                for k in 1..=HALF_WINDOW as isize {
+                    // A pair at a time: the same sum whichever way the loop runs.
+                    sum += unexplained[at(i, -k)] + unexplained[at(i, k)];
+                }
+                let amplitude = ((sum + unexplained[i]) / (2 * HALF_WINDOW + 1) as f64).sqrt();
+                let (mut zigs, mut edges) = (0.0, 0.0);
+                for k in 0..HALF_WINDOW as isize {
+                    // The pairs and edges `i + k` and `i − 1 − k` swap when the loop runs the
+                    // other way: summed two at a time, the same value either way.
+                    zigs += zig[at(i, k)] + zig[at(i, -1 - k)];
+                    edges += edge[at(i, k)] + edge[at(i, -1 - k)];
+                }
+                let oscillation = if edges > 0.0 {
+                    (zigs / pairs).sqrt() / (edges / pairs)
+                } else {
+                    0.0
+                };
+                Estimate {
+                    amplitude: amplitude as f32,
+                    oscillation: oscillation as f32,
+                }
+            })
+            .collect()
+    }
+
+    /// Blocks change no value: loops shorter than a block, of a block and a few samples,
+    /// and of several blocks, against the whole-loop reference.
+    #[test]
+    fn the_blocks_give_the_whole_loops_estimates() {
+        let mut rng = Rng::new(6);
+        for n in [
+            9,
+            10,
+            11,
+            300,
+            BLOCK,
+            BLOCK + 1,
+            BLOCK + 2 * MARGIN,
+            3 * BLOCK + 7,
+        ] {
+            let points = ellipse(n, 0.2 / n as f64, &mut rng);
+            assert_eq!(
+                estimates(&points),
+                whole_loop_estimates(&points),
+                "{n} samples"
+            );
+        }
     }
 
     fn ellipse(n: usize, jitter: f64, rng: &mut Rng) -> Vec<[f64; 2]> {

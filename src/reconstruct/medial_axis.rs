@@ -178,9 +178,10 @@ use super::lengths::distance;
 use super::result::MedialAxis;
 use super::segment_walk::faces_across;
 use crate::delaunay::triangulate;
-use crate::delaunay::NO_TWIN;
+use crate::delaunay::{prev_in_triangle, Triangulation, NO_TWIN};
+use crate::kernel::metric::dot_sign;
+use crate::kernel::Sign;
 use crate::parallel;
-use crate::predicates::{orient2d_circumcenter, Orientation};
 use crate::voronoi::{rounded_circumcenter, smallest_corner, EdgeEnd, Voronoi};
 
 /// The object angle `θ` of the pruning rule: a leaf is removed when some ball near it grows
@@ -318,29 +319,33 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
 /// One `f32` per point, as before the oscillation was read (the memory peak).
 fn noise_at_points(
     loops: &[&Curve],
-    position: impl Fn(u32) -> [f64; 2],
+    position: impl Fn(u32) -> [f64; 2] + Sync,
     local: impl Fn(u32) -> u32,
     count: usize,
 ) -> Vec<f32> {
     let mut noise = vec![0.0f32; count];
     for c in loops {
-        let on_loop = |k: usize| c.points[k];
-        noise::loop_estimates(
-            c.points.len(),
-            |k| position(on_loop(k)),
-            |k, estimate| {
-                noise[local(on_loop(k)) as usize] = if estimate.oscillation >= CLEAN_OSCILLATION {
-                    -estimate.amplitude
-                } else {
-                    estimate.amplitude
-                };
-            },
-        );
+        let n = c.points.len();
+        let at = |k: usize| position(c.points[k]);
+        // In parallel over stretches of the loop (each value reads only its neighbours).
+        let estimates = parallel::flat_map_chunks(n, |stretch, out| {
+            noise::loop_estimates(n, at, stretch, |_, estimate| out.push(estimate));
+        });
+        for (&i, estimate) in c.points.iter().zip(estimates) {
+            noise[local(i) as usize] = if estimate.oscillation >= CLEAN_OSCILLATION {
+                -estimate.amplitude
+            } else {
+                estimate.amplitude
+            };
+        }
     }
     noise
 }
 
-/// The edges of `loops` as sorted pairs of local indices (`local` maps a caller index).
+/// The edges of `loops` as pairs of local indices, smaller first, in the loops' order
+/// (`local` maps a caller index). Not sorted: what reads them marks sets, and along a loop
+/// the points are neighbours in memory too (sorting cost more than it saved in the
+/// half-edge search).
 fn loop_edges(loops: &[&Curve], local: impl Fn(u32) -> u32) -> Vec<[u32; 2]> {
     let mut edges = Vec::with_capacity(loops.iter().map(|c| c.points.len()).sum());
     for c in loops {
@@ -350,11 +355,10 @@ fn loop_edges(loops: &[&Curve], local: impl Fn(u32) -> u32) -> Vec<[u32; 2]> {
             edges.push([a.min(b), a.max(b)]);
         }
     }
-    parallel::sort_unstable(&mut edges);
     edges
 }
 
-/// The points of `vor` on none of the loops `edges` (sorted local pairs) with a face
+/// The points of `vor` on none of the loops `edges` (local pairs) with a face
 /// `inside` them. No loop edge ends at such a point, so all its faces have one parity.
 fn off_loop_points_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]], inside: &[bool]) -> Vec<u32> {
     let mut on_loop = vec![false; vor.triangulation().distinct_point_count()];
@@ -551,19 +555,16 @@ impl Graph {
         let new_triangles = cavity.map_or(&[][..], |c| &c.triangles[..]);
         let mut index = vec![u32::MAX; vertex_count as usize + new_triangles.len()];
         // A face lies on the left of its boundary half-edges; the circumcenter is beyond
-        // a loop edge when it lies strictly on its right (exact).
-        let beyond_edge = |e: usize, face: [[f64; 2]; 3]| {
-            loops.on_loop.get(e)
-                && orient2d_circumcenter(
-                    tri.points[tri.org(e) as usize],
-                    tri.points[tri.dest(e) as usize],
-                    face,
-                ) == Orientation::Clockwise
-        };
+        // a loop edge when it lies strictly on its right. By the inscribed angle, that is
+        // when the angle at `c`, a corner of the face on the edge's left, is obtuse: an
+        // exact sign of input points (the orientation of the constructed circumcenter, of
+        // higher degree, took a fifth of the balls' time).
+        let beyond_edge = |e: usize, c: u32| loops.on_loop.get(e) && beyond_of_corner(tri, e, c);
         let beyond = |v: u32| {
-            let face = vor.vertex_triangle(v);
-            vor.vertex_edges_local(v)
-                .any(|edge| beyond_edge(edge.halfedge as usize, face))
+            vor.vertex_edges_local(v).any(|edge| {
+                let e = edge.halfedge as usize;
+                beyond_edge(e, tri.org(prev_in_triangle(e)))
+            })
         };
         // The slack, or none (`None`) when the face's samples do not zig-zag: clean.
         let slack = |sites: &mut dyn Iterator<Item = u32>| {
@@ -598,8 +599,10 @@ impl Graph {
                 add(vertex_count + s, vertex_count + t);
             }
             for &(k, e) in &cavity.boundary {
-                let face = new_triangles[k as usize].map(|p| tri.points[p as usize]);
-                new_beyond[k as usize] |= beyond_edge(e as usize, face);
+                let ends = [tri.org(e as usize), tri.dest(e as usize)];
+                if let Some(&c) = new_triangles[k as usize].iter().find(|p| !ends.contains(p)) {
+                    new_beyond[k as usize] |= beyond_edge(e as usize, c);
+                }
                 let twin = tri.halfedges()[e as usize];
                 if twin == NO_TWIN || loops.on_loop.get(e as usize) {
                     continue;
@@ -722,6 +725,14 @@ fn axis_of(ball: &[Ball], mut edges: Vec<[u32; 2]>) -> MedialAxis {
     MedialAxis { vertices, edges }
 }
 
+/// Whether the circumcenter of the triangle of half-edge `e` (local, of `tri`) and corner
+/// `c`, which lies on its left, lies strictly on its right: the angle at `c` is obtuse,
+/// `(a − c)·(b − c) < 0` (exact).
+fn beyond_of_corner(tri: &Triangulation, e: usize, c: u32) -> bool {
+    let at = |p: u32| tri.points[p as usize];
+    dot_sign(at(c), at(tri.org(e)), at(tri.dest(e))) == Sign::Negative
+}
+
 /// An integer key whose order is `f64::total_cmp`'s.
 fn total_order_key(x: f64) -> u64 {
     let bits = x.to_bits();
@@ -736,6 +747,42 @@ fn total_order_key(x: f64) -> u64 {
 mod tests {
     use super::*;
     use wdm_crust_testkit::Rng;
+
+    /// The obtuse-angle test is the orientation of the circumcenter against the edge, on
+    /// every half-edge of triangulations with right angles (integer points, a grid) and
+    /// without.
+    #[test]
+    fn beyond_is_the_circumcenters_side() {
+        use crate::predicates::{orient2d_circumcenter, Orientation};
+        let mut rng = Rng::new(13);
+        let mut sets: Vec<Vec<[f64; 2]>> = (0..20)
+            .map(|_| {
+                (0..60)
+                    .map(|_| [rng.below(12) as f64, rng.below(12) as f64])
+                    .collect()
+            })
+            .collect();
+        sets.push((0..100).map(|_| [rng.f64(), rng.f64()]).collect());
+        sets.push(
+            (0..49)
+                .map(|i| [(i % 7) as f64, (i / 7) as f64 * 0.5])
+                .collect(),
+        );
+        let (mut beyond, mut on) = (0, 0);
+        for points in sets {
+            let tri = triangulate(&points).unwrap();
+            for e in 0..tri.halfedges().len() {
+                let c = tri.org(prev_in_triangle(e));
+                let at = |p: u32| tri.points[p as usize];
+                let face = [at(tri.org(e)), at(tri.dest(e)), at(c)];
+                let side = orient2d_circumcenter(face[0], face[1], face);
+                beyond += usize::from(side == Orientation::Clockwise);
+                on += usize::from(side == Orientation::Collinear);
+                assert_eq!(beyond_of_corner(&tri, e, c), side == Orientation::Clockwise);
+            }
+        }
+        assert!(beyond > 50 && on > 50, "{beyond} beyond, {on} on the edge");
+    }
 
     /// Points on two separate closed curves (a squashed star and a circle), in scrambled
     /// order, with the loops through them.

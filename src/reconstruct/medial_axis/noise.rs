@@ -21,6 +21,8 @@
 //! either direction of the loop and from any start (sums are taken in symmetric pairs), so
 //! the pruning that reads it does not depend on the order of the input points.
 
+use std::ops::Range;
+
 use crate::reconstruct::lengths::distance;
 
 /// Samples on either side of a sample that its amplitude averages over.
@@ -36,9 +38,9 @@ const BLOCK: usize = 4096;
 /// which read their neighbours' edges.
 const MARGIN: usize = HALF_WINDOW + 2;
 
-/// The noise amplitude and the relative oscillation ([`Estimate`]) at every sample of the
-/// closed loop of `n` samples, sample `i` at `position(i)` (in loop order), handed to
-/// `each(i, estimate)` in increasing `i`; zeros when the loop is too short to tell noise
+/// The noise amplitude and the relative oscillation ([`Estimate`]) at the `samples` (a
+/// range of `0..n`) of the closed loop of `n` samples, sample `i` at `position(i)` (in loop
+/// order), handed to `each(i, estimate)` in increasing `i`; zeros when the loop is too short to tell noise
 /// from shape. Computed together (they share the edges and the curvatures) a block of
 /// [`BLOCK`] samples at a time, each with its [`MARGIN`] on either side: every value is
 /// computed from the same samples by the same operations as on the whole loop at once, so
@@ -46,17 +48,18 @@ const MARGIN: usize = HALF_WINDOW + 2;
 pub(super) fn loop_estimates(
     n: usize,
     position: impl Fn(usize) -> [f64; 2],
+    samples: Range<usize>,
     mut each: impl FnMut(usize, Estimate),
 ) {
     if n < 2 * HALF_WINDOW + 3 {
-        (0..n).for_each(|i| each(i, Estimate::default()));
+        samples.for_each(|i| each(i, Estimate::default()));
         return;
     }
     let mut points = Vec::with_capacity(BLOCK + 2 * MARGIN);
     let (mut edge, mut curvature, mut offset) = (Vec::new(), Vec::new(), Vec::new());
     let (mut unexplained, mut zig) = (Vec::new(), Vec::new());
-    for first in (0..n).step_by(BLOCK) {
-        let count = BLOCK.min(n - first);
+    for first in samples.clone().step_by(BLOCK) {
+        let count = BLOCK.min(samples.end - first);
         // Slot `s` holds sample `first + s − MARGIN` (around the loop: `n` exceeds
         // `MARGIN`).
         let len = count + 2 * MARGIN;
@@ -166,12 +169,18 @@ mod tests {
     use wdm_crust_testkit::Rng;
 
     fn estimates(points: &[[f64; 2]]) -> Vec<Estimate> {
+        estimates_of(points, 0..points.len())
+    }
+
+    fn estimates_of(points: &[[f64; 2]], samples: Range<usize>) -> Vec<Estimate> {
         let mut all = Vec::new();
+        let first = samples.start;
         loop_estimates(
             points.len(),
             |i| points[i],
+            samples,
             |i, e| {
-                assert_eq!(i, all.len());
+                assert_eq!(i, first + all.len());
                 all.push(e);
             },
         );
@@ -257,7 +266,8 @@ mod tests {
     }
 
     /// Blocks change no value: loops shorter than a block, of a block and a few samples,
-    /// and of several blocks, against the whole-loop reference.
+    /// and of several blocks, whole and in two stretches, against the whole-loop
+    /// reference.
     #[test]
     fn the_blocks_give_the_whole_loops_estimates() {
         let mut rng = Rng::new(6);
@@ -272,11 +282,13 @@ mod tests {
             3 * BLOCK + 7,
         ] {
             let points = ellipse(n, 0.2 / n as f64, &mut rng);
-            assert_eq!(
-                estimates(&points),
-                whole_loop_estimates(&points),
-                "{n} samples"
-            );
+            let whole = whole_loop_estimates(&points);
+            assert_eq!(estimates(&points), whole, "{n} samples");
+            // And in stretches, as the threads take them.
+            let cut = rng.below(n + 1);
+            let mut stretches = estimates_of(&points, 0..cut);
+            stretches.extend(estimates_of(&points, cut..n));
+            assert_eq!(stretches, whole, "{n} samples cut at {cut}");
         }
     }
 

@@ -451,12 +451,12 @@ impl Peeling {
 /// loop through an edge without a dual (inside a merged cocircular face) cannot separate
 /// that face's vertex and is not counted either.
 ///
-/// The curves are the final ones, in caller indices; `first_pass` (sorted) and the result
-/// are in local indices.
+/// The curves are the final ones, in caller indices; `not_first_pass` (which tells the
+/// curves' edges the first pass did not find) and the result are in local indices.
 pub(super) fn hole_edges(
     vor: &Voronoi<'_>,
     curves: &[Curve],
-    first_pass: &[[u32; 2]],
+    not_first_pass: impl Fn(&[u32; 2]) -> bool,
 ) -> Vec<[u32; 2]> {
     let tri = vor.triangulation();
     let mut holes = Vec::new();
@@ -469,8 +469,7 @@ pub(super) fn hole_edges(
             .zip(curve.points.iter().cycle().skip(1).map(local))
             .map(|(a, b)| [a.min(b), a.max(b)]);
         let is_hole = loop_edges.clone().all(|[a, b]| {
-            first_pass.binary_search(&[a, b]).is_err()
-                && vor.delaunay_halfedge(a, b).is_some_and(|e| vor.has_dual(e))
+            not_first_pass(&[a, b]) && vor.delaunay_halfedge(a, b).is_some_and(|e| vor.has_dual(e))
         });
         if is_hole {
             holes.extend(loop_edges);

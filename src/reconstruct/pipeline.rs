@@ -147,7 +147,6 @@ pub fn reconstruct_observed(
             }
             edges
         };
-        let first_pass_len = edges.len();
         lap(Phase::Extract);
         // The detour repair runs on the first pass, before peeling: the stretches it
         // reattaches are then no leftovers for the later passes, which otherwise closed small
@@ -157,9 +156,6 @@ pub fn reconstruct_observed(
         } else {
             Repair::none()
         };
-        // The first pass as the water drew it, for the hole test below: apart only when the
-        // repair takes edges out of it (it appends the ones it adds).
-        let found_first_pass = (!repair.removed.is_empty()).then(|| edges.clone());
         repair.apply(&mut edges);
         let repaired_len = edges.len();
         let peeling = if options.peeling() {
@@ -169,12 +165,12 @@ pub fn reconstruct_observed(
         };
         lap(Phase::Peel);
         // Edges the first pass did not find (reattached stretches, peeling's): holes may be
-        // among them, and the medial axis must not cross them.
-        let holes_possible = peeling.extra_passes > 0 || !repair.added.is_empty();
-        let (mut first_pass, mut later_pass) = (Vec::<[u32; 2]>::new(), Vec::new());
+        // among them, and the raw medial axis must not cross them (the pruned one takes the
+        // inside of the final loops by itself).
+        let holes_possible = (peeling.extra_passes > 0 || !repair.added.is_empty())
+            && options.medial_axis() == MedialAxisMode::Raw;
+        let mut later_pass = Vec::new();
         if holes_possible {
-            first_pass = found_first_pass.unwrap_or_else(|| edges[..first_pass_len].to_vec());
-            first_pass.sort_unstable();
             later_pass.extend_from_slice(&edges[repaired_len..]);
             later_pass.extend_from_slice(&repair.added);
             later_pass.sort_unstable();
@@ -182,14 +178,20 @@ pub fn reconstruct_observed(
         let curves = assemble(&triangulation, &edges);
         let unassigned = untouched_local_points(&triangulation, &edges);
         let holes = if holes_possible {
-            hole_edges(&vor, &curves, &first_pass)
+            // The edges are distinct: those of the first pass the repair kept, then the
+            // later ones. So a final edge is none of the first pass's exactly when it is a
+            // later one that the repair had not taken out of the first pass (a later pass
+            // may draw again an edge between points a swap left off the curves).
+            let not_first_pass = |e: &[u32; 2]| {
+                later_pass.binary_search(e).is_ok() && repair.removed.binary_search(e).is_err()
+            };
+            hole_edges(&vor, &curves, not_first_pass)
         } else {
             Vec::new()
         };
-        // The edges (8 bytes a point) and a copy of the first pass's are not held through
-        // the axis, the memory peak: every edge is in exactly one curve, and the edges are
-        // read off the curves after the axis.
-        drop((edges, first_pass));
+        // The edges (8 bytes a point) are not held through the axis, the memory peak: every
+        // edge is in exactly one curve, and they are read off the curves after the axis.
+        drop(edges);
         lap(Phase::Curves);
         let axis = if options.medial_axis() == MedialAxisMode::Pruned {
             pruned_medial_axis(vor, &curves)

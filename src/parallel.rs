@@ -64,6 +64,27 @@ where
     all
 }
 
+/// `f(range, &mut out[range])` over consecutive chunks of `out`, which together cover it:
+/// one output array filled in place, without the per-chunk vectors of
+/// [`flat_map_chunks`] (which worker threads' allocators keep after they are freed).
+pub(crate) fn fill_chunks<T, F>(out: &mut [T], f: F)
+where
+    T: Send,
+    F: Fn(Range<usize>, &mut [T]) + Sync + Send,
+{
+    #[cfg(feature = "parallel")]
+    if pays(out.len()) {
+        use rayon::prelude::*;
+        let n = out.len();
+        out.par_chunks_mut(CHUNK)
+            .enumerate()
+            .for_each(|(c, chunk)| f(c * CHUNK..((c + 1) * CHUNK).min(n), chunk));
+        return;
+    }
+    let n = out.len();
+    f(0..n, out)
+}
+
 /// `items.sort_unstable_by(compare)`, on the pool where it pays. `compare` must be a total
 /// order in which only equal items compare equal: then there is one sorted order, whichever
 /// algorithm finds it, and the result does not depend on the number of threads.
@@ -113,6 +134,14 @@ mod tests {
                     });
                     let mut sorted: Vec<u64> = (0..n as u64).map(|i| i * 7919 % 1009).collect();
                     sort_unstable(&mut sorted);
+                    let mut filled = vec![0u64; n];
+                    fill_chunks(&mut filled, |range, out| {
+                        assert_eq!(range.len(), out.len());
+                        for (i, o) in range.zip(out) {
+                            *o = (i as u64) * (i as u64) % 97;
+                        }
+                    });
+                    assert_eq!(filled, plain, "n {n}, {threads} threads");
                     (mapped, chunked, sorted)
                 };
                 #[cfg(feature = "parallel")]

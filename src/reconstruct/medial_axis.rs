@@ -328,15 +328,19 @@ fn noise_at_points(
         let n = c.points.len();
         let at = |k: usize| position(c.points[k]);
         // In parallel over stretches of the loop (each value reads only its neighbours).
-        let estimates = parallel::flat_map_chunks(n, |stretch, out| {
-            noise::loop_estimates(n, at, stretch, |_, estimate| out.push(estimate));
+        let mut along = vec![0.0f32; n];
+        parallel::fill_chunks(&mut along, |stretch, out| {
+            let first = stretch.start;
+            noise::loop_estimates(n, at, stretch, |k, estimate| {
+                out[k - first] = if estimate.oscillation >= CLEAN_OSCILLATION {
+                    -estimate.amplitude
+                } else {
+                    estimate.amplitude
+                };
+            });
         });
-        for (&i, estimate) in c.points.iter().zip(estimates) {
-            noise[local(i) as usize] = if estimate.oscillation >= CLEAN_OSCILLATION {
-                -estimate.amplitude
-            } else {
-                estimate.amplitude
-            };
+        for (&i, value) in c.points.iter().zip(along) {
+            noise[local(i) as usize] = value;
         }
     }
     noise

@@ -36,6 +36,26 @@ pub(crate) fn assemble_named(
     points: &[[f64; 2]],
     name: impl Fn(u32) -> u32,
 ) -> Vec<Curve> {
+    let mut curves = assemble_unnamed(point_count, edges, points, &name);
+    for c in &mut curves {
+        for p in &mut c.points {
+            *p = name(*p);
+        }
+    }
+    curves
+}
+
+/// [`assemble_named`] with the points left in the edges' indices: the same curves in the
+/// same order, each point to be named still. (The pipeline reads the loops in the
+/// triangulation's local indices first, which follow the points' locality, and names them
+/// afterwards: looking the local index of every point up from the caller's, shuffled,
+/// was a cache miss per point.)
+pub(crate) fn assemble_unnamed(
+    point_count: usize,
+    edges: &[[u32; 2]],
+    points: &[[f64; 2]],
+    name: impl Fn(u32) -> u32,
+) -> Vec<Curve> {
     let mut adjacency = Adjacency::new(point_count, edges);
     // Each row by the names of the neighbours: the order of the walks out of a point.
     for p in 0..point_count {
@@ -65,7 +85,7 @@ pub(crate) fn assemble_named(
             }
             curves.push(Curve {
                 closed: false,
-                points: chain.into_iter().map(&name).collect(),
+                points: chain,
             });
         }
     }
@@ -81,15 +101,16 @@ pub(crate) fn assemble_named(
             orient_counterclockwise(&mut cycle, points, &name);
             curves.push(Curve {
                 closed: true,
-                points: cycle.into_iter().map(&name).collect(),
+                points: cycle,
             });
         }
     }
     // Stable, and already sorted when the names are the indices.
     curves.sort_by(|a, b| {
+        let first_two = |c: &Curve| [0, 1].map(|k| c.points.get(k).map(|&p| name(p)));
         a.closed
             .cmp(&b.closed)
-            .then_with(|| a.points.iter().take(2).cmp(b.points.iter().take(2)))
+            .then_with(|| first_two(a).cmp(&first_two(b)))
     });
     curves
 }

@@ -213,7 +213,7 @@ const NOISE_TOLERANCE: f64 = 8.0;
 /// every branch (see the module docs).
 const NOISE_RADIUS_RATIO: f64 = 2.0;
 
-/// The pruned medial axis of the closed curves among `curves` (caller indices of the
+/// The pruned medial axis of the closed curves among `curves` (local indices of the
 /// points of `vor`); empty when there are none. See the module docs.
 ///
 /// Read off `vor` itself, with the triangles around points off the loops inside the region
@@ -225,8 +225,7 @@ pub(super) fn pruned_medial_axis(mut vor: Voronoi<'_>, curves: &[Curve]) -> Medi
     if loops.is_empty() || tri.is_degenerate() {
         return MedialAxis::default();
     }
-    let local = |i| tri.local_index(i);
-    let edges = loop_edges(&loops, local);
+    let edges = loop_edges(&loops);
     let mut marks = LoopMarks::new(&vor, &edges, false);
     if marks.unresolved {
         drop((marks, edges));
@@ -252,7 +251,7 @@ pub(super) fn pruned_medial_axis(mut vor: Voronoi<'_>, curves: &[Curve]) -> Medi
         drop((marks, inside));
         return subset_axis(vor, &loops);
     };
-    let noise = noise_at_points(&loops, |i| tri.point(i), local, tri.distinct_point_count());
+    let noise = noise_at_points(&loops, &tri.points);
     // The positions of all vertices (16 bytes each, 32 a point) are not held through the
     // graph's balls, the memory peak: the balls' centres are computed again, the same way
     // (a few per cent of the axis phase).
@@ -271,7 +270,7 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
     drop(vor);
     let points: Vec<[f64; 2]> = loops
         .iter()
-        .flat_map(|c| c.points.iter().map(|&i| tri.point(i)))
+        .flat_map(|c| c.points.iter().map(|&p| tri.points[p as usize]))
         .collect();
     // The subset is a selection of already validated distinct points: this cannot fail.
     let Ok(sub) = triangulate(&points) else {
@@ -281,23 +280,22 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
         return MedialAxis::default();
     }
     // The subset's caller indices are positions in `points`, which lists the loops one
-    // after the other.
+    // after the other: the loops in the subset's local indices.
     let mut position = 0u32;
     let renumbered: Vec<Curve> = loops
         .iter()
         .map(|c| {
-            let points = (position..position + c.points.len() as u32).collect();
+            let positions = position..position + c.points.len() as u32;
             position += c.points.len() as u32;
             Curve {
-                points,
+                points: positions.map(|i| sub.local_index(i)).collect(),
                 closed: true,
             }
         })
         .collect();
     let renumbered: Vec<&Curve> = renumbered.iter().collect();
-    let local = |i| sub.local_index(i);
-    let edges = loop_edges(&renumbered, local);
-    let noise = noise_at_points(&renumbered, |i| sub.point(i), local, points.len());
+    let edges = loop_edges(&renumbered);
+    let noise = noise_at_points(&renumbered, &sub.points);
     let vor = sub.voronoi();
     let axis = {
         let mut marks = LoopMarks::new(&vor, &edges, true);
@@ -313,20 +311,15 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
     axis.pruned()
 }
 
-/// The noise amplitude ([`noise::loop_estimates`]) at every point of `loops`, by local
-/// index (`count` points; `position` and `local` map a caller index), negated (its sign bit
-/// set, `-0.0` too) where the samples zig-zag: oscillation at least [`CLEAN_OSCILLATION`].
-/// One `f32` per point, as before the oscillation was read (the memory peak).
-fn noise_at_points(
-    loops: &[&Curve],
-    position: impl Fn(u32) -> [f64; 2] + Sync,
-    local: impl Fn(u32) -> u32,
-    count: usize,
-) -> Vec<f32> {
-    let mut noise = vec![0.0f32; count];
+/// The noise amplitude ([`noise::loop_estimates`]) at every point of `loops` (local
+/// indices of `points`), by local index, negated (its sign bit set, `-0.0` too) where the
+/// samples zig-zag: oscillation at least [`CLEAN_OSCILLATION`]. One `f32` per point, as
+/// before the oscillation was read (the memory peak).
+fn noise_at_points(loops: &[&Curve], points: &[[f64; 2]]) -> Vec<f32> {
+    let mut noise = vec![0.0f32; points.len()];
     for c in loops {
         let n = c.points.len();
-        let at = |k: usize| position(c.points[k]);
+        let at = |k: usize| points[c.points[k] as usize];
         // In parallel over stretches of the loop (each value reads only its neighbours).
         let mut along = vec![0.0f32; n];
         parallel::fill_chunks(&mut along, |stretch, out| {
@@ -339,23 +332,22 @@ fn noise_at_points(
                 };
             });
         });
-        for (&i, value) in c.points.iter().zip(along) {
-            noise[local(i) as usize] = value;
+        for (&p, value) in c.points.iter().zip(along) {
+            noise[p as usize] = value;
         }
     }
     noise
 }
 
-/// The edges of `loops` as pairs of local indices, smaller first, in the loops' order
-/// (`local` maps a caller index). Not sorted: what reads them marks sets, and along a loop
-/// the points are neighbours in memory too (sorting cost more than it saved in the
-/// half-edge search).
-fn loop_edges(loops: &[&Curve], local: impl Fn(u32) -> u32) -> Vec<[u32; 2]> {
+/// The edges of `loops` (local indices) as pairs, smaller first, in the loops' order. Not
+/// sorted: what reads them marks sets, and along a loop the points are neighbours in
+/// memory too (sorting cost more than it saved in the half-edge search).
+fn loop_edges(loops: &[&Curve]) -> Vec<[u32; 2]> {
     let mut edges = Vec::with_capacity(loops.iter().map(|c| c.points.len()).sum());
     for c in loops {
         let n = c.points.len();
         for k in 0..n {
-            let (a, b) = (local(c.points[k]), local(c.points[(k + 1) % n]));
+            let (a, b) = (c.points[k], c.points[(k + 1) % n]);
             edges.push([a.min(b), a.max(b)]);
         }
     }
@@ -788,6 +780,18 @@ mod tests {
         assert!(beyond > 50 && on > 50, "{beyond} beyond, {on} on the edge");
     }
 
+    /// `curves` (caller indices) in the local indices of `tri`, as the pipeline hands
+    /// them to the axis.
+    fn local_curves(tri: &Triangulation, curves: &[Curve]) -> Vec<Curve> {
+        curves
+            .iter()
+            .map(|c| Curve {
+                closed: c.closed,
+                points: c.points.iter().map(|&i| tri.local_index(i)).collect(),
+            })
+            .collect()
+    }
+
     /// Points on two separate closed curves (a squashed star and a circle), in scrambled
     /// order, with the loops through them.
     fn two_shapes(rng: &mut Rng, n: usize) -> (Vec<[f64; 2]>, Vec<Curve>) {
@@ -839,20 +843,20 @@ mod tests {
         for round in 0..20 {
             let (points, curves) = two_shapes(&mut rng, 60 + 10 * round);
             let tri = triangulate(&points).unwrap();
-            let direct = pruned_medial_axis(tri.voronoi(), &curves);
+            let direct = pruned_medial_axis(tri.voronoi(), &local_curves(&tri, &curves));
             assert!(direct.edges.len() > 20, "round {round}");
 
             let mut noisy = points.clone();
             noisy.extend((0..5 + round).map(|_| [rng.range(-2.0, 6.0), rng.range(-1.5, 1.5)]));
             let tri = triangulate(&noisy).unwrap();
+            let curves = local_curves(&tri, &curves);
             let with_cavity = pruned_medial_axis(tri.voronoi(), &curves);
             let loops: Vec<&Curve> = curves.iter().collect();
             let via_subset = subset_axis(tri.voronoi(), &loops);
             assert_eq!(segments(&direct), segments(&with_cavity), "round {round}");
             assert_eq!(segments(&direct), segments(&via_subset), "round {round}");
 
-            let local = |i| tri.local_index(i);
-            let edges = loop_edges(&loops, local);
+            let edges = loop_edges(&loops);
             let vor = tri.voronoi();
             let inside = LoopMarks::new(&vor, &edges, false).inside_faces(&vor);
             let off_loop = off_loop_points_inside(&vor, &edges, &inside);
@@ -879,13 +883,13 @@ mod tests {
             points: (0..points.len() as u32).collect(),
         }];
         let tri = triangulate(&points).unwrap();
-        let direct = pruned_medial_axis(tri.voronoi(), &curves);
+        let direct = pruned_medial_axis(tri.voronoi(), &local_curves(&tri, &curves));
         assert!(!direct.edges.is_empty());
         for inside in [vec![[3.0, 3.0]], vec![[2.0, 2.0], [5.0, 3.0], [7.5, 4.0]]] {
             let mut with_inside = points.clone();
             with_inside.extend(inside);
             let tri = triangulate(&with_inside).unwrap();
-            let axis = pruned_medial_axis(tri.voronoi(), &curves);
+            let axis = pruned_medial_axis(tri.voronoi(), &local_curves(&tri, &curves));
             assert_eq!(segments(&direct), segments(&axis));
         }
     }

@@ -1,6 +1,6 @@
 //! Peeling: nested curves (holes) by further passes on the points the crust left untouched,
 //! and which inner Voronoi vertices those holes take away from the medial axis. All point
-//! indices here are local to the full triangulation, except the curves' (see [`hole_edges`]).
+//! indices here are local to the full triangulation.
 
 use super::curves::{assemble_named, Adjacency, Curve};
 use super::ears::{repair_ears, Ears};
@@ -451,23 +451,20 @@ impl Peeling {
 /// loop through an edge without a dual (inside a merged cocircular face) cannot separate
 /// that face's vertex and is not counted either.
 ///
-/// The curves are the final ones, in caller indices; `not_first_pass` (which tells the
-/// curves' edges the first pass did not find) and the result are in local indices.
+/// The curves (the final ones), `not_first_pass` (which tells the curves' edges the first
+/// pass did not find) and the result are in local indices.
 pub(super) fn hole_edges(
     vor: &Voronoi<'_>,
     curves: &[Curve],
     not_first_pass: impl Fn(&[u32; 2]) -> bool,
 ) -> Vec<[u32; 2]> {
-    let tri = vor.triangulation();
     let mut holes = Vec::new();
     for curve in curves.iter().filter(|c| c.closed) {
-        let local = |i: &u32| tri.local_index(*i);
         let loop_edges = curve
             .points
             .iter()
-            .map(local)
-            .zip(curve.points.iter().cycle().skip(1).map(local))
-            .map(|(a, b)| [a.min(b), a.max(b)]);
+            .zip(curve.points.iter().cycle().skip(1))
+            .map(|(&a, &b)| [a.min(b), a.max(b)]);
         let is_hole = loop_edges.clone().all(|[a, b]| {
             not_first_pass(&[a, b]) && vor.delaunay_halfedge(a, b).is_some_and(|e| vor.has_dual(e))
         });

@@ -54,10 +54,11 @@ pub enum Phase {
     Extract,
     /// Further passes for nested curves (WDM with peeling).
     Peel,
-    /// Curve assembly, the translation to caller indices and the unassigned points.
+    /// Curve assembly and the unassigned points (with a baseline algorithm, also the
+    /// translation to the caller's indices).
     Curves,
-    /// The medial axis (WDM); then, for WDM, the edges in the caller's indices, read off
-    /// the curves (not held through the axis, the memory peak).
+    /// The medial axis (WDM); then the curves' translation to the caller's indices, and the
+    /// edges read off them (not held through the axis, the memory peak).
     MedialAxis,
 }
 
@@ -175,7 +176,13 @@ pub fn reconstruct_observed(
             later_pass.extend_from_slice(&repair.added);
             later_pass.sort_unstable();
         }
-        let curves = assemble(&triangulation, &edges);
+        // In local indices until the axis has read them (see `assemble_unnamed`).
+        let mut curves = curves::assemble_unnamed(
+            triangulation.points.len(),
+            &edges,
+            &triangulation.points,
+            |p| triangulation.input_index(p),
+        );
         let unassigned = untouched_local_points(&triangulation, &edges);
         let holes = if holes_possible {
             // The edges are distinct: those of the first pass the repair kept, then the
@@ -214,6 +221,9 @@ pub fn reconstruct_observed(
                 .collect();
             medial_axis(&vor, &combined, &later_pass)
         };
+        for p in curves.iter_mut().flat_map(|c| c.points.iter_mut()) {
+            *p = triangulation.input_index(*p);
+        }
         let edges = curves::edges_of(&curves);
         lap(Phase::MedialAxis);
         (labels, edges, curves, axis, peeling, unassigned)

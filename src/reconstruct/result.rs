@@ -116,7 +116,12 @@ pub(super) fn untouched_local_points(tri: &Triangulation, edges: &[[u32; 2]]) ->
         touched[a as usize] = true;
         touched[b as usize] = true;
     }
-    (0..tri.point_count() as u32)
-        .filter(|&i| !tri.is_duplicate(i) && !touched[tri.local_index(i) as usize])
-        .collect()
+    // Read in local order (a point's caller index is where its first occurrence was): the
+    // caller's order jumps all over the marks, a cache miss per point at 10^7.
+    let mut untouched: Vec<u32> = (0..touched.len() as u32)
+        .filter(|&p| !touched[p as usize])
+        .map(|p| tri.input_index(p))
+        .collect();
+    untouched.sort_unstable();
+    untouched
 }

@@ -130,7 +130,7 @@ fn walk(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::delaunay::triangulate;
+    use crate::delaunay::{triangulate, Triangulation};
     use wdm_crust_testkit::Rng;
 
     fn opposite(s: Sign, t: Sign) -> bool {
@@ -142,9 +142,11 @@ mod tests {
 
     /// 4 to 63 random points in even rounds; in odd ones points of a small lattice (segments
     /// through points, collinear runs).
-    fn random_or_lattice(rng: &mut Rng, round: usize) -> Vec<[f64; 2]> {
+    /// The triangulation of 4 to 63 random points, uniform in even rounds and on a 7 × 7
+    /// lattice in odd ones (cocircular faces, collinear runs); `None` when degenerate.
+    fn random_triangulation(rng: &mut Rng, round: usize) -> Option<Triangulation> {
         let n = 4 + rng.below(60);
-        (0..n)
+        let points: Vec<[f64; 2]> = (0..n)
             .map(|_| {
                 if round % 2 == 0 {
                     [rng.f64(), rng.f64()]
@@ -152,7 +154,9 @@ mod tests {
                     [rng.below(7) as f64, rng.below(7) as f64]
                 }
             })
-            .collect()
+            .collect();
+        let tri = triangulate(&points).unwrap();
+        (!tri.is_degenerate()).then_some(tri)
     }
 
     /// The reference: every curve edge and every point, tested against the segment.
@@ -184,11 +188,9 @@ mod tests {
         let mut rng = Rng::new(43);
         let mut walked = 0;
         for round in 0..200 {
-            let points = random_or_lattice(&mut rng, round);
-            let tri = triangulate(&points).unwrap();
-            if tri.is_degenerate() {
+            let Some(tri) = random_triangulation(&mut rng, round) else {
                 continue;
-            }
+            };
             let vor = tri.voronoi();
             let local = &tri.points;
             for _ in 0..30 {
@@ -231,11 +233,9 @@ mod tests {
         let mut rng = Rng::new(41);
         let mut crossings = 0;
         for round in 0..200 {
-            let points = random_or_lattice(&mut rng, round);
-            let tri = triangulate(&points).unwrap();
-            if tri.is_degenerate() {
+            let Some(tri) = random_triangulation(&mut rng, round) else {
                 continue;
-            }
+            };
             let vor = tri.voronoi();
             let local = &tri.points;
             let m = local.len() as u32;

@@ -44,6 +44,7 @@ for set in curve even-curve; do
     run 90 1 "$set" 10000000 reconstruct
     run 60 16 "$set" 10000000 reconstruct
 done
+run 60 4 even-curve 10000000 reconstruct
 
 # Item 3: 10^8 points, triangulated on one thread (n log n flatness) and reconstructed with
 # the default pruned axis on all cores (peak memory per point).

@@ -1,18 +1,23 @@
-//! The Z order of many points on all threads (feature `parallel`): the keys, their sort, and
-//! the input index of each item at the end. (The copy of the points into key order stays
-//! sequential: a gather on two threads was no faster than its scatter on one.)
+//! The Z order of many points on all threads (feature `parallel`): the keys, their sort, the
+//! runs of equal keys and the duplicates in them, the copy of the points into key order, and
+//! the input index of each item at the end.
 //!
-//! Every result is the sequential one: the keys and indices are maps, item by item, and the
-//! sort is a stable sort by key (the two halves radix-sorted at the same time, then
-//! merged stably in independent pieces), which leaves one possible array.
+//! Every result is the sequential one: the keys, points and indices are maps, item by item;
+//! the sort is a stable sort by key (the two halves radix-sorted at the same time, then
+//! merged stably in independent pieces), which leaves one possible array; and runs of equal
+//! keys, where all the settling and duplicate merging happens, never straddle two pieces.
 
 use rayon::prelude::*;
 
-use super::{radix_sort, Grid};
+use super::{radix_sort, settle_piece, Grid};
 
 /// Inputs of at least this many points are ordered on all threads (below, the fork and the
 /// merge's extra pass cost more than they save).
 const MIN_POINTS: usize = 1 << 16;
+
+/// Items per piece when runs of equal keys are settled (a piece grows to the end of the run
+/// its nominal end falls in).
+const SETTLE_GRAIN: usize = 1 << 16;
 
 /// Pieces of a merge at most this long are merged on one thread.
 const MERGE_GRAIN: usize = 1 << 15;
@@ -28,6 +33,57 @@ pub(super) fn keyed_items(points: &[[f64; 2]], grid: &Grid) -> Vec<u64> {
         .par_iter()
         .enumerate()
         .map(|(i, &p)| grid.key(p) | i as u64)
+        .collect()
+}
+
+/// [`super::settle_and_drop_duplicates`] on all threads: the sorted items cut into pieces
+/// at run boundaries, each settled on its own, the kept items then moved together.
+pub(super) fn settle_and_drop_duplicates(
+    items: &mut Vec<u64>,
+    points: &[[f64; 2]],
+    grid: &Grid,
+) -> Vec<[u32; 2]> {
+    let key_mask = !0u64 << grid.index_bits();
+    let mut starts = vec![0];
+    let mut end = SETTLE_GRAIN;
+    while end < items.len() {
+        while end < items.len() && (items[end - 1] ^ items[end]) & key_mask == 0 {
+            end += 1;
+        }
+        if end < items.len() {
+            starts.push(end);
+        }
+        end += SETTLE_GRAIN;
+    }
+    let mut pieces = Vec::with_capacity(starts.len());
+    let mut rest = items.as_mut_slice();
+    for w in starts.windows(2) {
+        let (piece, tail) = rest.split_at_mut(w[1] - w[0]);
+        pieces.push(piece);
+        rest = tail;
+    }
+    pieces.push(rest);
+    let settled: Vec<(usize, Vec<[u32; 2]>)> = pieces
+        .into_par_iter()
+        .map(|piece| settle_piece(piece, points, grid))
+        .collect();
+    let mut kept = 0;
+    let mut duplicates = Vec::new();
+    for (&start, (count, piece_duplicates)) in starts.iter().zip(settled) {
+        items.copy_within(start..start + count, kept);
+        kept += count;
+        duplicates.extend(piece_duplicates);
+    }
+    items.truncate(kept);
+    duplicates
+}
+
+/// [`super::kept_points`] on all threads: a gather (one scattered read per item), which the
+/// threads share; on one thread the sequential form's scatter is faster.
+pub(super) fn kept_points(points: &[[f64; 2]], items: &[u64], grid: &Grid) -> Vec<[f64; 2]> {
+    items
+        .par_iter()
+        .map(|&item| points[grid.index(item) as usize])
         .collect()
 }
 
@@ -128,6 +184,49 @@ mod tests {
                     .install(|| sort_items(&mut sorted, low));
                 assert_eq!(sorted, stable_by_key(&items, low), "{n} items, {threads}");
             }
+        }
+    }
+
+    /// Runs of equal keys of every length (copies of one point, clusters finer than the
+    /// grid, which are re-keyed) across many settling pieces: the same order, points and
+    /// duplicates on any number of threads.
+    #[test]
+    fn the_order_is_the_same_on_any_thread_count() {
+        let mut s = 5u64;
+        let mut next = move || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            s >> 11
+        };
+        let points: Vec<[f64; 2]> = (0..300_000)
+            .map(|i| match i % 4 {
+                // A coarse lattice: many exact duplicates.
+                0 => [(next() % 300) as f64, (next() % 300) as f64],
+                // A cluster far finer than the grid, with its own duplicates.
+                1 => [
+                    1.0 + (next() % 5000) as f64 * 1e-12,
+                    2.0 + (next() % 7) as f64 * 1e-12,
+                ],
+                _ => [
+                    (next() % 1_000_000) as f64 * 3e-4,
+                    (next() % 1_000_000) as f64 * 3e-4,
+                ],
+            })
+            .collect();
+        let grid = Grid::new(&points);
+        let in_pool = |threads: usize| {
+            let o = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+                .install(|| super::super::order(&points, &grid));
+            (o.points, o.items, o.duplicates)
+        };
+        let one = in_pool(1);
+        assert!(one.2.len() > 50_000, "{} duplicates", one.2.len());
+        for threads in [2, 3, 5] {
+            assert!(in_pool(threads) == one, "{threads} threads");
         }
     }
 

@@ -221,31 +221,71 @@ pub(crate) struct Adjacency {
 
 impl Adjacency {
     pub(crate) fn new(point_count: usize, edges: &[[u32; 2]]) -> Self {
-        let mut start = vec![0u32; point_count + 1];
+        Adjacency::in_slots(point_count, edges, |p| p as usize)
+    }
+
+    /// The entries of point `p` in slot `slot(p)` (below `slot_count`), naming the edge and
+    /// the neighbour as given.
+    fn in_slots(slot_count: usize, edges: &[[u32; 2]], slot: impl Fn(u32) -> usize) -> Self {
+        let mut start = vec![0u32; slot_count + 1];
         for &[a, b] in edges {
-            start[a as usize + 1] += 1;
-            start[b as usize + 1] += 1;
+            start[slot(a) + 1] += 1;
+            start[slot(b) + 1] += 1;
         }
-        for i in 0..point_count {
+        for i in 0..slot_count {
             start[i + 1] += start[i];
         }
         let mut fill = start.clone();
         let mut entries = vec![(0, 0); 2 * edges.len()];
         for (i, &[a, b]) in edges.iter().enumerate() {
-            entries[fill[a as usize] as usize] = (i as u32, b);
-            fill[a as usize] += 1;
-            entries[fill[b as usize] as usize] = (i as u32, a);
-            fill[b as usize] += 1;
+            let (sa, sb) = (slot(a), slot(b));
+            entries[fill[sa] as usize] = (i as u32, b);
+            fill[sa] += 1;
+            entries[fill[sb] as usize] = (i as u32, a);
+            fill[sb] += 1;
         }
         Adjacency { start, entries }
     }
 
+    /// `(edge, neighbour)` for every edge at `p`, in the order of the edges.
     pub(crate) fn neighbours(&self, p: u32) -> &[(u32, u32)] {
-        &self.entries[self.start[p as usize] as usize..self.start[p as usize + 1] as usize]
+        self.in_slot(p as usize)
+    }
+
+    fn in_slot(&self, slot: usize) -> &[(u32, u32)] {
+        &self.entries[self.start[slot] as usize..self.start[slot + 1] as usize]
     }
 
     fn degree(&self, p: u32) -> usize {
         self.neighbours(p).len()
+    }
+}
+
+/// An [`Adjacency`] of a few edges, with slots for their points alone (found by a binary
+/// search): nothing is built over all the points. It knows every edge at a point only where
+/// every edge at that point is among those given.
+pub(crate) struct SomeAdjacency {
+    /// The points of the edges, sorted: the slot of a point is its position here.
+    members: Vec<u32>,
+    adjacency: Adjacency,
+}
+
+impl SomeAdjacency {
+    pub(crate) fn new(edges: &[[u32; 2]]) -> Self {
+        let mut members: Vec<u32> = edges.iter().flatten().copied().collect();
+        members.sort_unstable();
+        members.dedup();
+        let slot = |p: u32| members.binary_search(&p).unwrap_or_default();
+        let adjacency = Adjacency::in_slots(members.len(), edges, slot);
+        SomeAdjacency { members, adjacency }
+    }
+
+    /// As [`Adjacency::neighbours`]; nothing for a point of none of the edges.
+    pub(crate) fn neighbours(&self, p: u32) -> &[(u32, u32)] {
+        match self.members.binary_search(&p) {
+            Ok(slot) => self.adjacency.in_slot(slot),
+            Err(_) => &[],
+        }
     }
 }
 
@@ -412,6 +452,44 @@ mod tests {
                 .collect();
             named.sort_unstable();
             assert_eq!(edges_of(&curves), named, "round {round}");
+        }
+    }
+
+    /// The edges at a few points of a random graph: at every point the entries of
+    /// [`Adjacency`] over all points, so every edge at the points asked for.
+    #[test]
+    fn some_adjacency_answers_at_the_points_it_holds_whole() {
+        let mut rng = wdm_crust_testkit::Rng::new(5);
+        for round in 0..200 {
+            let n = 2 + rng.below(60);
+            let mut edges = Vec::new();
+            for _ in 0..rng.below(2 * n) {
+                let (a, b) = (rng.below(n) as u32, rng.below(n) as u32);
+                if a != b {
+                    edges.push([a.min(b), a.max(b)]);
+                }
+            }
+            edges.sort_unstable();
+            edges.dedup();
+            let asked: Vec<bool> = (0..n).map(|_| rng.below(4) == 0).collect();
+            let picked: Vec<[u32; 2]> = edges
+                .iter()
+                .copied()
+                .filter(|&[a, b]| asked[a as usize] || asked[b as usize])
+                .collect();
+            let whole = Adjacency::new(n, &picked);
+            let some = SomeAdjacency::new(&picked);
+            for p in 0..n as u32 {
+                assert_eq!(
+                    some.neighbours(p),
+                    whole.neighbours(p),
+                    "round {round}, {p}"
+                );
+                if asked[p as usize] {
+                    let all = edges.iter().filter(|e| e.contains(&p)).count();
+                    assert_eq!(some.neighbours(p).len(), all, "round {round}, {p}");
+                }
+            }
         }
     }
 }

@@ -47,6 +47,7 @@
 use std::cmp::Reverse;
 use std::collections::{BTreeMap, BTreeSet, BinaryHeap, HashMap};
 
+use super::bits::Bits;
 use super::curves::Adjacency;
 use super::nn_crust::closer;
 use super::spikes::drop_woven_spikes;
@@ -96,8 +97,15 @@ impl Repair {
 
     /// Applies the repair to the edges it was computed on.
     pub(super) fn apply(&self, edges: &mut Vec<[u32; 2]>) {
-        if !self.removed.is_empty() {
-            edges.retain(|e| self.removed.binary_search(e).is_err());
+        if let Some(largest) = self.removed.iter().map(|e| e[0]).max() {
+            // A bit test on the smaller end first: a search of `removed` for every edge was
+            // most of the time.
+            let mut ends = Bits::new(largest as usize + 1);
+            for &[a, _] in &self.removed {
+                ends.set(a as usize);
+            }
+            let may_be_removed = |a: u32| a <= largest && ends.get(a as usize);
+            edges.retain(|e| !may_be_removed(e[0]) || self.removed.binary_search(e).is_err());
         }
         edges.extend_from_slice(&self.added);
     }
@@ -157,23 +165,40 @@ type Group = Vec<[u32; 2]>;
 /// Step 1: the candidate edges, without loose ends, in groups ordered by their smallest
 /// point; only the groups that touch between 2 and [`MAX_ANCHORS`] points on a curve.
 fn stretches(named: &mut NeighbourNames<'_, '_>, on_curve: &[bool]) -> Vec<Group> {
-    let mut candidates = candidate_edges(named, on_curve);
-    without_loose_ends(&mut candidates, on_curve);
-    if candidates.is_empty() {
-        // Nothing to group (the groups below take 4 bytes a point).
+    let candidates = candidate_edges(named, on_curve);
+    // The structures below are over the candidates' points alone, renamed to their
+    // positions among them (over all points, they were most of the repair's time on large,
+    // nearly clean inputs). The renaming keeps the order, so edges stay `[min, max]`, sorted,
+    // and a group's smallest point is still its root.
+    let mut members: Vec<u32> = candidates.iter().flatten().copied().collect();
+    members.sort_unstable();
+    members.dedup();
+    let position = |p: u32| members.binary_search(&p).unwrap_or_default() as u32;
+    let mut renamed: Vec<[u32; 2]> = candidates
+        .iter()
+        .map(|&[a, b]| [position(a), position(b)])
+        .collect();
+    let members_on_curve: Vec<bool> = members.iter().map(|&p| on_curve[p as usize]).collect();
+    without_loose_ends(&mut renamed, &members_on_curve);
+    if renamed.is_empty() {
         return Vec::new();
     }
-    let mut groups = UnionFind::new(on_curve.len());
-    for &[a, b] in &candidates {
+    let mut groups = UnionFind::new(members.len());
+    for &[a, b] in &renamed {
         groups.union(a, b);
     }
     // Sorted by root, the smallest point of the group: the groups in the order of it.
-    let mut keyed: Vec<(u32, [u32; 2])> =
-        candidates.iter().map(|&e| (groups.find(e[0]), e)).collect();
+    let mut keyed: Vec<(u32, [u32; 2])> = renamed.iter().map(|&e| (groups.find(e[0]), e)).collect();
     keyed.sort_unstable();
+    let named = |p: u32| members[p as usize];
     keyed
         .chunk_by(|x, y| x.0 == y.0)
-        .map(|group| group.iter().map(|&(_, e)| e).collect::<Group>())
+        .map(|group| {
+            group
+                .iter()
+                .map(|&(_, [a, b])| [named(a), named(b)])
+                .collect::<Group>()
+        })
         .filter(|group| (2..=MAX_ANCHORS).contains(&anchors(group, on_curve).len()))
         .collect()
 }

@@ -166,13 +166,12 @@
 //! (relative) of the threshold. The order of the removals, and every tie, is decided by radius and then by
 //! coordinates, so the result depends on the points, never on their order.
 
-mod bits;
 mod cavity;
 mod noise;
 mod pruning;
 
-use self::bits::Bits;
 use self::cavity::Cavity;
+use super::bits::Bits;
 use super::curves::Curve;
 use super::lengths::distance;
 use super::result::MedialAxis;

@@ -14,6 +14,7 @@
 //! `result` (what is returned);
 //! [`crust`] and [`nn_crust`] are the classical baselines on the same exact engine.
 
+mod bits;
 mod corridors;
 pub mod crust;
 mod curves;

@@ -2,7 +2,8 @@
 //! and which inner Voronoi vertices those holes take away from the medial axis. All point
 //! indices here are local to the full triangulation.
 
-use super::curves::{assemble_named, Adjacency, Curve};
+use super::bits::Bits;
+use super::curves::{assemble_named, Adjacency, Curve, SomeAdjacency};
 use super::ears::{repair_ears, Ears};
 use super::extract::wdm_crust_edges;
 use super::lengths::distance;
@@ -83,16 +84,11 @@ pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
     let tri = full.triangulation();
     let points = &tri.points;
     let n = points.len();
-    // A clean sample leaves fewer than three points to peel: return before building anything.
-    let mut touched = vec![false; n];
-    for &[a, b] in edges.iter() {
-        touched[a as usize] = true;
-        touched[b as usize] = true;
-    }
-    if touched.iter().filter(|&&t| !t).nth(2).is_none() {
+    // A clean sample leaves fewer than three points to peel, and a nearly clean one only
+    // leftovers of its noise: return before building anything over all the points.
+    if !first_pass_may_run(full, edges) {
         return Peeling::done(0);
     }
-    drop(touched);
     let mut budget = options.peeling_budget().saturating_mul(n);
     // Points that can no longer start a curve: noise leftovers and what a pass could only
     // read as noise.
@@ -101,7 +97,9 @@ pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
     loop {
         let curve = Adjacency::new(n, edges);
         for p in 0..n as u32 {
-            if !spent[p as usize] && curve.neighbours(p).is_empty() && near_a_curve(full, &curve, p)
+            if !spent[p as usize]
+                && curve.neighbours(p).is_empty()
+                && near_a_curve(full, |q| curve.neighbours(q), p)
             {
                 spent[p as usize] = true;
             }
@@ -147,6 +145,45 @@ pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
     }
 }
 
+/// Would the first round of [`peel`]'s loop go on to a later pass: are three or more
+/// untouched points neither near a curve nor isolated? Decided as that round decides it,
+/// but with the curve edges at the untouched points' Delaunay neighbours alone: a large,
+/// nearly clean sample leaves a handful of untouched points, and the loop's structures
+/// over all points (an adjacency of every edge) were then most of the phase's time.
+fn first_pass_may_run(full: &Voronoi<'_>, edges: &[[u32; 2]]) -> bool {
+    let n = full.triangulation().points.len();
+    let mut touched = Bits::new(n);
+    for &[a, b] in edges {
+        touched.set(a as usize);
+        touched.set(b as usize);
+    }
+    let untouched: Vec<u32> = (0..n as u32)
+        .filter(|&p| !touched.get(p as usize))
+        .collect();
+    if untouched.len() < 3 {
+        return false;
+    }
+    // Every curve edge at a neighbour of an untouched point: all that `near_a_curve` reads.
+    let mut asked = Bits::new(n);
+    for &p in &untouched {
+        for q in full.delaunay_neighbours_local(p) {
+            asked.set(q as usize);
+        }
+    }
+    let near: Vec<[u32; 2]> = edges
+        .iter()
+        .copied()
+        .filter(|&[a, b]| asked.get(a as usize) || asked.get(b as usize))
+        .collect();
+    let curve = SomeAdjacency::new(&near);
+    let rest: Vec<u32> = untouched
+        .into_iter()
+        .filter(|&p| !near_a_curve(full, |q| curve.neighbours(q), p))
+        .collect();
+    let isolated = isolated_leftovers(full, &rest);
+    rest.len() - isolated.len() >= 3
+}
+
 /// The left-over points that lie apart from every other left-over point: in connected
 /// groups of fewer than [`MIN_GROUP`] points, where a point is linked to a Delaunay
 /// neighbour (of all the points) in `rest` no farther than [`LINK`] times the longer of
@@ -157,15 +194,24 @@ pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
 /// Delaunay edges, and is lost. Measured in local spacings (the nearest-neighbour
 /// distances), so that the sparse parts of a drawing keep their strokes.
 ///
-/// The groups are sets of points: the result does not depend on the input order.
+/// The groups are sets of points: the result does not depend on the input order. `rest` is
+/// sorted.
 fn isolated_leftovers(full: &Voronoi<'_>, rest: &[u32]) -> Vec<u32> {
     let points = &full.triangulation().points;
     let at = |p: u32| points[p as usize];
-    // Position in `rest` of every point, or none.
-    let mut slot = vec![u32::MAX; points.len()];
-    for (i, &p) in rest.iter().enumerate() {
-        slot[p as usize] = i as u32;
-    }
+    // Position in `rest` (sorted) of a point, or none: an array over all points, or for
+    // few leftovers a binary search (the array alone would be a pass over all points).
+    let slots = (rest.len() >= points.len() / 64).then(|| {
+        let mut slots = vec![u32::MAX; points.len()];
+        for (i, &p) in rest.iter().enumerate() {
+            slots[p as usize] = i as u32;
+        }
+        slots
+    });
+    let slot = |q: u32| match &slots {
+        Some(slots) => Some(slots[q as usize] as usize).filter(|&j| j != u32::MAX as usize),
+        None => rest.binary_search(&q).ok(),
+    };
     let nearest: Vec<f64> = rest
         .iter()
         .map(|&p| {
@@ -188,11 +234,10 @@ fn isolated_leftovers(full: &Voronoi<'_>, rest: &[u32]) -> Vec<u32> {
             next += 1;
             let p = rest[i];
             for q in full.delaunay_neighbours_local(p) {
-                let j = slot[q as usize] as usize;
-                if j != u32::MAX as usize
-                    && !grouped[j]
-                    && distance(at(p), at(q)) <= LINK * nearest[i].max(nearest[j])
-                {
+                let Some(j) = slot(q) else {
+                    continue;
+                };
+                if !grouped[j] && distance(at(p), at(q)) <= LINK * nearest[i].max(nearest[j]) {
                     grouped[j] = true;
                     group.push(j);
                 }
@@ -405,19 +450,19 @@ fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
 /// points that lie closer to each other than to the curve instead lost the hole of a noisy
 /// annulus in most trials at noise of one spacing (its leftovers pair up), and a scan's noise
 /// is the common case.
-fn near_a_curve(full: &Voronoi<'_>, curve: &Adjacency, p: u32) -> bool {
+///
+/// `curve(q)` gives the curve edges at `q`, as [`Adjacency::neighbours`] does.
+fn near_a_curve<'a>(full: &Voronoi<'_>, curve: impl Fn(u32) -> &'a [(u32, u32)], p: u32) -> bool {
     let points = &full.triangulation().points;
     let at = |i: u32| points[i as usize];
     full.delaunay_neighbours_local(p).any(|q| {
         // The sample spacing at q: its shortest curve edge (a long edge, where a curve
         // bridges a gap, says nothing about how far its noise reaches).
-        let spacing = curve
-            .neighbours(q)
+        let spacing = curve(q)
             .iter()
             .map(|&(_, r)| distance(at(q), at(r)))
             .fold(f64::INFINITY, f64::min);
-        curve
-            .neighbours(q)
+        curve(q)
             .iter()
             .any(|&(_, r)| segment_distance(at(p), at(q), at(r)) < NEAR_CURVE * spacing)
     })

@@ -5,8 +5,8 @@
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap, VecDeque};
 
-use super::bits::Bits;
 use super::NEIGHBOURHOOD;
+use crate::reconstruct::bits::Bits;
 
 /// Takes leaves off the graph of `vertices` vertices and `edges`, smallest number first,
 /// and returns what remains. A leaf `u` goes when `beyond(u)`, or when `covers(w, u)` for a

@@ -1,5 +1,5 @@
-//! A set of indices below a fixed bound, one bit each: the loops' half-edges, the leaves
-//! waiting to be tested.
+//! A set of indices below a fixed bound, one bit each: the loops' half-edges and the leaves
+//! waiting to be tested (medial axis), the points a repair's removed edges touch.
 
 pub(super) struct Bits(Vec<u64>);
 

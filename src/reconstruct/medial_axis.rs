@@ -167,6 +167,7 @@
 //! coordinates, so the result depends on the points, never on their order.
 
 mod cavity;
+mod first_use;
 mod noise;
 mod parity;
 mod pruning;
@@ -513,7 +514,6 @@ impl Graph {
         let tri = vor.triangulation();
         let vertex_count = vor.vertex_count() as u32;
         let new_triangles = cavity.map_or(&[][..], |c| &c.triangles[..]);
-        let mut index = vec![u32::MAX; vertex_count as usize + new_triangles.len()];
         // A face lies on the left of its boundary half-edges; the circumcenter is beyond
         // a loop edge when it lies strictly on its right. By the inscribed angle, that is
         // when the angle at `c`, a corner of the face on the edge's left, is obtuse: an
@@ -535,28 +535,12 @@ impl Graph {
                 });
             noisy.then_some(NOISE_TOLERANCE as f32 * amplitude)
         };
-        let mut used = Vec::new();
-        let mut edges = Vec::new();
-        let mut renumber = |v: u32| {
-            if index[v as usize] == u32::MAX {
-                index[v as usize] = used.len() as u32;
-                used.push(v);
-            }
-            index[v as usize]
-        };
-        let mut add = |a: u32, b: u32| {
-            let (ia, ib) = (renumber(a), renumber(b));
-            edges.push([ia.min(ib), ia.max(ib)]);
-        };
-        for (_, a, b) in vor.finite_edges() {
-            if inside[a as usize] && inside[b as usize] {
-                add(a, b);
-            }
-        }
+        let slots = vertex_count as usize + new_triangles.len();
+        let mut numbered = first_use::inside_edges(vor, &inside, slots);
         let mut new_beyond = vec![false; new_triangles.len()];
         if let Some(cavity) = cavity {
             for &[s, t] in &cavity.shared {
-                add(vertex_count + s, vertex_count + t);
+                numbered.add(vertex_count + s, vertex_count + t);
             }
             for &(k, e) in &cavity.boundary {
                 let ends = [tri.org(e as usize), tri.dest(e as usize)];
@@ -569,10 +553,15 @@ impl Graph {
                 }
                 let w = vor.vertex_of_halfedge(twin);
                 if inside[w as usize] {
-                    add(vertex_count + k, w);
+                    numbered.add(vertex_count + k, w);
                 }
             }
         }
+        let first_use::Numbered {
+            index,
+            used,
+            mut edges,
+        } = numbered;
         drop((index, inside));
         // Computed in order of first use, which follows the triangulation's locality. The
         // radius is measured to the face's smallest corner, as its position is computed from

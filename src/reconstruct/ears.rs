@@ -37,8 +37,10 @@
 //! noise band of a curve instead of hanging off it: dropped.
 
 use std::cmp::Ordering;
+use std::collections::HashMap;
 
-use super::curves::Adjacency;
+use super::bits::Bits;
+use super::curves::SomeAdjacency;
 use super::peel::{lies_apart, median_length, MIN_LOOP_POINTS};
 use super::wdm::Label;
 use crate::delaunay::NO_TWIN;
@@ -76,10 +78,7 @@ pub(super) fn repair_ears(
     if pinches.is_empty() {
         return 0;
     }
-    let mut search = Components {
-        of: vec![UNKNOWN; vor.vertex_count()],
-        list: Vec::new(),
-    };
+    let mut search = Components::default();
     // The pinch point of every ear, by component (UNKNOWN: no ear).
     let mut ear_at: Vec<u32> = Vec::new();
     for &p in &pinches {
@@ -143,11 +142,21 @@ pub(super) fn drop_islets(
     if loops.is_empty() {
         return 0;
     }
-    let curve = Adjacency::new(n, edges);
-    let mut search = Components {
-        of: vec![UNKNOWN; vor.vertex_count()],
-        list: Vec::new(),
-    };
+    // The crust edges at the loops' Delaunay neighbours: all that `lies_apart` reads (an
+    // adjacency of every edge was most of this step's time on large inputs).
+    let mut asked = Bits::new(n);
+    for &p in loops.iter().flatten() {
+        for q in vor.delaunay_neighbours_local(p) {
+            asked.set(q as usize);
+        }
+    }
+    let near: Vec<[u32; 2]> = edges
+        .iter()
+        .copied()
+        .filter(|&[a, b]| asked.get(a as usize) || asked.get(b as usize))
+        .collect();
+    let curve = SomeAdjacency::new(&near);
+    let mut search = Components::default();
     let mut change = Change::default();
     for points in &loops {
         let own: Vec<[u32; 2]> = (0..points.len())
@@ -157,7 +166,13 @@ pub(super) fn drop_islets(
             })
             .collect();
         let spacing = median_length(&vor.triangulation().points, &own);
-        let beside_a_curve = !lies_apart(vor, &curve, points, spacing, |q| !points.contains(&q));
+        let beside_a_curve = !lies_apart(
+            vor,
+            |q| curve.neighbours(q),
+            points,
+            spacing,
+            |q| !points.contains(&q),
+        );
         if !beside_a_curve {
             continue;
         }
@@ -256,20 +271,28 @@ impl Component {
 }
 
 /// The inner components found so far.
+#[derive(Default)]
 struct Components {
-    /// The component of every vertex seen (UNKNOWN: not seen).
-    of: Vec<u32>,
+    /// The component of every vertex seen. A map: the searches stop early in large
+    /// components, so they see few vertices (an array over all vertices was a pass over
+    /// them, for every input).
+    seen: HashMap<u32, u32>,
     list: Vec<Component>,
 }
 
 impl Components {
+    /// The component of `v`, or [`UNKNOWN`] where no search has seen it.
+    fn of(&self, v: u32) -> u32 {
+        self.seen.get(&v).copied().unwrap_or(UNKNOWN)
+    }
+
     /// The component of the inner vertex `start`, explored breadth first over finite
     /// Voronoi edges between inner vertices if not seen before, until it shows
     /// [`MIN_LOOP_POINTS`] boundary points or reaches a vertex of a component found before (a
     /// large one: a small one is explored whole, so it would hold `start`).
     fn component(&mut self, vor: &Voronoi<'_>, labels: &[Label], start: u32) -> u32 {
-        if self.of[start as usize] != UNKNOWN {
-            return self.of[start as usize];
+        if self.of(start) != UNKNOWN {
+            return self.of(start);
         }
         let id = self.list.len() as u32;
         let mut component = Component {
@@ -277,7 +300,7 @@ impl Components {
             boundary: Vec::new(),
             boundary_points: Vec::new(),
         };
-        self.of[start as usize] = id;
+        self.seen.insert(start, id);
         let mut found = id;
         let mut next = 0;
         'search: while next < component.vertices.len() {
@@ -286,9 +309,9 @@ impl Components {
             for edge in vor.vertex_edges_local(v) {
                 match edge.to {
                     EdgeEnd::Vertex(u) if labels[u as usize] == Label::Inner => {
-                        let known = self.of[u as usize];
+                        let known = self.of(u);
                         if known == UNKNOWN {
-                            self.of[u as usize] = id;
+                            self.seen.insert(u, id);
                             component.vertices.push(u);
                         } else if known != id {
                             found = known;
@@ -312,7 +335,7 @@ impl Components {
         }
         if found != id {
             for &v in &component.vertices {
-                self.of[v as usize] = found;
+                self.seen.insert(v, found);
             }
             return found;
         }
@@ -324,9 +347,9 @@ impl Components {
     fn is_large_beside(&self, labels: &[Label], v: u32, ear: u32) -> bool {
         v != ROOT
             && labels[v as usize] == Label::Inner
-            && self.of[v as usize] != ear
-            && self.of[v as usize] != UNKNOWN
-            && !self.list[self.of[v as usize] as usize].is_small()
+            && self.of(v) != ear
+            && self.of(v) != UNKNOWN
+            && !self.list[self.of(v) as usize].is_small()
     }
 }
 
@@ -347,8 +370,7 @@ fn rejoining_vertex(
     }
     let k = cell.len();
     let at = |i: usize| cell[i % k];
-    let in_ear =
-        |v: u32| v != ROOT && labels[v as usize] == Label::Inner && search.of[v as usize] == ear;
+    let in_ear = |v: u32| v != ROOT && labels[v as usize] == Label::Inner && search.of(v) == ear;
     // The ear's vertices at p are one run (p has two edges of the ear): from `first` to `last`.
     let first = (0..k).find(|&i| in_ear(at(i)) && !in_ear(at(i + k - 1)))?;
     let last = (first..first + k).find(|&i| !in_ear(at(i + 1)))?;

@@ -332,7 +332,13 @@ fn close_by_chord(
     piece.closed = true;
     let points = &full.triangulation().points;
     let spacing = median_length(points, &piece_edges(piece));
-    if !lies_apart(full, earlier, &piece.points, spacing, |_| true) {
+    if !lies_apart(
+        full,
+        |q| earlier.neighbours(q),
+        &piece.points,
+        spacing,
+        |_| true,
+    ) {
         piece.closed = false;
     }
 }
@@ -386,9 +392,9 @@ fn is_a_curve(points: &[[f64; 2]], curve: &Curve, scale: f64) -> bool {
 ///
 /// Only the earlier curves' edges at the neighbours `q` with `counts(q)` are looked at (the
 /// islets of `ears.rs` leave out their own points).
-pub(super) fn lies_apart(
+pub(super) fn lies_apart<'a>(
     full: &Voronoi<'_>,
-    earlier: &Adjacency,
+    earlier: impl Fn(u32) -> &'a [(u32, u32)],
     curve: &[u32],
     spacing: f64,
     counts: impl Fn(u32) -> bool,
@@ -399,8 +405,7 @@ pub(super) fn lies_apart(
         full.delaunay_neighbours_local(p)
             .filter(|&q| counts(q))
             .all(|q| {
-                earlier
-                    .neighbours(q)
+                earlier(q)
                     .iter()
                     .all(|&(_, r)| segment_distance(at(p), at(q), at(r)) >= APART * spacing)
             })

@@ -73,6 +73,9 @@ mod components {
     /// A component's parity before the search reaches it.
     const UNREACHED: u8 = 2;
 
+    /// Half-edges per task of the unions.
+    const CHUNK: usize = 1 << 12;
+
     pub(super) fn parity(
         vor: &Voronoi<'_>,
         blocked: &[bool],
@@ -81,29 +84,34 @@ mod components {
         let halfedges = vor.triangulation().halfedges();
         let forest = Forest::new(vor.vertex_count());
         let open = |v: u32| !blocked[v as usize];
-        // Every finite Voronoi edge once (from its smaller half-edge): the ones that cross
-        // no loop join components, the others are kept. Consecutive ones often join the
-        // same two components; they are dropped once the components are known.
-        let crossing: Vec<[u32; 2]> = parallel::flat_map_chunks(halfedges.len(), |range, out| {
-            for e in range.map(|e| e as u32) {
+        // Every finite Voronoi edge once (from its smaller half-edge) between open vertices,
+        // with whether it crosses a loop.
+        let edges = |range: std::ops::Range<usize>| {
+            range.map(|e| e as u32).filter_map(|e| {
                 let twin = halfedges[e as usize];
                 if twin == NO_TWIN || e > twin || !vor.has_dual(e) {
-                    continue;
+                    return None;
                 }
                 let (a, b) = (vor.vertex_of_halfedge(e), vor.vertex_of_halfedge(twin));
-                if !open(a) || !open(b) {
-                    continue;
-                }
-                if crosses(e) {
-                    out.push([a, b]);
-                } else {
+                (open(a) && open(b)).then(|| (a, b, crosses(e)))
+            })
+        };
+        // The ones that cross no loop join components.
+        (0..halfedges.len().div_ceil(CHUNK))
+            .into_par_iter()
+            .for_each(|c| {
+                let range = c * CHUNK..((c + 1) * CHUNK).min(halfedges.len());
+                for (a, b, _) in edges(range).filter(|&(_, _, crossing)| !crossing) {
                     forest.union(a, b);
                 }
-            }
-        });
+            });
         let root = forest.into_roots();
-        let mut links: Vec<[u32; 2]> = parallel::flat_map_chunks(crossing.len(), |range, out| {
-            for &[a, b] in &crossing[range] {
+        // The crossing ones link components: found in a second pass, once the components
+        // are known, so that only the links are kept (consecutive edges mostly link the same
+        // two; a list of every crossing edge, 8 bytes a loop edge, stayed in the worker
+        // threads' allocators after it was freed).
+        let mut links: Vec<[u32; 2]> = parallel::flat_map_chunks(halfedges.len(), |range, out| {
+            for (a, b, _) in edges(range).filter(|&(_, _, crossing)| crossing) {
                 let (x, y) = (root[a as usize], root[b as usize]);
                 let link = [x.min(y), x.max(y)];
                 if out.last() != Some(&link) {
@@ -111,7 +119,6 @@ mod components {
                 }
             }
         });
-        drop(crossing);
         links.sort_unstable();
         links.dedup();
         // Both directions of every link, sorted: the neighbours of a component are a run.

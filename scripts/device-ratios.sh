@@ -9,22 +9,9 @@
 #   mkdir -p .device-bin && cp target/release/examples/stress .device-bin/
 #   device run: command "bash scripts/device-ratios.sh", carry [".device-bin"], timeout_s 300
 set -u
-bin=${STRESS_BIN:-.device-bin/stress}
-out=${OUT:-$(mktemp -d)}
-mkdir -p "$out"
-log="$out/ratios.txt"
-: >"$log"
+log_name=ratios.txt
+source "$(dirname "$0")/device-common.sh"
 
-# `run LIMIT THREADS ARGS…`: one stress run with RAYON_NUM_THREADS=THREADS.
-run() {
-    local limit=$1 threads=$2
-    shift 2
-    echo "## threads $threads: stress $*" | tee -a "$log"
-    RAYON_NUM_THREADS=$threads timeout "$limit" "$bin" "$@" 2>&1 | tee -a "$log"
-    echo "(exit ${PIPESTATUS[0]})" | tee -a "$log"
-}
-
-{ nproc; grep -m1 'model name' /proc/cpuinfo; } 2>&1 | tee -a "$log"
 for round in 1 2; do
     run 40 1 curve 10000000 points,triangulate
     run 20 16 curve 10000000 points,triangulate

@@ -11,26 +11,11 @@
 #   grep -qx '/.device-bin/' .git/info/exclude || echo /.device-bin/ >> .git/info/exclude
 #   device run: command "bash scripts/device-scaling.sh", carry [".device-bin"], timeout_s 600
 #
-# Everything goes to standard output and to $OUT/scaling.txt (set by the device tool; a
-# temporary folder elsewhere). Each run has its own time limit, so one slow run cannot take
-# the rest with it. Compare thread counts within this one run: the machine is shared.
+# Everything goes to standard output and to $OUT/scaling.txt (see device-common.sh).
+# Compare thread counts within this one run: the machine is shared.
 set -u
-bin=${STRESS_BIN:-.device-bin/stress}
-out=${OUT:-$(mktemp -d)}
-mkdir -p "$out"
-log="$out/scaling.txt"
-: >"$log"
-
-# `run LIMIT THREADS ARGS…`: one stress run with RAYON_NUM_THREADS=THREADS.
-run() {
-    local limit=$1 threads=$2
-    shift 2
-    echo "## threads $threads: stress $*" | tee -a "$log"
-    RAYON_NUM_THREADS=$threads timeout "$limit" "$bin" "$@" 2>&1 | tee -a "$log"
-    echo "(exit ${PIPESTATUS[0]})" | tee -a "$log"
-}
-
-{ nproc; grep -m1 'model name' /proc/cpuinfo; free -g | head -2; } 2>&1 | tee -a "$log"
+log_name=scaling.txt
+source "$(dirname "$0")/device-common.sh"
 
 # Item 2: the triangulation on 1 and 16 threads (target >= 6x at 16), same points each time.
 for set in curve uniform; do

@@ -422,6 +422,21 @@ mod tests {
     }
 
     /// Every edge is in exactly one curve: the curves' edges are the edges assembled, on
+    /// Up to `2n` distinct random edges `[min, max]` between `n` points, sorted: points of
+    /// every degree (loops, chains, junctions, isolated points).
+    fn random_graph(rng: &mut wdm_crust_testkit::Rng, n: usize) -> Vec<[u32; 2]> {
+        let mut edges = Vec::new();
+        for _ in 0..rng.below(2 * n) {
+            let (a, b) = (rng.below(n) as u32, rng.below(n) as u32);
+            if a != b {
+                edges.push([a.min(b), a.max(b)]);
+            }
+        }
+        edges.sort_unstable();
+        edges.dedup();
+        edges
+    }
+
     /// random graphs of every degree (loops, chains, junctions, isolated points), under
     /// random names.
     #[test]
@@ -430,15 +445,7 @@ mod tests {
         for round in 0..300 {
             let n = 2 + rng.below(40);
             let points: Vec<[f64; 2]> = (0..n).map(|_| [rng.f64(), rng.f64()]).collect();
-            let mut edges = Vec::new();
-            for _ in 0..rng.below(2 * n) {
-                let (a, b) = (rng.below(n) as u32, rng.below(n) as u32);
-                if a != b {
-                    edges.push([a.min(b), a.max(b)]);
-                }
-            }
-            edges.sort_unstable();
-            edges.dedup();
+            let edges = random_graph(&mut rng, n);
             // Names: a permutation, so that the curves come in caller order.
             let mut names: Vec<u32> = (0..n as u32).collect();
             for i in (1..n).rev() {
@@ -462,15 +469,7 @@ mod tests {
         let mut rng = wdm_crust_testkit::Rng::new(5);
         for round in 0..200 {
             let n = 2 + rng.below(60);
-            let mut edges = Vec::new();
-            for _ in 0..rng.below(2 * n) {
-                let (a, b) = (rng.below(n) as u32, rng.below(n) as u32);
-                if a != b {
-                    edges.push([a.min(b), a.max(b)]);
-                }
-            }
-            edges.sort_unstable();
-            edges.dedup();
+            let edges = random_graph(&mut rng, n);
             let asked: Vec<bool> = (0..n).map(|_| rng.below(4) == 0).collect();
             let picked: Vec<[u32; 2]> = edges
                 .iter()

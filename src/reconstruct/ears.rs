@@ -39,9 +39,7 @@
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
-use super::bits::Bits;
-use super::curves::SomeAdjacency;
-use super::peel::{lies_apart, median_length, MIN_LOOP_POINTS};
+use super::peel::{edges_near, lies_apart, median_length, MIN_LOOP_POINTS};
 use super::wdm::Label;
 use crate::delaunay::NO_TWIN;
 use crate::predicates::compare_circumradius;
@@ -144,18 +142,8 @@ pub(super) fn drop_islets(
     }
     // The crust edges at the loops' Delaunay neighbours: all that `lies_apart` reads (an
     // adjacency of every edge was most of this step's time on large inputs).
-    let mut asked = Bits::new(n);
-    for &p in loops.iter().flatten() {
-        for q in vor.delaunay_neighbours_local(p) {
-            asked.set(q as usize);
-        }
-    }
-    let near: Vec<[u32; 2]> = edges
-        .iter()
-        .copied()
-        .filter(|&[a, b]| asked.get(a as usize) || asked.get(b as usize))
-        .collect();
-    let curve = SomeAdjacency::new(&near);
+    let loop_points: Vec<u32> = loops.iter().flatten().copied().collect();
+    let curve = edges_near(vor, &loop_points, edges);
     let mut search = Components::default();
     let mut change = Change::default();
     for points in &loops {

@@ -164,8 +164,21 @@ fn first_pass_may_run(full: &Voronoi<'_>, edges: &[[u32; 2]]) -> bool {
         return false;
     }
     // Every curve edge at a neighbour of an untouched point: all that `near_a_curve` reads.
-    let mut asked = Bits::new(n);
-    for &p in &untouched {
+    let curve = edges_near(full, &untouched, edges);
+    let rest: Vec<u32> = untouched
+        .into_iter()
+        .filter(|&p| !near_a_curve(full, |q| curve.neighbours(q), p))
+        .collect();
+    let isolated = isolated_leftovers(full, &rest);
+    rest.len() - isolated.len() >= 3
+}
+
+/// The `edges` at the Delaunay neighbours of `points`: what [`near_a_curve`] and
+/// [`lies_apart`] read of the curves around those points, without an adjacency of every
+/// edge (a pass over all points).
+pub(super) fn edges_near(full: &Voronoi<'_>, points: &[u32], edges: &[[u32; 2]]) -> SomeAdjacency {
+    let mut asked = Bits::new(full.triangulation().points.len());
+    for &p in points {
         for q in full.delaunay_neighbours_local(p) {
             asked.set(q as usize);
         }
@@ -175,13 +188,7 @@ fn first_pass_may_run(full: &Voronoi<'_>, edges: &[[u32; 2]]) -> bool {
         .copied()
         .filter(|&[a, b]| asked.get(a as usize) || asked.get(b as usize))
         .collect();
-    let curve = SomeAdjacency::new(&near);
-    let rest: Vec<u32> = untouched
-        .into_iter()
-        .filter(|&p| !near_a_curve(full, |q| curve.neighbours(q), p))
-        .collect();
-    let isolated = isolated_leftovers(full, &rest);
-    rest.len() - isolated.len() >= 3
+    SomeAdjacency::new(&near)
 }
 
 /// The left-over points that lie apart from every other left-over point: in connected

@@ -34,7 +34,7 @@ pub(crate) fn assemble_named(
     point_count: usize,
     edges: &[[u32; 2]],
     points: &[[f64; 2]],
-    name: impl Fn(u32) -> u32,
+    name: impl Fn(u32) -> u32 + Sync,
 ) -> Vec<Curve> {
     let mut curves = assemble_unnamed(point_count, edges, points, &name);
     for c in &mut curves {
@@ -54,14 +54,11 @@ pub(crate) fn assemble_unnamed(
     point_count: usize,
     edges: &[[u32; 2]],
     points: &[[f64; 2]],
-    name: impl Fn(u32) -> u32,
+    name: impl Fn(u32) -> u32 + Sync,
 ) -> Vec<Curve> {
     let mut adjacency = Adjacency::new(point_count, edges);
     // Each row by the names of the neighbours: the order of the walks out of a point.
-    for p in 0..point_count {
-        let (lo, hi) = (adjacency.start[p] as usize, adjacency.start[p + 1] as usize);
-        adjacency.entries[lo..hi].sort_unstable_by_key(|&(_, q)| name(q));
-    }
+    adjacency.sort_rows_by_key(&name);
     let mut used = vec![false; edges.len()];
     let mut curves = Vec::new();
     // Open chains: start at every end or junction, along every unused edge.
@@ -221,7 +218,64 @@ pub(crate) struct Adjacency {
 
 impl Adjacency {
     pub(crate) fn new(point_count: usize, edges: &[[u32; 2]]) -> Self {
+        #[cfg(feature = "parallel")]
+        if parallel::pays(edges.len()) {
+            return Adjacency::by_point_ranges(point_count, edges);
+        }
         Adjacency::in_slots(point_count, edges, |p| p as usize)
+    }
+
+    /// [`Adjacency::new`] on all threads, the same arrays: each thread owns a range of
+    /// points, counts and fills their rows (a part of the entries of its own) reading all
+    /// the edges in order, so each row lists its edges in their order, and no two threads
+    /// write the same place. Every thread reads every edge, twice, in order; the scattered
+    /// writes, the cost of the sequential form, are shared out.
+    #[cfg(feature = "parallel")]
+    fn by_point_ranges(point_count: usize, edges: &[[u32; 2]]) -> Self {
+        use rayon::prelude::*;
+        let per_range = point_count.div_ceil(rayon::current_num_threads()).max(1);
+        let mut start = vec![0u32; point_count + 1];
+        start[1..]
+            .par_chunks_mut(per_range)
+            .enumerate()
+            .for_each(|(k, counts)| {
+                let first = k * per_range;
+                let ours = first as u32..(first + counts.len()) as u32;
+                for &[a, b] in edges {
+                    for p in [a, b].into_iter().filter(|p| ours.contains(p)) {
+                        counts[p as usize - first] += 1;
+                    }
+                }
+            });
+        for i in 0..point_count {
+            start[i + 1] += start[i];
+        }
+        let mut entries = vec![(0, 0); 2 * edges.len()];
+        // Each range's rows, one after the other, as slices of their own.
+        let mut rows = Vec::new();
+        let mut rest = entries.as_mut_slice();
+        for first in (0..point_count).step_by(per_range) {
+            let last = (first + per_range).min(point_count);
+            let (ours, tail) = rest.split_at_mut((start[last] - start[first]) as usize);
+            rows.push((first, last, ours));
+            rest = tail;
+        }
+        let start_ref = &start;
+        rows.into_par_iter().for_each(|(first, last, ours)| {
+            let base = start_ref[first];
+            let mut fill: Vec<u32> = start_ref[first..last].iter().map(|&s| s - base).collect();
+            let ours_range = first as u32..last as u32;
+            for (i, &[a, b]) in edges.iter().enumerate() {
+                for (p, q) in [(a, b), (b, a)] {
+                    if ours_range.contains(&p) {
+                        let slot = &mut fill[p as usize - first];
+                        ours[*slot as usize] = (i as u32, q);
+                        *slot += 1;
+                    }
+                }
+            }
+        });
+        Adjacency { start, entries }
     }
 
     /// The entries of point `p` in slot `slot(p)` (below `slot_count`), naming the edge and
@@ -245,6 +299,39 @@ impl Adjacency {
             fill[sb] += 1;
         }
         Adjacency { start, entries }
+    }
+
+    /// Sorts every row by `key` of the neighbours (distinct in a row, so one order), on all
+    /// threads where that pays, a range of rows each.
+    fn sort_rows_by_key(&mut self, key: impl Fn(u32) -> u32 + Sync) {
+        let Adjacency { start, entries } = self;
+        let sort_rows = |first: usize, rows: &mut [(u32, u32)], count: usize| {
+            let base = start[first];
+            for p in first..first + count {
+                let (lo, hi) = ((start[p] - base) as usize, (start[p + 1] - base) as usize);
+                rows[lo..hi].sort_unstable_by_key(|&(_, q)| key(q));
+            }
+        };
+        let point_count = start.len() - 1;
+        #[cfg(feature = "parallel")]
+        if parallel::pays(entries.len()) {
+            use rayon::prelude::*;
+            const ROWS: usize = 1 << 14;
+            let mut ranges = Vec::new();
+            let mut rest = entries.as_mut_slice();
+            for first in (0..point_count).step_by(ROWS) {
+                let count = ROWS.min(point_count - first);
+                let (ours, tail) =
+                    rest.split_at_mut((start[first + count] - start[first]) as usize);
+                ranges.push((first, ours, count));
+                rest = tail;
+            }
+            ranges
+                .into_par_iter()
+                .for_each(|(first, rows, count)| sort_rows(first, rows, count));
+            return;
+        }
+        sort_rows(0, entries, point_count);
     }
 
     /// `(edge, neighbour)` for every edge at `p`, in the order of the edges.
@@ -488,6 +575,44 @@ mod tests {
                     let all = edges.iter().filter(|e| e.contains(&p)).count();
                     assert_eq!(some.neighbours(p).len(), all, "round {round}, {p}");
                 }
+            }
+        }
+    }
+
+    /// The adjacency built on several threads is the one built on one: the same rows, each
+    /// in the order of the edges, for graphs of every degree and some points of none; and
+    /// so are its rows sorted by a key.
+    #[cfg(feature = "parallel")]
+    #[test]
+    fn the_adjacency_is_the_same_on_any_thread_count() {
+        let mut rng = wdm_crust_testkit::Rng::new(13);
+        for (n, edges) in [(1, 0), (7, 20), (1000, 3000), (40_000, 50_000)] {
+            let mut graph: Vec<[u32; 2]> = (0..edges)
+                .map(|_| (rng.below(n) as u32, rng.below(n) as u32))
+                .filter(|&(a, b)| a != b)
+                .map(|(a, b)| [a.min(b), a.max(b)])
+                .collect();
+            graph.sort_unstable();
+            graph.dedup();
+            rng.shuffle(&mut graph);
+            let one = Adjacency::in_slots(n, &graph, |p| p as usize);
+            // Rows by a key that is no order of the indices.
+            let key = |q: u32| q.wrapping_mul(2_654_435_761);
+            let mut one_sorted = Adjacency::in_slots(n, &graph, |p| p as usize);
+            one_sorted.sort_rows_by_key(key);
+            for threads in [1, 2, 3, 4] {
+                let pool = rayon::ThreadPoolBuilder::new()
+                    .num_threads(threads)
+                    .build()
+                    .unwrap();
+                let mut many = pool.install(|| Adjacency::by_point_ranges(n, &graph));
+                assert!(many.start == one.start, "{n} points, {threads} threads");
+                assert!(many.entries == one.entries, "{n} points, {threads} threads");
+                pool.install(|| many.sort_rows_by_key(key));
+                assert!(
+                    many.entries == one_sorted.entries,
+                    "sorted, {threads} threads"
+                );
             }
         }
     }

@@ -59,7 +59,8 @@ fn depth_first(
 /// fall into components (a concurrent union–find), which all have one parity; the
 /// components, few (about one per loop and one outside), are then joined across the loops'
 /// edges and searched from the rays' on one thread. The depth-first search is one
-/// dependent chain of cache misses, 6 % of a whole reconstruction at 10^7 points.
+/// dependent chain of cache misses: 0.55 s of a 13.5 s reconstruction at 10^7 points on
+/// one thread (noisy curve set); the components took 0.45 s on two.
 #[cfg(feature = "parallel")]
 mod components {
     use std::sync::atomic::{AtomicU32, Ordering::Relaxed};

@@ -88,14 +88,16 @@ mod on_all_threads {
             out.extend(finite_edges_between(vor, inside, range).map(|(a, b)| [a, b]));
         });
         // End `k` of edge `i` is at position `2i + k` (the first end first, as numbered
-        // one edge at a time). Fewer than 2^31 edges: at most three per point.
+        // one edge at a time). Below `6n − 6`, the half-edge count, so below `u32::MAX` for
+        // every input allowed (`MAX_POINTS`); computed in `usize`, as there may be more than
+        // 2^31 edges.
         let first: Vec<AtomicU32> = (0..slots)
             .into_par_iter()
             .map(|_| AtomicU32::new(u32::MAX))
             .collect();
         edges.par_iter().enumerate().for_each(|(i, &[a, b])| {
-            first[a as usize].fetch_min(2 * i as u32, Relaxed);
-            first[b as usize].fetch_min(2 * i as u32 + 1, Relaxed);
+            first[a as usize].fetch_min((2 * i) as u32, Relaxed);
+            first[b as usize].fetch_min((2 * i + 1) as u32, Relaxed);
         });
         let used: Vec<u32> = parallel::flat_map_chunks(edges.len(), |range, out| {
             for i in range {

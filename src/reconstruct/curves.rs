@@ -251,30 +251,23 @@ impl Adjacency {
             start[i + 1] += start[i];
         }
         let mut entries = vec![(0, 0); 2 * edges.len()];
-        // Each range's rows, one after the other, as slices of their own.
-        let mut rows = Vec::new();
-        let mut rest = entries.as_mut_slice();
-        for first in (0..point_count).step_by(per_range) {
-            let last = (first + per_range).min(point_count);
-            let (ours, tail) = rest.split_at_mut((start[last] - start[first]) as usize);
-            rows.push((first, last, ours));
-            rest = tail;
-        }
         let start_ref = &start;
-        rows.into_par_iter().for_each(|(first, last, ours)| {
-            let base = start_ref[first];
-            let mut fill: Vec<u32> = start_ref[first..last].iter().map(|&s| s - base).collect();
-            let ours_range = first as u32..last as u32;
-            for (i, &[a, b]) in edges.iter().enumerate() {
-                for (p, q) in [(a, b), (b, a)] {
-                    if ours_range.contains(&p) {
-                        let slot = &mut fill[p as usize - first];
-                        ours[*slot as usize] = (i as u32, q);
-                        *slot += 1;
+        rows_in_ranges(&start, &mut entries, per_range)
+            .into_par_iter()
+            .for_each(|(first, last, ours)| {
+                let base = start_ref[first];
+                let mut fill: Vec<u32> = start_ref[first..last].iter().map(|&s| s - base).collect();
+                let ours_range = first as u32..last as u32;
+                for (i, &[a, b]) in edges.iter().enumerate() {
+                    for (p, q) in [(a, b), (b, a)] {
+                        if ours_range.contains(&p) {
+                            let slot = &mut fill[p as usize - first];
+                            ours[*slot as usize] = (i as u32, q);
+                            *slot += 1;
+                        }
                     }
                 }
-            }
-        });
+            });
         Adjacency { start, entries }
     }
 
@@ -305,9 +298,9 @@ impl Adjacency {
     /// threads where that pays, a range of rows each.
     fn sort_rows_by_key(&mut self, key: impl Fn(u32) -> u32 + Sync) {
         let Adjacency { start, entries } = self;
-        let sort_rows = |first: usize, rows: &mut [(u32, u32)], count: usize| {
+        let sort_rows = |first: usize, last: usize, rows: &mut [(u32, u32)]| {
             let base = start[first];
-            for p in first..first + count {
+            for p in first..last {
                 let (lo, hi) = ((start[p] - base) as usize, (start[p + 1] - base) as usize);
                 rows[lo..hi].sort_unstable_by_key(|&(_, q)| key(q));
             }
@@ -316,22 +309,12 @@ impl Adjacency {
         #[cfg(feature = "parallel")]
         if parallel::pays(entries.len()) {
             use rayon::prelude::*;
-            const ROWS: usize = 1 << 14;
-            let mut ranges = Vec::new();
-            let mut rest = entries.as_mut_slice();
-            for first in (0..point_count).step_by(ROWS) {
-                let count = ROWS.min(point_count - first);
-                let (ours, tail) =
-                    rest.split_at_mut((start[first + count] - start[first]) as usize);
-                ranges.push((first, ours, count));
-                rest = tail;
-            }
-            ranges
+            rows_in_ranges(start, entries, 1 << 14)
                 .into_par_iter()
-                .for_each(|(first, rows, count)| sort_rows(first, rows, count));
+                .for_each(|(first, last, rows)| sort_rows(first, last, rows));
             return;
         }
-        sort_rows(0, entries, point_count);
+        sort_rows(0, point_count, entries);
     }
 
     /// `(edge, neighbour)` for every edge at `p`, in the order of the edges.
@@ -346,6 +329,30 @@ impl Adjacency {
     fn degree(&self, p: u32) -> usize {
         self.neighbours(p).len()
     }
+}
+
+/// The rows of the points `first..last`: `(first, last, their entries)`.
+#[cfg(feature = "parallel")]
+type RowRange<'e> = (usize, usize, &'e mut [(u32, u32)]);
+
+/// The rows of `entries` (laid out by `start`, as in [`Adjacency`]) for consecutive ranges
+/// of `per_range` points: disjoint slices that threads can fill or sort on their own.
+#[cfg(feature = "parallel")]
+fn rows_in_ranges<'e>(
+    start: &[u32],
+    entries: &'e mut [(u32, u32)],
+    per_range: usize,
+) -> Vec<RowRange<'e>> {
+    let point_count = start.len() - 1;
+    let mut ranges = Vec::new();
+    let mut rest = entries;
+    for first in (0..point_count).step_by(per_range) {
+        let last = (first + per_range).min(point_count);
+        let (ours, tail) = rest.split_at_mut((start[last] - start[first]) as usize);
+        ranges.push((first, last, ours));
+        rest = tail;
+    }
+    ranges
 }
 
 /// An [`Adjacency`] of a few edges, with slots for their points alone (found by a binary

@@ -192,26 +192,15 @@ mod tests {
     /// duplicates on any number of threads.
     #[test]
     fn the_order_is_the_same_on_any_thread_count() {
-        let mut s = 5u64;
-        let mut next = move || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            s >> 11
-        };
+        let mut rng = wdm_crust_testkit::Rng::new(5);
+        let mut next = move |below: usize| rng.below(below) as f64;
         let points: Vec<[f64; 2]> = (0..300_000)
             .map(|i| match i % 4 {
                 // A coarse lattice: many exact duplicates.
-                0 => [(next() % 300) as f64, (next() % 300) as f64],
+                0 => [next(300), next(300)],
                 // A cluster far finer than the grid, with its own duplicates.
-                1 => [
-                    1.0 + (next() % 5000) as f64 * 1e-12,
-                    2.0 + (next() % 7) as f64 * 1e-12,
-                ],
-                _ => [
-                    (next() % 1_000_000) as f64 * 3e-4,
-                    (next() % 1_000_000) as f64 * 3e-4,
-                ],
+                1 => [1.0 + next(5000) * 1e-12, 2.0 + next(7) * 1e-12],
+                _ => [next(1_000_000) * 3e-4, next(1_000_000) * 3e-4],
             })
             .collect();
         let grid = Grid::new(&points);

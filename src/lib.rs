@@ -34,7 +34,8 @@
 //! assert_eq!(tri.triangles().len(), 3);
 //! assert_eq!(tri.point(2), [1e300, 1e300]);
 //! ```
-#![forbid(unsafe_code)]
+// `deny`, not `forbid`: the prefetch hint alone is allowed it (see `prefetch`).
+#![deny(unsafe_code)]
 #![warn(missing_docs)]
 #![deny(rustdoc::broken_intra_doc_links)]
 
@@ -46,6 +47,7 @@ pub mod io;
 mod kernel;
 mod parallel;
 pub mod predicates;
+mod prefetch;
 pub mod reconstruct;
 pub mod voronoi;
 

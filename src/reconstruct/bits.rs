@@ -16,17 +16,63 @@ impl Bits {
         self.0[i / 64] >> (i % 64) & 1 == 1
     }
 
-    /// Removes and returns the smallest index at least `from`, reading a word at a time.
-    pub(super) fn take_first_from(&mut self, from: usize) -> Option<usize> {
+    /// The smallest index in the set within `from..to`, reading a word at a time.
+    pub(super) fn first_in(&self, from: usize, to: usize) -> Option<usize> {
+        let end = to.min(self.0.len() * 64);
         let mut word = from / 64;
+        if from >= end {
+            return None;
+        }
         // The bits below `from` in its word are masked off.
-        let mut bits = *self.0.get(word)? & (u64::MAX << (from % 64));
+        let mut bits = self.0[word] & (u64::MAX << (from % 64));
         while bits == 0 {
             word += 1;
-            bits = *self.0.get(word)?;
+            if word * 64 >= end {
+                return None;
+            }
+            bits = self.0[word];
         }
-        let i = word * 64 + bits.trailing_zeros() as usize;
-        self.0[word] &= !(1 << (i % 64));
+        Some(word * 64 + bits.trailing_zeros() as usize).filter(|&i| i < end)
+    }
+
+    /// Removes and returns the smallest index at least `from`.
+    pub(super) fn take_first_from(&mut self, from: usize) -> Option<usize> {
+        let i = self.first_in(from, usize::MAX)?;
+        self.0[i / 64] &= !(1 << (i % 64));
         Some(i)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use wdm_crust_testkit::Rng;
+
+    /// `first_in` and `take_first_from` against a scan of a plain array, at every window
+    /// edge of sparse and dense sets.
+    #[test]
+    fn searches_agree_with_a_plain_scan() {
+        let mut rng = Rng::new(21);
+        for round in 0..100 {
+            let count = 1 + rng.below(400);
+            let density = [0.01, 0.2, 0.9][round % 3];
+            let plain: Vec<bool> = (0..count).map(|_| rng.f64() < density).collect();
+            let mut bits = Bits::new(count);
+            for i in (0..count).filter(|&i| plain[i]) {
+                bits.set(i);
+            }
+            for from in 0..=count + 1 {
+                for to in [from, from + 1, from + 63, from + 64, from + 200, usize::MAX] {
+                    let expected = (from..to.min(count)).find(|&i| plain[i]);
+                    assert_eq!(bits.first_in(from, to), expected, "{from}..{to}");
+                }
+            }
+            let mut taken = Vec::new();
+            while let Some(i) = bits.take_first_from(0) {
+                assert!(!bits.get(i));
+                taken.push(i);
+            }
+            assert_eq!(taken, (0..count).filter(|&i| plain[i]).collect::<Vec<_>>());
+        }
     }
 }

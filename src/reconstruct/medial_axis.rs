@@ -184,6 +184,7 @@ use crate::delaunay::{prev_in_triangle, Triangulation, NO_TWIN};
 use crate::kernel::metric::dot_sign;
 use crate::kernel::Sign;
 use crate::parallel;
+use crate::prefetch::prefetch;
 use crate::voronoi::{rounded_circumcenter, smallest_corner, Voronoi};
 
 /// The object angle `θ` of the pruning rule: a leaf is removed when some ball near it grows
@@ -631,6 +632,7 @@ impl Graph {
             edges,
             |u| ball[u as usize].beyond(),
             |w, u| covers(&ball[w as usize], &ball[u as usize], scale),
+            |w| prefetch(&ball, w as usize),
         );
         let edges: Vec<[u32; 2]> = tree.edges().collect();
         drop(tree);

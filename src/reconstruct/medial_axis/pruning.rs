@@ -6,17 +6,20 @@ use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap, VecDeque};
 
 use super::NEIGHBOURHOOD;
+use crate::prefetch::prefetch;
 use crate::reconstruct::bits::Bits;
 
 /// Takes leaves off the graph of `vertices` vertices and `edges`, smallest number first,
 /// and returns what remains. A leaf `u` goes when `beyond(u)`, or when `covers(w, u)` for a
 /// vertex `w` of its neighbourhood ([`Tree::neighbourhood_test`]); the last edge of a
 /// component stays; a leaf whose test fails is tested again when its branch grows.
+/// `fetch(w)` asks for what `covers(w, _)` will read of `w` ([`Lookahead`]).
 pub(super) fn prune(
     vertices: usize,
     edges: Vec<[u32; 2]>,
     beyond: impl Fn(u32) -> bool,
     covers: impl Fn(u32, u32) -> bool,
+    fetch: impl Fn(u32),
 ) -> Tree {
     let mut tree = Tree::new(vertices, &edges);
     // The tree holds them now (the edge list was 8 bytes a vertex at the memory peak).
@@ -27,7 +30,14 @@ pub(super) fn prune(
         vertices,
         (0..vertices as u32).filter(|&v| tree.degree(v) == 1),
     );
+    let mut lookahead = Lookahead::default();
     while let Some(u) = leaves.pop() {
+        lookahead.advance(u, &leaves.waiting, |leaf| {
+            if let Some(w) = tree.around(leaf).next() {
+                prefetch(&tree.near, w as usize);
+                fetch(w);
+            }
+        });
         let Some(v) = tree.leaf_neighbour(u) else {
             continue;
         };
@@ -56,6 +66,51 @@ pub(super) fn prune(
         }
     }
     tree
+}
+
+/// How many leaves ahead of the one being tested [`Lookahead`] fetches: a fetch needs about
+/// as long as a few tests, and what is fetched too early leaves the first-level cache
+/// again. At 10^7 noisy points (one thread) 2, 4, 6, 8, 12 and 16 took the pruning from
+/// 2.16 s without to 1.32, 1.20, 1.13, 1.11, 1.44 and 1.44 s.
+const LOOKAHEAD: usize = 8;
+
+/// How far past the last leaf it found [`Lookahead`] looks for the next, per leaf tested:
+/// where the leaves are sparse, a search to the end of the set for every leaf would cost
+/// more than it saves.
+const LOOKAHEAD_REACH: usize = 512;
+
+/// The next leaves [`LeafQueue`] will give from its set, found [`LOOKAHEAD`] tests ahead so
+/// that what their tests read (the leaf's neighbour: its slots and its ball, each a cache
+/// miss in arrays of hundreds of megabytes) is on its way while the leaves before them are
+/// tested. The leaves are numbered in order of radius, not of position, so nothing else
+/// brings those records close: this halves the pruning's time at 10^7 noisy points.
+///
+/// A hint only, it changes no result: leaves pushed behind its search (a neighbour that
+/// just became a leaf, read a moment ago anyway) are not fetched.
+#[derive(Default)]
+struct Lookahead {
+    /// The leaves found and fetched, not yet tested, in order.
+    upcoming: VecDeque<u32>,
+    /// Where the search for the next leaf goes on.
+    from: usize,
+}
+
+impl Lookahead {
+    /// After `popped` was taken from the queue: `fetch` each leaf that comes into view.
+    fn advance(&mut self, popped: u32, waiting: &Bits, mut fetch: impl FnMut(u32)) {
+        while self.upcoming.front().is_some_and(|&f| f <= popped) {
+            self.upcoming.pop_front();
+        }
+        self.from = self.from.max(popped as usize + 1);
+        while self.upcoming.len() < LOOKAHEAD {
+            let Some(leaf) = waiting.first_in(self.from, self.from + LOOKAHEAD_REACH) else {
+                return;
+            };
+            self.from = leaf + 1;
+            self.upcoming.push_back(leaf as u32);
+            fetch(leaf as u32);
+        }
+    }
 }
 
 /// No neighbour in this slot: there never was one, or its edge was removed.

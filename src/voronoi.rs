@@ -420,6 +420,20 @@ impl<'a> Voronoi<'a> {
             || self.vertex_of_halfedge(e) != self.vertex_of_halfedge(twin)
     }
 
+    /// The vertices that carry a ray, sorted, each once: the faces of the hull edges, read
+    /// off the hull's points (each starts one hull edge, its outgoing half-edge here),
+    /// without a pass over all vertices.
+    pub(crate) fn ray_vertices(&self) -> Vec<u32> {
+        let mut rays: Vec<u32> = (self.tri.hull.iter())
+            .map(|&p| self.out_halfedge[p as usize])
+            .filter(|&e| e != NO_TWIN)
+            .map(|e| self.vertex_of_halfedge(e))
+            .collect();
+        rays.sort_unstable();
+        rays.dedup();
+        rays
+    }
+
     /// Does `v` carry at least one ray (is its face on the convex hull)?
     pub fn has_ray(&self, v: u32) -> bool {
         self.boundary_of(v)

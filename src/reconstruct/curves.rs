@@ -250,22 +250,36 @@ impl Adjacency {
         for i in 0..point_count {
             start[i + 1] += start[i];
         }
+        // Filled from the end of each row, the edges read backwards (so that each row
+        // still lists its edges in their order), with the thread's own part of `start` as
+        // the cursors: afterwards `start[p + 1]` holds the row start of `p`, and one shift
+        // puts them back. (Cursors of their own, 4 bytes a point in all, were allocated
+        // and freed by the worker threads, whose allocators kept them.)
         let mut entries = vec![(0, 0); 2 * edges.len()];
-        let start_ref = &start;
-        rows_in_ranges(&start, &mut entries, per_range)
-            .into_par_iter()
-            .for_each(|(first, last, ours)| {
-                let base = start_ref[first];
-                let mut fill: Vec<u32> = start_ref[first..last].iter().map(|&s| s - base).collect();
+        let firsts: Vec<usize> = (0..point_count).step_by(per_range).collect();
+        let bases: Vec<u32> = firsts.iter().map(|&first| start[first]).collect();
+        let total = start[point_count];
+        let rows = rows_in_ranges(&start, &mut entries, per_range);
+        rows.into_par_iter()
+            .zip(start[1..].par_chunks_mut(per_range))
+            .enumerate()
+            .for_each(|(k, ((first, last, ours), ends))| {
+                let base = bases[k];
                 let ours_range = first as u32..last as u32;
-                for (i, &[a, b]) in edges.iter().enumerate() {
-                    for (p, q) in [(a, b), (b, a)] {
+                for (i, &[a, b]) in edges.iter().enumerate().rev() {
+                    for (p, q) in [(b, a), (a, b)] {
                         if ours_range.contains(&p) {
-                            let slot = &mut fill[p as usize - first];
-                            ours[*slot as usize] = (i as u32, q);
-                            *slot += 1;
+                            let end = &mut ends[p as usize - first];
+                            *end -= 1;
+                            ours[(*end - base) as usize] = (i as u32, q);
                         }
                     }
+                }
+                // `ends[j]` is now the row start of point `first + j`; the row end is the
+                // next one's start.
+                ends.copy_within(1.., 0);
+                if let Some(end) = ends.last_mut() {
+                    *end = bases.get(k + 1).copied().unwrap_or(total);
                 }
             });
         Adjacency { start, entries }

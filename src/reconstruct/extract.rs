@@ -32,7 +32,9 @@ impl EdgeClass {
 /// Delaunay edges dual to branch edges, each once, unsorted, in local indices. A ray's far end is the root
 /// vertex, always outer.
 pub(super) fn wdm_crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
-    parallel::flat_map_chunks(vor.vertex_count(), |vertices, edges| {
+    // Reserved on this thread: 8 bytes a point, at the memory peak's scale. At most three
+    // edges a vertex but at merged faces.
+    parallel::flat_map_chunks_reserved(vor.vertex_count(), 3, |vertices, edges| {
         for v in vertices {
             let v = v as u32;
             for edge in vor.vertex_edges_local(v) {

@@ -84,9 +84,12 @@ mod on_all_threads {
 
     pub(super) fn inside_edges(vor: &Voronoi<'_>, inside: &[bool], slots: usize) -> Numbered {
         let halfedge_count = vor.triangulation().halfedges().len();
-        let mut edges: Vec<[u32; 2]> = parallel::flat_map_chunks(halfedge_count, |range, out| {
-            out.extend(finite_edges_between(vor, inside, range).map(|(a, b)| [a, b]));
-        });
+        // Both lists reserved on this thread (see `flat_map_chunks_reserved`): at most one
+        // edge a half-edge, two first ends an edge.
+        let mut edges: Vec<[u32; 2]> =
+            parallel::flat_map_chunks_reserved(halfedge_count, 1, |range, out| {
+                out.extend(finite_edges_between(vor, inside, range).map(|(a, b)| [a, b]));
+            });
         // End `k` of edge `i` is at position `2i + k` (the first end first, as numbered
         // one edge at a time). Below `6n − 6`, the half-edge count, so below `u32::MAX` for
         // every input allowed (`MAX_POINTS`); computed in `usize`, as there may be more than
@@ -99,7 +102,7 @@ mod on_all_threads {
             first[a as usize].fetch_min((2 * i) as u32, Relaxed);
             first[b as usize].fetch_min((2 * i + 1) as u32, Relaxed);
         });
-        let used: Vec<u32> = parallel::flat_map_chunks(edges.len(), |range, out| {
+        let used: Vec<u32> = parallel::flat_map_chunks_reserved(edges.len(), 2, |range, out| {
             for i in range {
                 for (k, v) in edges[i].into_iter().enumerate() {
                     if first[v as usize].load(Relaxed) == (2 * i + k) as u32 {

@@ -151,24 +151,20 @@ fn inlets(
     // points, on one thread, was here). Collected on this thread: 24 bytes per hull point,
     // 4 per point on such samples, which worker threads' allocators kept after the labels.
     let rays = vor.ray_vertices();
-    let tested: Vec<(u32, Option<[f64; 2]>)> = parallel::map_range(rays.len(), |i| {
-        let v = rays[i];
-        let outside =
-            circumcenter_in_convex_hull(&hull, vor.vertex_triangle(v)) == HullPosition::Outside;
-        let smallest_site = outside.then(|| {
-            vor.vertex_sites_local(v)
-                .map(|p| tri.points[p as usize])
-                .min_by(|a, b| lexicographic(*a, *b))
-                .unwrap_or([0.0; 2])
-        });
-        (v, smallest_site)
+    let outside: Vec<bool> = parallel::map_range(rays.len(), |i| {
+        circumcenter_in_convex_hull(&hull, vor.vertex_triangle(rays[i])) == HullPosition::Outside
     });
     let mut list: Vec<(u32, [f64; 2])> = Vec::new();
-    for (v, smallest_site) in tested {
-        match smallest_site {
-            Some(site) => list.push((v, site)),
-            None if !complement => activated[v as usize] = false,
-            None => {}
+    for (&v, outside) in rays.iter().zip(outside) {
+        if outside {
+            let smallest_site = vor
+                .vertex_sites_local(v)
+                .map(|p| tri.points[p as usize])
+                .min_by(|a, b| lexicographic(*a, *b))
+                .unwrap_or([0.0; 2]);
+            list.push((v, smallest_site));
+        } else if !complement {
+            activated[v as usize] = false;
         }
     }
     // Largest circumradius first: decided on the rounded circumcenters where their bound

@@ -16,8 +16,11 @@ pub(in crate::reconstruct) fn parity_from_infinity(
     blocked: Vec<bool>,
     crosses: impl Fn(u32) -> bool + Sync,
 ) -> Vec<bool> {
+    // The components do about two and a half times the depth-first search's work (at 10^7
+    // points: 0.56 s one thread, 0.72–0.75 s for the components on two), so they pay from
+    // four threads.
     #[cfg(feature = "parallel")]
-    if crate::parallel::pays(vor.vertex_count()) {
+    if crate::parallel::pays(vor.vertex_count()) && rayon::current_num_threads() >= 4 {
         return components::parity(vor, &blocked, crosses);
     }
     depth_first(vor, blocked, crosses)
@@ -60,7 +63,9 @@ fn depth_first(
 /// components, few (about one per loop and one outside), are then joined across the loops'
 /// edges and searched from the rays' on one thread. The depth-first search is one
 /// dependent chain of cache misses: 0.55 s of a 13.5 s reconstruction at 10^7 points on
-/// one thread (noisy curve set); the components took 0.45 s on two.
+/// one thread (noisy curve set); the components took 0.45 s on two in session 11, 0.72–0.75 s
+/// against the search's 0.56 s in session 12 (and 0.57 against 0.39 s on the curve set), so
+/// they run from four threads.
 #[cfg(feature = "parallel")]
 mod components {
     use std::sync::atomic::{AtomicU32, Ordering::Relaxed};

@@ -167,8 +167,8 @@ mod tests {
                     let chunked = flat_map_chunks(n, |range, out| {
                         out.extend(range.filter(|i| i % 3 == 0));
                     });
-                    // Reserved for one item in four: most chunks stay within it, the
-                    // denser ones grow.
+                    // One output reserved per item, while these items give 4/3 on
+                    // average: chunks outgrow their reservation and lose nothing.
                     let reserved = flat_map_chunks_reserved(n, 1, |range, out| {
                         out.extend(
                             range.flat_map(|i| vec![i; usize::from(i % 3 == 0) * (1 + i % 7)]),

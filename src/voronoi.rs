@@ -854,6 +854,29 @@ mod tests {
         }
     }
 
+    /// The ray vertices read off the hull are those of a pass over every vertex: random
+    /// points, lattices (collinear runs on the hull, merged faces on it), collinear input.
+    #[test]
+    fn the_ray_vertices_are_those_with_a_ray() {
+        let mut rng = Rng::new(24);
+        for round in 0..80 {
+            let n = 1 + rng.below(80);
+            let points: Vec<[f64; 2]> = (0..n)
+                .map(|i| match round % 3 {
+                    0 => [rng.f64(), rng.f64()],
+                    1 => [rng.below(5) as f64, rng.below(5) as f64],
+                    _ => [i as f64, 2.0 * i as f64],
+                })
+                .collect();
+            let tri = triangulate(&points).unwrap();
+            let vor = tri.voronoi();
+            let expected: Vec<u32> = (0..vor.vertex_count() as u32)
+                .filter(|&v| vor.has_ray(v))
+                .collect();
+            assert_eq!(vor.ray_vertices(), expected, "round {round}");
+        }
+    }
+
     #[test]
     fn is_delaunay_edge_agrees_with_the_edge_list() {
         let mut rng = Rng::new(23);

@@ -148,8 +148,9 @@ fn inlets(
     // Every vertex with a ray, and for those outside the hull their smallest site. On all
     // threads: each hull test is a binary search of the hull, and samples of a curve can
     // put a sixth of their points on the hull (half of the labels' time at 10^7 such
-    // points, on one thread, was here). Collected on this thread: 24 bytes per hull point,
-    // 4 per point on such samples, which worker threads' allocators kept after the labels.
+    // points, on one thread, was here). The workers return one flag per ray vertex, and the
+    // smallest sites are read here: a record per ray vertex (24 bytes per hull point, 4 per
+    // point on such samples) collected from the workers stayed in their allocators.
     let rays = vor.ray_vertices();
     let outside: Vec<bool> = parallel::map_range(rays.len(), |i| {
         circumcenter_in_convex_hull(&hull, vor.vertex_triangle(rays[i])) == HullPosition::Outside

@@ -83,7 +83,9 @@ const LOOKAHEAD_REACH: usize = 512;
 /// that what their tests read (the leaf's neighbour: its slots and its ball, each a cache
 /// miss in arrays of hundreds of megabytes) is on its way while the leaves before them are
 /// tested. The leaves are numbered in order of radius, not of position, so nothing else
-/// brings those records close: this halves the pruning's time at 10^7 noisy points.
+/// brings those records close: this halves the pruning's time at 10^7 noisy points (at
+/// 10^8 the page walks set the pace and it gains little: ARCHITECTURE.md, "Where the time
+/// goes at 10^8").
 ///
 /// A hint only, it changes no result: leaves pushed behind its search (a neighbour that
 /// just became a leaf, read a moment ago anyway) are not fetched.

@@ -40,28 +40,15 @@ where
     (0..n).map(f).collect()
 }
 
-/// The concatenation of `f(chunk)` over consecutive chunks of `0..n`, in order.
+/// The concatenation of `f(chunk)` over consecutive chunks of `0..n`, in order: for small
+/// outputs ([`flat_map_chunks_reserved`] with nothing reserved; the workers grow the chunks'
+/// vectors).
 pub(crate) fn flat_map_chunks<T, F>(n: usize, f: F) -> Vec<T>
 where
     T: Send,
     F: Fn(Range<usize>, &mut Vec<T>) + Sync + Send,
 {
-    #[cfg(feature = "parallel")]
-    if pays(n) {
-        use rayon::prelude::*;
-        let parts: Vec<Vec<T>> = (0..n.div_ceil(CHUNK))
-            .into_par_iter()
-            .map(|c| {
-                let mut part = Vec::new();
-                f(c * CHUNK..((c + 1) * CHUNK).min(n), &mut part);
-                part
-            })
-            .collect();
-        return parts.into_iter().flatten().collect();
-    }
-    let mut all = Vec::new();
-    f(0..n, &mut all);
-    all
+    flat_map_chunks_reserved(n, 0, f)
 }
 
 /// [`flat_map_chunks`] for outputs large enough to matter at the memory peak, where each

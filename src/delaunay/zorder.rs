@@ -137,50 +137,91 @@ pub struct Ordered {
 pub fn order(points: &[[f64; 2]], grid: &Grid) -> Ordered {
     let mut items = keyed_items(points, grid);
     sort_items(&mut items, grid.index_bits);
-    let mut duplicates = settle_and_drop_duplicates(&mut items, points, grid);
+    // The points are copied into key order before the runs of equal keys are settled, so
+    // that settling and the duplicate test read them in order beside their items. Read
+    // through the input indices instead, every point of a run is a cache miss: a tenth of
+    // the triangulation of 10^7 random samples of a curve, whose keys of 40 bits put a few
+    // points in many cells.
+    let mut sorted = points_in_order(points, &items, grid);
+    let mut duplicates = settle_and_drop_duplicates(&mut items, &mut sorted, points, grid);
+    if !duplicates.is_empty() {
+        // The points are kept with the triangulation: not the room of the copies.
+        sorted.shrink_to_fit();
+    }
     duplicates.sort_unstable();
     Ordered {
-        points: kept_points(points, &items, grid),
+        points: sorted,
         items,
         duplicates,
     }
 }
 
-/// Settles the runs of equal keys of the sorted `items` and drops the duplicates, keeping
-/// each point's first occurrence; returns the `[duplicate, kept]` pairs, unsorted.
+/// Settles the runs of equal keys of the sorted `items` and of their points `sorted` (item
+/// by item), and drops the duplicates from both, keeping each point's first occurrence;
+/// returns the `[duplicate, kept]` pairs, unsorted. `input` is the caller's points.
 fn settle_and_drop_duplicates(
     items: &mut Vec<u64>,
-    points: &[[f64; 2]],
+    sorted: &mut Vec<[f64; 2]>,
+    input: &[[f64; 2]],
     grid: &Grid,
 ) -> Vec<[u32; 2]> {
     #[cfg(feature = "parallel")]
     if parallel::pays(items.len()) {
-        return parallel::settle_and_drop_duplicates(items, points, grid);
+        return parallel::settle_and_drop_duplicates(items, sorted, input, grid);
     }
-    let (kept, duplicates) = settle_piece(items, points, grid);
+    let piece = Run {
+        items,
+        points: sorted,
+    };
+    let (kept, duplicates) = settle_piece(piece, input, grid);
     items.truncate(kept);
+    sorted.truncate(kept);
     duplicates
+}
+
+/// Items and their points, item by item: a piece of the sorted order.
+struct Run<'a> {
+    items: &'a mut [u64],
+    points: &'a mut [[f64; 2]],
+}
+
+impl Run<'_> {
+    fn len(&self) -> usize {
+        self.items.len()
+    }
+
+    /// The sub-run `range`.
+    fn at(&mut self, range: std::ops::Range<usize>) -> Run<'_> {
+        Run {
+            items: &mut self.items[range.clone()],
+            points: &mut self.points[range],
+        }
+    }
 }
 
 /// [`settle_runs`] on `piece`, a whole number of runs of equal keys, then the duplicates
 /// dropped in place (only equal keys need coordinates, and they are in one run): returns how
 /// many items are kept, at the front of `piece`, and the `[duplicate, kept]` pairs.
-fn settle_piece(piece: &mut [u64], points: &[[f64; 2]], grid: &Grid) -> (usize, Vec<[u32; 2]>) {
-    settle_runs(piece, points, grid.index_bits);
+fn settle_piece(mut piece: Run, input: &[[f64; 2]], grid: &Grid) -> (usize, Vec<[u32; 2]>) {
+    settle_runs(
+        piece.at(0..piece.len()),
+        input,
+        grid.index_bits,
+        &mut Vec::new(),
+    );
     let key_mask = !0u64 << grid.index_bits;
-    let point = |item: u64| points[grid.index(item) as usize];
+    let Run { items, points } = piece;
     let mut duplicates = Vec::new();
     let mut w = 0;
-    for k in 0..piece.len() {
-        let item = piece[k];
-        if w > 0
-            && (piece[w - 1] ^ item) & key_mask == 0
-            && lexicographic(point(piece[w - 1]), point(item)).is_eq()
-        {
-            duplicates.push([grid.index(item), grid.index(piece[w - 1])]);
+    for k in 0..items.len() {
+        let (item, p) = (items[k], points[k]);
+        let same_key = w > 0 && (items[w - 1] ^ item) & key_mask == 0;
+        if same_key && lexicographic(points[w - 1], p).is_eq() {
+            duplicates.push([grid.index(item), grid.index(items[w - 1])]);
             continue;
         }
-        piece[w] = item;
+        items[w] = item;
+        points[w] = p;
         w += 1;
     }
     (w, duplicates)
@@ -199,27 +240,24 @@ fn keyed_items(points: &[[f64; 2]], grid: &Grid) -> Vec<u64> {
         .collect()
 }
 
-/// The points of `items`, in their order.
-fn kept_points(points: &[[f64; 2]], items: &[u64], grid: &Grid) -> Vec<[f64; 2]> {
+/// The points of `items` (one item per input point), in their order.
+fn points_in_order(points: &[[f64; 2]], items: &[u64], grid: &Grid) -> Vec<[f64; 2]> {
     #[cfg(feature = "parallel")]
     if parallel::pays(items.len()) {
-        return parallel::kept_points(points, items, grid);
+        return parallel::points_in_order(points, items, grid);
     }
     // Scatter the ranks, then read the input in order and write each point to its rank:
     // scattered writes do not stall the way scattered reads (a gather) do. (A gather on two
     // threads took as long as this on one: 5.2 against 5.4 ms at 10^6 points.)
-    const DROPPED: u32 = u32::MAX;
-    let mut rank = vec![DROPPED; points.len()];
+    let mut rank = vec![0u32; points.len()];
     for (k, &item) in items.iter().enumerate() {
         rank[grid.index(item) as usize] = k as u32;
     }
-    let mut kept = vec![[0.0; 2]; items.len()];
+    let mut sorted = vec![[0.0; 2]; items.len()];
     for (&p, &r) in points.iter().zip(&rank) {
-        if r != DROPPED {
-            kept[r as usize] = p;
-        }
+        sorted[r as usize] = p;
     }
-    kept
+    sorted
 }
 
 /// The input index of every item.
@@ -231,45 +269,87 @@ pub fn input_indices(items: &[u64], grid: &Grid) -> Vec<u32> {
     items.iter().map(|&item| grid.index(item)).collect()
 }
 
-/// Orders every run of items with equal keys so that exact duplicates are adjacent, the first
-/// occurrence first: short runs lexicographically (then by index); long runs, which only a
-/// wide spread of scales produces (a dense cluster and far outliers), along the Z curve of
-/// their own bounding box first, recursively, so that no long run is comparison-sorted. The
-/// keys of a run stay equal, so the recursion re-keys it the same way when it gets there.
-fn settle_runs(items: &mut [u64], points: &[[f64; 2]], index_bits: u32) {
+/// Orders every run of items with equal keys, their points along, so that exact duplicates
+/// are adjacent, the first occurrence first: short runs lexicographically (then by index);
+/// long runs (a wide spread of scales, or many samples in little room) along the Z curve of
+/// their own bounding box first, recursively, so that no long run is comparison-sorted by
+/// coordinates. The keys of a run stay equal, so the divide and conquer re-keys it the same
+/// way when it gets there. `scratch` is working space for the sorts.
+fn settle_runs(
+    mut run: Run,
+    input: &[[f64; 2]],
+    index_bits: u32,
+    scratch: &mut Vec<(u64, [f64; 2])>,
+) {
     const SHORT: usize = 64;
     let key_mask = !0u64 << index_bits;
-    let index = |item: u64| (item & !key_mask) as usize;
+    let index = |item: u64| item & !key_mask;
     let mut start = 0;
-    while start < items.len() {
-        let key = items[start] & key_mask;
+    while start < run.len() {
+        let key = run.items[start] & key_mask;
         let mut end = start + 1;
-        while end < items.len() && items[end] & key_mask == key {
+        while end < run.len() && run.items[end] & key_mask == key {
             end += 1;
         }
-        let run = &mut items[start..end];
+        let mut equal = run.at(start..end);
+        let n = equal.len();
         let mut sorted = false;
-        if run.len() > SHORT {
-            let local = Grid::of_box(run.iter().map(|&item| points[index(item)]), index_bits);
-            for item in run.iter_mut() {
-                *item = local.key(points[index(*item)]) | (*item & !key_mask);
+        if n > SHORT {
+            let local = Grid::of_box(equal.points.iter().copied(), index_bits);
+            for (item, &p) in equal.items.iter_mut().zip(equal.points.iter()) {
+                *item = local.key(p) | index(*item);
             }
-            sort_items(run, index_bits);
+            sort_by_items(equal.at(0..n), input, index_bits, scratch);
             // Distinct points in the run split it; copies of one point do not.
-            if (run[0] ^ run[run.len() - 1]) & key_mask != 0 {
-                settle_runs(run, points, index_bits);
+            if (equal.items[0] ^ equal.items[n - 1]) & key_mask != 0 {
+                settle_runs(equal.at(0..n), input, index_bits, scratch);
                 sorted = true;
             }
-            for item in run.iter_mut() {
-                *item = key | (*item & !key_mask);
+            for item in equal.items.iter_mut() {
+                *item = key | index(*item);
             }
         }
-        if !sorted && run.len() > 1 {
-            run.sort_unstable_by(|&a, &b| {
-                lexicographic(points[index(a)], points[index(b)]).then(index(a).cmp(&index(b)))
-            });
+        if !sorted && n > 1 {
+            scratch.clear();
+            scratch.extend(
+                equal
+                    .items
+                    .iter()
+                    .copied()
+                    .zip(equal.points.iter().copied()),
+            );
+            scratch
+                .sort_unstable_by(|a, b| lexicographic(a.1, b.1).then(index(a.0).cmp(&index(b.0))));
+            for (k, &(item, p)) in scratch.iter().enumerate() {
+                (equal.items[k], equal.points[k]) = (item, p);
+            }
         }
         start = end;
+    }
+}
+
+/// Sorts a run by its items (key, then index), its points along: as pairs where a
+/// comparison sort is the faster, else the items alone by radix and then the points read
+/// again from the `input`.
+fn sort_by_items(
+    run: Run,
+    input: &[[f64; 2]],
+    index_bits: u32,
+    scratch: &mut Vec<(u64, [f64; 2])>,
+) {
+    if run.len() > 1 << 12 {
+        sort_items(run.items, index_bits);
+        let index_mask = (1u64 << index_bits) - 1;
+        for (p, &item) in run.points.iter_mut().zip(run.items.iter()) {
+            *p = input[(item & index_mask) as usize];
+        }
+        return;
+    }
+    scratch.clear();
+    scratch.extend(run.items.iter().copied().zip(run.points.iter().copied()));
+    scratch.sort_unstable_by_key(|&(item, _)| item);
+    for (k, &(item, p)) in scratch.iter().enumerate() {
+        (run.items[k], run.points[k]) = (item, p);
     }
 }
 

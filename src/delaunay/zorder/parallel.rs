@@ -9,7 +9,7 @@
 
 use rayon::prelude::*;
 
-use super::{radix_sort, settle_piece, Grid};
+use super::{radix_sort, settle_piece, Grid, Run};
 
 /// Inputs of at least this many points are ordered on all threads (below, the fork and the
 /// merge's extra pass cost more than they save).
@@ -36,11 +36,13 @@ pub(super) fn keyed_items(points: &[[f64; 2]], grid: &Grid) -> Vec<u64> {
         .collect()
 }
 
-/// [`super::settle_and_drop_duplicates`] on all threads: the sorted items cut into pieces
-/// at run boundaries, each settled on its own, the kept items then moved together.
+/// [`super::settle_and_drop_duplicates`] on all threads: the sorted items and their points
+/// cut into pieces at run boundaries, each settled on its own, the kept ones then moved
+/// together.
 pub(super) fn settle_and_drop_duplicates(
     items: &mut Vec<u64>,
-    points: &[[f64; 2]],
+    sorted: &mut Vec<[f64; 2]>,
+    input: &[[f64; 2]],
     grid: &Grid,
 ) -> Vec<[u32; 2]> {
     let key_mask = !0u64 << grid.index_bits();
@@ -56,31 +58,40 @@ pub(super) fn settle_and_drop_duplicates(
         end += SETTLE_GRAIN;
     }
     let mut pieces = Vec::with_capacity(starts.len());
-    let mut rest = items.as_mut_slice();
+    let (mut rest_items, mut rest_points) = (items.as_mut_slice(), sorted.as_mut_slice());
     for w in starts.windows(2) {
-        let (piece, tail) = rest.split_at_mut(w[1] - w[0]);
-        pieces.push(piece);
-        rest = tail;
+        let (piece_items, tail_items) = rest_items.split_at_mut(w[1] - w[0]);
+        let (piece_points, tail_points) = rest_points.split_at_mut(w[1] - w[0]);
+        pieces.push(Run {
+            items: piece_items,
+            points: piece_points,
+        });
+        (rest_items, rest_points) = (tail_items, tail_points);
     }
-    pieces.push(rest);
+    pieces.push(Run {
+        items: rest_items,
+        points: rest_points,
+    });
     let settled: Vec<(usize, Vec<[u32; 2]>)> = pieces
         .into_par_iter()
-        .map(|piece| settle_piece(piece, points, grid))
+        .map(|piece| settle_piece(piece, input, grid))
         .collect();
     let mut kept = 0;
     let mut duplicates = Vec::new();
     for (&start, (count, piece_duplicates)) in starts.iter().zip(settled) {
         items.copy_within(start..start + count, kept);
+        sorted.copy_within(start..start + count, kept);
         kept += count;
         duplicates.extend(piece_duplicates);
     }
     items.truncate(kept);
+    sorted.truncate(kept);
     duplicates
 }
 
-/// [`super::kept_points`] on all threads: a gather (one scattered read per item), which the
-/// threads share; on one thread the sequential form's scatter is faster.
-pub(super) fn kept_points(points: &[[f64; 2]], items: &[u64], grid: &Grid) -> Vec<[f64; 2]> {
+/// [`super::points_in_order`] on all threads: a gather (one scattered read per item), which
+/// the threads share; on one thread the sequential form's scatter is faster.
+pub(super) fn points_in_order(points: &[[f64; 2]], items: &[u64], grid: &Grid) -> Vec<[f64; 2]> {
     items
         .par_iter()
         .map(|&item| points[grid.index(item) as usize])
@@ -188,8 +199,9 @@ mod tests {
     }
 
     /// Runs of equal keys of every length (copies of one point, clusters finer than the
-    /// grid, which are re-keyed) across many settling pieces: the same order, points and
-    /// duplicates on any number of threads.
+    /// grid, which are re-keyed: one of 75 000 points, sorted by radix, and one of 3 000,
+    /// sorted as pairs) across many settling pieces: the same order, points and duplicates
+    /// on any number of threads; each point beside its item, each first occurrence kept.
     #[test]
     fn the_order_is_the_same_on_any_thread_count() {
         let mut rng = wdm_crust_testkit::Rng::new(5);
@@ -200,6 +212,8 @@ mod tests {
                 0 => [next(300), next(300)],
                 // A cluster far finer than the grid, with its own duplicates.
                 1 => [1.0 + next(5000) * 1e-12, 2.0 + next(7) * 1e-12],
+                // A smaller one.
+                _ if i % 100 == 2 => [3.0 + next(40) * 1e-13, 4.0 + next(40) * 1e-13],
                 _ => [next(1_000_000) * 3e-4, next(1_000_000) * 3e-4],
             })
             .collect();
@@ -214,6 +228,20 @@ mod tests {
         };
         let one = in_pool(1);
         assert!(one.2.len() > 50_000, "{} duplicates", one.2.len());
+        let (kept, items, duplicates) = &one;
+        assert_eq!(kept.len() + duplicates.len(), points.len());
+        let mut first = std::collections::HashMap::new();
+        for (i, p) in points.iter().enumerate() {
+            first.entry(p.map(f64::to_bits)).or_insert(i as u32);
+        }
+        for (&p, &item) in kept.iter().zip(items) {
+            let i = grid.index(item);
+            assert_eq!(p, points[i as usize], "the point beside its item");
+            assert_eq!(first[&p.map(f64::to_bits)], i, "the first occurrence kept");
+        }
+        for &[duplicate, kept] in duplicates {
+            assert_eq!(first[&points[duplicate as usize].map(f64::to_bits)], kept);
+        }
         for threads in [2, 3, 5] {
             assert!(in_pool(threads) == one, "{threads} threads");
         }

@@ -130,7 +130,7 @@
 //! product underflows and Shewchuk's bounds hold as they are.
 
 use super::lattice::lattice_incircle;
-use super::{wide, Sign};
+use super::{double_word, wide, Sign};
 
 /// 2^-53: half an ulp of 1.
 const EPSILON: f64 = 1.0 / 9_007_199_254_740_992.0;
@@ -399,12 +399,16 @@ fn exact_incircle_coordinates<const IN_RANGE: bool>(
     dy: f64,
 ) -> Sign {
     let (a, b, c, d) = ([ax, ay], [bx, by], [cx, cy], [dx, dy]);
-    match lattice_incircle(a, b, c, d) {
-        Some(det) => Sign::of_f64(det.signum() as f64),
-        None if IN_RANGE || wide::fits([ax, ay, bx, by, cx, cy, dx, dy]) => {
-            wide::adaptive_incircle(a, b, c, d)
-        }
-        None => wide::incircle(a, b, c, d),
+    if let Some(det) = lattice_incircle(a, b, c, d) {
+        return Sign::of_f64(det.signum() as f64);
+    }
+    if let Some(sign) = double_word::incircle(a, b, c, d) {
+        return sign;
+    }
+    if IN_RANGE || wide::fits([ax, ay, bx, by, cx, cy, dx, dy]) {
+        wide::adaptive_incircle(a, b, c, d)
+    } else {
+        wide::incircle(a, b, c, d)
     }
 }
 

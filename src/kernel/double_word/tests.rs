@@ -7,6 +7,7 @@ use num_traits::Signed;
 
 use super::super::bounded::ulp;
 use super::super::circumcenter::{circumcenter, circumcenter_exact, circumcenter_slow};
+use super::super::poly::incircle_terms_points;
 use super::super::scale::pow2;
 use super::super::stats::Stage;
 use super::*;
@@ -226,6 +227,86 @@ fn extreme_magnitudes_fail_safe() {
         }
         if let Some(o) = super::circumcenter(&t) {
             assert!(within_ulps(o, &t), "{t:?}: {o:?}");
+        }
+    }
+}
+
+/// The exact in-circle sign of `a, b, c, d`, in rationals.
+fn incircle_exact(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Sign {
+    let [a, b, c, d] = [a, b, c, d].map(|p| p.map(rat));
+    let [det] = incircle_terms_points(&a, &b, &c, &d);
+    det.sign().unwrap_or(Sign::Zero)
+}
+
+/// The configurations that reach the exact stages in the triangulation of 10^8 random
+/// samples of a star `r = 1 + 0.3 cos 5t`: two samples `a`, `c` a spacing `h` apart, a
+/// far sample `b`, and `d` on the circle through them near `b` (rounded to `f64`), where
+/// the determinant is within `2^-48` of its permanent and the `f64` filters decline. The
+/// double-word sign is the exact one and it is always decided; exactly cocircular points
+/// (zero determinants) never are, and any magnitudes fail safe.
+#[test]
+fn nearly_cocircular_samples_are_decided_in_double_words() {
+    let mut rng = Rng(0x51ed_2701_c0ff_ee11);
+    let star = |t: f64| {
+        let r = 1.0 + 0.3 * (5.0 * t).cos();
+        [r * t.cos(), r * t.sin()]
+    };
+    let lift = |p: [f64; 2]| p[0] * p[0] + p[1] * p[1];
+    let mut hard = 0;
+    for round in 0..3000 {
+        let h = [1e-6, 1e-7, 1e-8][round % 3];
+        let (t0, t1) = (rng.unit() * 7.0, rng.unit() * 7.0);
+        let (a, b, c) = (star(t0), star(t1), star(t0 + h * (0.2 + rng.unit())));
+        // The circumcenter of a, b, c in f64, and d on that circle a little way from b.
+        let ([bx, by], [cx, cy]) = ([b[0] - a[0], b[1] - a[1]], [c[0] - a[0], c[1] - a[1]]);
+        let den = 2.0 * (bx * cy - by * cx);
+        let (bb, cc) = (lift([bx, by]), lift([cx, cy]));
+        let o = [
+            a[0] + (cy * bb - by * cc) / den,
+            a[1] + (bx * cc - cx * bb) / den,
+        ];
+        let radius = lift([b[0] - o[0], b[1] - o[1]]).sqrt();
+        let angle = (b[1] - o[1]).atan2(b[0] - o[0]) + (rng.unit() - 0.5) * 1e-5 / radius;
+        let d = [o[0] + radius * angle.cos(), o[1] + radius * angle.sin()];
+        let rel = [a, b, c].map(|p| [p[0] - d[0], p[1] - d[1]]);
+        let cross = |p: [f64; 2], q: [f64; 2]| p[0] * q[1] - p[1] * q[0];
+        let cross_abs = |p: [f64; 2], q: [f64; 2]| (p[0] * q[1]).abs() + (p[1] * q[0]).abs();
+        let [x, y, z] = rel;
+        let det = lift(x) * cross(y, z) + lift(y) * cross(z, x) + lift(z) * cross(x, y);
+        let permanent =
+            lift(x) * cross_abs(y, z) + lift(y) * cross_abs(z, x) + lift(z) * cross_abs(x, y);
+        if det.abs() < permanent * 2f64.powi(-48) {
+            hard += 1;
+        }
+        let exact = incircle_exact(a, b, c, d);
+        match incircle(a, b, c, d) {
+            Some(sign) => assert_eq!(sign, exact, "{a:?} {b:?} {c:?} {d:?}"),
+            None => panic!("undecided ({exact:?}): {a:?} {b:?} {c:?} {d:?}"),
+        }
+    }
+    assert!(hard > 2500, "only {hard} of 3000 tests beyond the filters");
+
+    // Exactly cocircular: the corners of a rectangle and lattice points on a circle.
+    for scale in [1.0, 2f64.powi(-30), 2f64.powi(40), 2f64.powi(-1000)] {
+        let s = |p: [f64; 2]| p.map(|x| x * scale);
+        let on_circle = [[5.0, 0.0], [3.0, 4.0], [0.0, 5.0], [-4.0, -3.0]];
+        let rect = [[0.0, 0.0], [3.0, 0.0], [3.0, 1.5], [0.0, 1.5]];
+        for [a, b, c, d] in [on_circle, rect] {
+            assert_eq!(incircle(s(a), s(b), s(c), s(d)), None, "scale {scale}");
+        }
+    }
+
+    // Any finite magnitudes: a decided sign is the exact one.
+    for round in 0..3000 {
+        let (lo, hi) = [(-1074, -1000), (480, 530), (-300, 300)][round % 3];
+        let p = |rng: &mut Rng| [rng.float(lo, hi), rng.float(lo, hi)];
+        let [a, b, c] = [p(&mut rng), p(&mut rng), p(&mut rng)];
+        let d = [a[0] + b[0] - c[0], a[1]];
+        if [d[0], d[1]].iter().any(|x| !x.is_finite()) {
+            continue;
+        }
+        if let Some(sign) = incircle(a, b, c, d) {
+            assert_eq!(sign, incircle_exact(a, b, c, d), "{a:?} {b:?} {c:?} {d:?}");
         }
     }
 }

@@ -294,10 +294,17 @@ impl Arith for DoubleWord {
     }
 }
 
+/// A point's exact coordinates as double words. Written out: `array::map` here was left as
+/// calls to `try_map` (see ARCHITECTURE.md, "Inlining in the kernel").
+#[inline(always)]
+fn words(p: [f64; 2]) -> [DoubleWord; 2] {
+    [DoubleWord::from_f64(p[0]), DoubleWord::from_f64(p[1])]
+}
+
 /// The circumcenter of `t` in double-word arithmetic, if its proven error is within 256
 /// units in the last place of its larger coordinate magnitude (module docs).
 pub(super) fn circumcenter(t: &[[f64; 2]; 3]) -> Option<[f64; 2]> {
-    let Circ { d, ux, uy } = circ(&t.map(|p| p.map(DoubleWord::from_f64)));
+    let Circ { d, ux, uy } = circ(&[words(t[0]), words(t[1]), words(t[2])]);
     let (x, ex) = ux.div(&d)?.plus_input(t[0][0]);
     let (y, ey) = uy.div(&d)?.plus_input(t[0][1]);
     within_promise((x, ex), (y, ey))
@@ -315,8 +322,7 @@ pub(super) fn circumcenter(t: &[[f64; 2]; 3]) -> Option<[f64; 2]> {
 /// Here the error is of the order `u²` of the permanent, so only determinants that are zero
 /// or within about `2^-100` of it go further.
 pub(super) fn incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Option<Sign> {
-    let [a, b, c, d] = [a, b, c, d].map(|p| p.map(DoubleWord::from_f64));
-    let [det] = incircle_terms_points(&a, &b, &c, &d);
+    let [det] = incircle_terms_points(&words(a), &words(b), &words(c), &words(d));
     det.sign()
 }
 

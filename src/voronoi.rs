@@ -156,18 +156,21 @@ fn outgoing_halfedges(tri: &Triangulation) -> Vec<u32> {
         .into_par_iter()
         .map(|_| AtomicU32::new(NO_TWIN))
         .collect();
-    let hull_halfedges = parallel::flat_map_chunks(tri.triangles.len(), |range, hull| {
-        for t in range {
-            for (i, &origin) in tri.triangles[t].iter().enumerate() {
-                let e = 3 * t + i;
-                if halfedges[e] == NO_TWIN {
-                    hull.push(e as u32);
-                } else {
-                    out[origin as usize].fetch_min(e as u32, Relaxed);
+    // Reserved on this thread: worker-grown vectors would stay in the workers' allocators
+    // (a sixth of a curve sample's points are on its hull).
+    let hull_halfedges =
+        parallel::flat_map_chunks_reserved(tri.triangles.len(), 3, |range, hull| {
+            for t in range {
+                for (i, &origin) in tri.triangles[t].iter().enumerate() {
+                    let e = 3 * t + i;
+                    if halfedges[e] == NO_TWIN {
+                        hull.push(e as u32);
+                    } else {
+                        out[origin as usize].fetch_min(e as u32, Relaxed);
+                    }
                 }
             }
-        }
-    });
+        });
     for e in hull_halfedges {
         out[tri.org(e as usize) as usize].store(e, Relaxed);
     }

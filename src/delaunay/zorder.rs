@@ -197,6 +197,21 @@ impl Run<'_> {
             points: &mut self.points[range],
         }
     }
+
+    /// Sorts the items and their points together as `(item, point)` pairs by `order`, in
+    /// the working space `scratch`.
+    fn sort_pairs_by(
+        &mut self,
+        scratch: &mut Vec<(u64, [f64; 2])>,
+        order: impl FnMut(&(u64, [f64; 2]), &(u64, [f64; 2])) -> Ordering,
+    ) {
+        scratch.clear();
+        scratch.extend(self.items.iter().copied().zip(self.points.iter().copied()));
+        scratch.sort_unstable_by(order);
+        for (k, &(item, p)) in scratch.iter().enumerate() {
+            (self.items[k], self.points[k]) = (item, p);
+        }
+    }
 }
 
 /// [`settle_runs`] on `piece`, a whole number of runs of equal keys, then the duplicates
@@ -310,19 +325,9 @@ fn settle_runs(
             }
         }
         if !sorted && n > 1 {
-            scratch.clear();
-            scratch.extend(
-                equal
-                    .items
-                    .iter()
-                    .copied()
-                    .zip(equal.points.iter().copied()),
-            );
-            scratch
-                .sort_unstable_by(|a, b| lexicographic(a.1, b.1).then(index(a.0).cmp(&index(b.0))));
-            for (k, &(item, p)) in scratch.iter().enumerate() {
-                (equal.items[k], equal.points[k]) = (item, p);
-            }
+            equal.sort_pairs_by(scratch, |a, b| {
+                lexicographic(a.1, b.1).then(index(a.0).cmp(&index(b.0)))
+            });
         }
         start = end;
     }
@@ -332,7 +337,7 @@ fn settle_runs(
 /// comparison sort is the faster, else the items alone by radix and then the points read
 /// again from the `input`.
 fn sort_by_items(
-    run: Run,
+    mut run: Run,
     input: &[[f64; 2]],
     index_bits: u32,
     scratch: &mut Vec<(u64, [f64; 2])>,
@@ -345,12 +350,7 @@ fn sort_by_items(
         }
         return;
     }
-    scratch.clear();
-    scratch.extend(run.items.iter().copied().zip(run.points.iter().copied()));
-    scratch.sort_unstable_by_key(|&(item, _)| item);
-    for (k, &(item, p)) in scratch.iter().enumerate() {
-        (run.items[k], run.points[k]) = (item, p);
-    }
+    run.sort_pairs_by(scratch, |a, b| a.0.cmp(&b.0));
 }
 
 /// Sorts items by key, then index (as a stable sort by key would): a radix sort, or for few

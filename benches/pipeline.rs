@@ -12,6 +12,7 @@ use wdm_crust::predicates::{
     orient2d_added_slack,
 };
 use wdm_crust::reconstruct::wdm::label_vertices;
+use wdm_crust::reconstruct::{reconstruct_with, MedialAxisMode, Options};
 
 fn bench_phases(c: &mut Criterion) {
     let mut group = c.benchmark_group("pipeline");
@@ -35,6 +36,13 @@ fn bench_phases(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("reconstruct", n), &points, |b, p| {
             b.iter(|| wdm_crust::reconstruct(p).expect("valid points"))
         });
+        // The curves alone: what a caller who wants no medial axis pays.
+        let curves_only = Options::new().with_medial_axis(MedialAxisMode::Omitted);
+        group.bench_with_input(
+            BenchmarkId::new("reconstruct_curves", n),
+            &points,
+            |b, p| b.iter(|| reconstruct_with(p, &curves_only).expect("valid points")),
+        );
     }
     group.finish();
 }

@@ -18,10 +18,12 @@
 //! * `dup3`: `n` copies of three points;
 //! * `collinear`: `n` distinct points on the line `y = 3x + 1`, irregular spacing.
 //!
-//! Stages: a comma-separated subset of `points,triangulate,voronoi,single,reconstruct,raw`
-//! (default: all but `raw`); `single` is the reconstruction without peeling (one water-flow
-//! pass), `reconstruct` the default one, `raw` the default one with the paper's raw medial
-//! axis (`MedialAxisMode::Raw`). `points` alone only generates the input (the baseline for
+//! Stages: a comma-separated subset of
+//! `points,triangulate,voronoi,single,reconstruct,raw,curves` (default: all but `raw` and
+//! `curves`); `single` is the reconstruction without peeling (one water-flow pass),
+//! `reconstruct` the default one, `raw` the default one with the paper's raw medial axis
+//! (`MedialAxisMode::Raw`), `curves` the default one without a medial axis
+//! (`MedialAxisMode::Omitted`). `points` alone only generates the input (the baseline for
 //! memory). Each run prints one line
 //! per stage and a final line with the peak resident set size read from `/proc/self/status`
 //! (`VmHWM`, the same figure as `/usr/bin/time -v`'s "Maximum resident set size").
@@ -37,7 +39,7 @@ fn main() {
         args.first(),
         args.get(1).and_then(|s| s.parse::<usize>().ok()),
     ) else {
-        eprintln!("usage: stress <uniform|curve|even-curve|circle|grid|two-lines|crossing-lines|dup3|collinear> <n> [points,triangulate,voronoi,single,reconstruct]");
+        eprintln!("usage: stress <uniform|curve|even-curve|circle|grid|two-lines|crossing-lines|dup3|collinear> <n> [points,triangulate,voronoi,single,reconstruct,raw,curves]");
         std::process::exit(2);
     };
     let stages: Vec<&str> = args
@@ -88,6 +90,7 @@ fn main() {
         ("single", false, MedialAxisMode::Pruned),
         ("reconstruct", true, MedialAxisMode::Pruned),
         ("raw", true, MedialAxisMode::Raw),
+        ("curves", true, MedialAxisMode::Omitted),
     ] {
         if !stage(name) {
             continue;

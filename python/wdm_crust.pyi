@@ -82,7 +82,8 @@ class Reconstruction:
         """Closed loops and open chains assembled from the edges."""
     @property
     def medial_axis(self) -> Tuple[_FloatArray, _IndexArray]:
-        """(vertices (v, 2) float64, edges (s, 2) int64): the medial axis (WDM only)."""
+        """(vertices (v, 2) float64, edges (s, 2) int64): the medial axis (WDM only; empty
+        with medial_axis="none")."""
     @property
     def unassigned(self) -> _IndexArray:
         """(u,) int64: the distinct points on no curve, sorted."""
@@ -115,7 +116,7 @@ def reconstruct(
     *,
     algorithm: Literal["wdm", "crust", "nn-crust"] = "wdm",
     peeling: bool = True,
-    medial_axis: Literal["pruned", "raw"] = "pruned",
+    medial_axis: Literal["pruned", "raw", "none"] = "pruned",
     peeling_budget: Optional[int] = None,
 ) -> Reconstruction:
     """Reconstructs the curves the points were sampled from, and their medial axis."""

@@ -299,6 +299,45 @@ fn every_algorithm_and_no_peeling_match_the_library() {
     }
 }
 
+/// `--medial-axis none`: the default run's JSON but for an empty axis; the SVG has no axis
+/// layer and its legend no axis entry (it would read "0 segments", as if the curves enclosed
+/// nothing); `raw` and `pruned` match the library too.
+#[test]
+fn each_medial_axis_mode_matches_the_library() {
+    use wdm_crust::reconstruct::MedialAxisMode;
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let points = bean();
+    write(d, "bean.txt", points_text(&points).as_bytes());
+    for (arg, mode) in [
+        ("pruned", MedialAxisMode::Pruned),
+        ("raw", MedialAxisMode::Raw),
+        ("none", MedialAxisMode::Omitted),
+    ] {
+        let args = ["reconstruct", "bean.txt", "--medial-axis", arg];
+        let run = run_in(d, &args, b"");
+        assert_eq!(run.code, 0, "{args:?}: {}", run.stderr);
+        check_json(&run.stdout, &points, &Options::new().with_medial_axis(mode));
+        let value: Value = serde_json::from_str(&run.stdout).unwrap();
+        let axis_edges = value["medial_axis"]["edges"].as_array().unwrap().len();
+        assert_eq!(axis_edges == 0, mode == MedialAxisMode::Omitted, "{arg}");
+        let run = run_in(d, &[&args[..], &["--format", "svg"]].concat(), b"");
+        assert_eq!(run.code, 0, "{args:?}: {}", run.stderr);
+        check_svg(&run.stdout, &points, &["points", "closed-curves", "legend"]);
+        let drawn = run.stdout.contains("<g id=\"medial-axis\"");
+        let listed = run.stdout.contains("medial axis (");
+        assert_eq!(drawn, mode != MedialAxisMode::Omitted, "{arg}");
+        assert_eq!(listed, mode != MedialAxisMode::Omitted, "{arg}");
+    }
+    let run = run_in(
+        d,
+        &["reconstruct", "bean.txt", "--medial-axis", "nothing"],
+        b"",
+    );
+    assert_eq!(run.code, 2);
+    assert!(run.stderr.contains("none"), "{}", run.stderr);
+}
+
 #[test]
 fn svg_by_output_extension_and_underlays() {
     let dir = tempfile::tempdir().unwrap();

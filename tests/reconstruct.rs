@@ -897,3 +897,71 @@ fn corridors_into_a_hole_are_closed_off() {
         assert_eq!(edges_of(&again, &shuffled), edges_of(&rec, &points));
     }
 }
+
+/// `MedialAxisMode::Omitted` stops after the curves: labels, edges, curves, unassigned points
+/// and passes are those of both axis modes, the axis is empty, and the result says which mode
+/// it is. On inputs that take every path before the axis: noisy nested curves with
+/// outliers (corridor repair, peeling, unassigned points), clean nested curves, the real
+/// point sets of `tests/data`, and a baseline (which reports no mode).
+#[test]
+fn omitting_the_medial_axis_changes_nothing_else() {
+    use wdm_crust::reconstruct::MedialAxisMode;
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data");
+    let real = [
+        "hnn-crust-sgp16/mushroom.p2d",
+        "fitconnect/data/crab_2percent_noise.txt",
+        "stretchdenoise/data/drill.txt",
+    ];
+    let mut inputs: Vec<(String, Vec<[f64; 2]>)> = real
+        .iter()
+        .map(|file| {
+            let path = std::path::Path::new(data).join(file);
+            let points = wdm_crust::io::read_points_from_path(&path)
+                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            (file.to_string(), points)
+        })
+        .collect();
+    let annulus = noise_failures_annulus();
+    for (noise, seed) in [(1.0, 3), (0.5, 214), (0.0, 1)] {
+        let mut points = noisy_sample(&annulus, noise, &mut Rng::new(seed));
+        let mut rng = Rng::new(seed + 100);
+        for _ in 0..5 {
+            points.push([rng.range(-3.0, 3.0), rng.range(-3.0, 3.0)]);
+        }
+        inputs.push((format!("annulus, noise {noise}, seed {seed}"), points));
+    }
+    for (what, points) in &inputs {
+        let run = |mode| {
+            reconstruct_with(points, &Options::new().with_medial_axis(mode))
+                .unwrap_or_else(|e| panic!("{what}: {e}"))
+        };
+        let omitted = run(MedialAxisMode::Omitted);
+        assert_eq!(
+            omitted.medial_axis_mode(),
+            Some(MedialAxisMode::Omitted),
+            "{what}"
+        );
+        assert!(omitted.medial_axis().edges.is_empty(), "{what}");
+        assert!(omitted.medial_axis().vertices.is_empty(), "{what}");
+        assert!(!omitted.curves().is_empty(), "{what}");
+        for mode in [MedialAxisMode::Pruned, MedialAxisMode::Raw] {
+            let full = run(mode);
+            let at = format!("{what}, against {mode:?}");
+            assert_eq!(full.medial_axis_mode(), Some(mode), "{at}");
+            assert!(!full.medial_axis().edges.is_empty(), "{at}");
+            assert_eq!(omitted.labels(), full.labels(), "{at}: labels");
+            assert_eq!(omitted.edges(), full.edges(), "{at}: edges");
+            assert_eq!(omitted.curves(), full.curves(), "{at}: curves");
+            assert_eq!(omitted.unassigned(), full.unassigned(), "{at}: unassigned");
+            assert_eq!(omitted.passes(), full.passes(), "{at}: passes");
+        }
+    }
+    let baseline = reconstruct_with(
+        &inputs[0].1,
+        &Options::new()
+            .with_algorithm(Algorithm::Crust)
+            .with_medial_axis(MedialAxisMode::Omitted),
+    )
+    .unwrap();
+    assert_eq!(baseline.medial_axis_mode(), None);
+}

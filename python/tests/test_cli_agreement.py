@@ -14,6 +14,7 @@ RECONSTRUCT_OPTIONS = [
     ({"algorithm": "nn-crust"}, ["--algorithm", "nn-crust"]),
     ({"peeling": False}, ["--no-peeling"]),
     ({"medial_axis": "raw"}, ["--medial-axis", "raw"]),
+    ({"medial_axis": "none"}, ["--medial-axis", "none"]),
     ({"peeling_budget": 0}, ["--peeling-budget", "0"]),
 ]
 
@@ -89,3 +90,16 @@ def test_the_samples_reach_every_part_of_the_output():
     assert 301 in outline.unassigned.tolist()
     arc = wdm_crust.reconstruct(SAMPLES["open arc"](), algorithm="crust")
     assert [(c.closed, len(c)) for c in arc.curves] == [(False, 80)]
+
+
+@pytest.mark.parametrize("name", list(SAMPLES))
+def test_no_medial_axis_changes_nothing_else(name):
+    points = SAMPLES[name]()
+    full = wdm_crust.reconstruct(points)
+    curves_only = wdm_crust.reconstruct(points, medial_axis="none")
+    assert curves_only.edges.tolist() == full.edges.tolist()
+    assert [c.points.tolist() for c in curves_only.curves] == [c.points.tolist() for c in full.curves]
+    assert curves_only.unassigned.tolist() == full.unassigned.tolist()
+    assert curves_only.passes == full.passes
+    vertices, edges = curves_only.medial_axis
+    assert vertices.shape == (0, 2) and edges.shape == (0, 2)

@@ -174,7 +174,7 @@ def test_the_gil_is_released_while_the_engine_runs():
 def test_reconstruct_options_are_checked():
     with pytest.raises(ValueError, match="algorithm must be one of 'wdm', 'crust', 'nn-crust', got 'nn_crust'"):
         wdm_crust.reconstruct(POINTS, algorithm="nn_crust")
-    with pytest.raises(ValueError, match="medial_axis must be one of 'pruned', 'raw', got 'full'"):
+    with pytest.raises(ValueError, match="medial_axis must be one of 'pruned', 'raw', 'none', got 'full'"):
         wdm_crust.reconstruct(POINTS, medial_axis="full")
     with pytest.raises(ValueError, match="peeling_budget must be a non-negative integer, got -1"):
         wdm_crust.reconstruct(POINTS, peeling_budget=-1)

@@ -12,7 +12,8 @@
 //!   ring and of each hole, in ring order, not repeated at the end;
 //! * one `LineString` per open chain, properties `{"kind":"chain","points":[...]}`;
 //! * one `MultiLineString` for the medial axis, one two-point line per segment (empty for the
-//!   baseline algorithms), properties `{"kind":"medial_axis"}`;
+//!   baseline algorithms and with `MedialAxisMode::Omitted`), properties
+//!   `{"kind":"medial_axis"}`;
 //! * one `MultiPoint` of the unassigned points, properties `{"kind":"unassigned","points":[...]}`,
 //!   left out when there are none.
 //!

@@ -38,6 +38,22 @@ pub enum MedialAxisMode {
     Pruned,
     /// The paper's WDM_MAT: every finite Voronoi edge between two inner vertices.
     Raw,
+    /// No medial axis: the reconstruction stops once the curves are assembled, and
+    /// [`Reconstruction::medial_axis`](super::Reconstruction::medial_axis) is empty. For
+    /// callers who want only the curves: the pruned axis is about half the time of a whole
+    /// reconstruction (ARCHITECTURE.md, "Speed, threads and memory of the later stages"),
+    /// and its balls are the memory peak.
+    ///
+    /// ```
+    /// use wdm_crust::reconstruct::{reconstruct_with, MedialAxisMode, Options};
+    /// let square = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [2.0, 2.0], [1.0, 2.0], [0.0, 2.0], [0.0, 1.0]];
+    /// let options = Options::default().with_medial_axis(MedialAxisMode::Omitted);
+    /// let rec = reconstruct_with(&square, &options)?;
+    /// assert_eq!(rec.curves().len(), 1);
+    /// assert!(rec.medial_axis().edges.is_empty());
+    /// # Ok::<(), wdm_crust::Error>(())
+    /// ```
+    Omitted,
 }
 
 impl MedialAxisMode {
@@ -46,6 +62,7 @@ impl MedialAxisMode {
         match self {
             MedialAxisMode::Pruned => "pruned",
             MedialAxisMode::Raw => "raw",
+            MedialAxisMode::Omitted => "none",
         }
     }
 }

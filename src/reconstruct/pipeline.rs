@@ -57,8 +57,9 @@ pub enum Phase {
     /// Curve assembly and the unassigned points (with a baseline algorithm, also the
     /// translation to the caller's indices).
     Curves,
-    /// The medial axis (WDM); then the curves' translation to the caller's indices, and the
-    /// edges read off them (not held through the axis, the memory peak).
+    /// The medial axis (WDM; none with [`MedialAxisMode::Omitted`]); then the curves'
+    /// translation to the caller's indices, and the edges read off them (not held through
+    /// the axis, the memory peak).
     MedialAxis,
 }
 
@@ -113,6 +114,7 @@ pub fn reconstruct_observed(
             edges,
             curves,
             medial_axis: MedialAxis::default(),
+            medial_axis_mode: None,
             unassigned,
             passes: 1,
             budget_exhausted: false,
@@ -127,7 +129,7 @@ pub fn reconstruct_observed(
         // The water flow's rounded circumcenters of all vertices (32 bytes a point): nothing
         // up to the pruned axis reads them, and it computes its balls' centres again, so they
         // are not held through the repairs and peeling. The raw axis reads them back.
-        if options.medial_axis() == MedialAxisMode::Pruned {
+        if options.medial_axis() != MedialAxisMode::Raw {
             vor.forget_positions();
         }
         lap(Phase::Label);
@@ -200,7 +202,9 @@ pub fn reconstruct_observed(
         // edge is in exactly one curve, and they are read off the curves after the axis.
         drop(edges);
         lap(Phase::Curves);
-        let axis = if options.medial_axis() == MedialAxisMode::Pruned {
+        let axis = if options.medial_axis() == MedialAxisMode::Omitted {
+            MedialAxis::default()
+        } else if options.medial_axis() == MedialAxisMode::Pruned {
             pruned_medial_axis(vor, &curves)
         } else if holes.is_empty() {
             medial_axis(&vor, &labels, &later_pass)
@@ -235,6 +239,7 @@ pub fn reconstruct_observed(
         edges,
         curves,
         medial_axis,
+        medial_axis_mode: Some(options.medial_axis()),
         unassigned,
         passes: 1 + peeling.extra_passes,
         budget_exhausted: peeling.budget_exhausted,

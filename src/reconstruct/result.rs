@@ -1,7 +1,7 @@
 //! What a reconstruction returns.
 
 use super::curves::{self, Curve};
-use super::options::Algorithm;
+use super::options::{Algorithm, MedialAxisMode};
 use super::wdm::Label;
 use crate::delaunay::Triangulation;
 
@@ -25,6 +25,7 @@ pub struct Reconstruction {
     pub(super) edges: Vec<[u32; 2]>,
     pub(super) curves: Vec<Curve>,
     pub(super) medial_axis: MedialAxis,
+    pub(super) medial_axis_mode: Option<MedialAxisMode>,
     pub(super) unassigned: Vec<u32>,
     pub(super) passes: usize,
     pub(super) budget_exhausted: bool,
@@ -58,6 +59,14 @@ impl Reconstruction {
     /// between inner Voronoi vertices).
     pub fn medial_axis(&self) -> &MedialAxis {
         &self.medial_axis
+    }
+
+    /// Which medial axis [`medial_axis`](Self::medial_axis) is: the one the options asked
+    /// for with WDM, `None` with the baseline algorithms (they compute none). An empty axis
+    /// means none was asked for only with [`MedialAxisMode::Omitted`]; otherwise it means
+    /// the curves enclose nothing.
+    pub fn medial_axis_mode(&self) -> Option<MedialAxisMode> {
+        self.medial_axis_mode
     }
 
     /// The Delaunay triangulation of all the points.

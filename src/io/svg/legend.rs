@@ -9,7 +9,7 @@ use super::{
     escape_into, Style, SvgOptions, SvgWriter, CLOSED, DELAUNAY, INNER, MEDIAL, OPEN, OUTER, POINT,
     UNASSIGNED, VORONOI,
 };
-use crate::reconstruct::{Algorithm, Label};
+use crate::reconstruct::{Algorithm, Label, MedialAxisMode};
 use crate::Reconstruction;
 
 /// Legend text size and row height, in pixels.
@@ -114,7 +114,10 @@ pub(super) fn legend_items(rec: &Reconstruction, options: &SvgOptions, style: &S
             plural(open, "open chain", "open chains"),
         ));
     }
-    if rec.algorithm() == Algorithm::Wdm {
+    // Only an axis that was computed has an entry: "0 segments" would say that the curves
+    // enclose nothing.
+    if rec.algorithm() == Algorithm::Wdm && rec.medial_axis_mode() != Some(MedialAxisMode::Omitted)
+    {
         let m = rec.medial_axis().edges.len();
         items.push((
             Swatch::Line(MEDIAL, 1.5),

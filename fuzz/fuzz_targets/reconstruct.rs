@@ -3,7 +3,8 @@
 //! finite Voronoi edges as medial axis; peeling only adds edges between points the first pass
 //! left untouched; curves partition the edges; and the result does not depend on the order of
 //! the input points (edges mapped back through the permutation, duplicates to their first
-//! occurrence).
+//! occurrence). Without the medial axis (`MedialAxisMode::Omitted`) everything else is the
+//! default's.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -72,6 +73,27 @@ fuzz_target!(|scene: Scene| {
     };
     if let Err(e) = check_default(&points, &pruned) {
         fail("reconstruct (default)", &points, &e);
+    }
+    // Without the axis, everything else is the default's.
+    let curves_only = Options::new().with_medial_axis(MedialAxisMode::Omitted);
+    match reconstruct_with(&points, &curves_only) {
+        Ok(rec) => {
+            let same = rec.labels() == pruned.labels()
+                && rec.edges() == pruned.edges()
+                && rec.curves() == pruned.curves()
+                && rec.unassigned() == pruned.unassigned()
+                && rec.passes() == pruned.passes()
+                && rec.medial_axis().edges.is_empty()
+                && rec.medial_axis().vertices.is_empty();
+            if !same {
+                fail(
+                    "reconstruct (no medial axis)",
+                    &points,
+                    "differs from the default beyond its empty axis",
+                );
+            }
+        }
+        Err(e) => fail("reconstruct (no medial axis)", &points, &format!("{e}")),
     }
     let perm = permutation(points.len(), scene.order);
     let shuffled = permute(&points, &perm);

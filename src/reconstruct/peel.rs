@@ -286,7 +286,7 @@ fn later_pass(
         return nothing;
     }
     let vor = sub.voronoi();
-    let mut labels = wdm::label_vertices_local(&vor, options.label_rule()).labels;
+    let mut labels = wdm::labels_local(&vor, options.label_rule());
     let mut crust = wdm_crust_edges(&vor, &labels);
     // Dropped, never rejoined: rejoining here too lost more holes than it kept (likely: the
     // rejoining edge is the pass's, not always a Delaunay edge of all the points, and the

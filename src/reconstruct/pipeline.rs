@@ -125,7 +125,7 @@ pub fn reconstruct_observed(
         lap(Phase::Voronoi);
         // Only the labels go on: the sources and the visit marks are freed here (10 bytes per
         // point at the memory peak, which is later).
-        let mut labels = wdm::label_vertices_local(&vor, options.label_rule()).labels;
+        let mut labels = wdm::labels_local(&vor, options.label_rule());
         // The water flow's rounded circumcenters of all vertices (32 bytes a point): nothing
         // up to the pruned axis reads them, and it computes its balls' centres again, so they
         // are not held through the repairs and peeling. The raw axis reads them back.

@@ -56,56 +56,94 @@ pub struct WaterFlow {
 
 /// Runs the water flow on `vor` and labels every vertex.
 pub fn label_vertices(vor: &Voronoi<'_>, rule: LabelRule) -> WaterFlow {
-    let mut flow = label_vertices_local(vor, rule);
+    let flow = flow_local(vor, rule);
     let tri = vor.triangulation();
-    flow.sources = (0..tri.point_count() as u32)
+    let sources = (0..tri.point_count() as u32)
         .map(|i| {
             let local = flow.sources[tri.local_index(i) as usize];
-            local.filter(|_| !tri.is_duplicate(i))
+            (local != NO_SOURCE && !tri.is_duplicate(i)).then_some(local)
         })
         .collect();
-    flow
+    WaterFlow {
+        labels: flow.labels(rule),
+        sources,
+        visited: flow.state.iter().map(|&s| s & VISITED != 0).collect(),
+    }
 }
 
-/// [`label_vertices`] with `sources` indexed by local point.
-pub(crate) fn label_vertices_local(vor: &Voronoi<'_>, rule: LabelRule) -> WaterFlow {
+/// The labels of [`label_vertices`], without the sources and visits.
+pub(crate) fn labels_local(vor: &Voronoi<'_>, rule: LabelRule) -> Vec<Label> {
+    flow_local(vor, rule).labels(rule)
+}
+
+/// A vertex's water-flow state, as bits of one byte: the walk tests both for every neighbour
+/// it might push, and one array is one cache miss where two arrays of flags were two.
+const ACTIVATED: u8 = 1;
+const VISITED: u8 = 2;
+
+/// No source (yet): the point's cell is unbounded, or no water reached it.
+const NO_SOURCE: u32 = u32::MAX;
+
+/// The state of every vertex and the source of every (local) point after the water flow.
+struct Flow {
+    state: Vec<u8>,
+    sources: Vec<u32>,
+}
+
+impl Flow {
+    fn labels(&self, rule: LabelRule) -> Vec<Label> {
+        let outer = |state: u8| match rule {
+            LabelRule::WaterReached => state == ACTIVATED | VISITED,
+            LabelRule::Literal | LabelRule::Complement => state & ACTIVATED != 0,
+        };
+        parallel::map_range(self.state.len(), |v| {
+            if outer(self.state[v]) {
+                Label::Outer
+            } else {
+                Label::Inner
+            }
+        })
+    }
+}
+
+fn flow_local(vor: &Voronoi<'_>, rule: LabelRule) -> Flow {
     let tri = vor.triangulation();
-    let vertex_count = vor.vertex_count();
     let complement = rule == LabelRule::Complement;
     // In the complement convention "activated" means "marked outer": all start unmarked.
-    let mut activated = vec![!complement; vertex_count];
-    let mut visited = vec![false; vertex_count];
-    let mut sources: Vec<Option<u32>> = vec![None; tri.points.len()];
+    let mut state = vec![if complement { 0 } else { ACTIVATED }; vor.vertex_count()];
+    let mut sources = vec![NO_SOURCE; tri.points.len()];
     // Every vertex of a watered cell is tested against the cell's source: round each
     // circumcenter once (kept in the diagram for the medial axis and the output).
     let positions = vor.vertex_positions();
 
-    for inlet in inlets(vor, positions, &mut activated, complement) {
+    for inlet in inlets(vor, positions, &mut state, complement) {
         if complement {
-            activated[inlet as usize] = true;
+            state[inlet as usize] |= ACTIVATED;
         }
-        if !activated[inlet as usize] || visited[inlet as usize] {
+        // Activated and not visited: the only state water enters.
+        if state[inlet as usize] != ACTIVATED {
             continue;
         }
         let mut stack = vec![inlet];
         while let Some(v) = stack.pop() {
             // The state is checked when a vertex is taken, not when it was pushed: a vertex
             // deactivated meanwhile blocks the water.
-            if visited[v as usize] || !activated[v as usize] {
+            if state[v as usize] != ACTIVATED {
                 continue;
             }
-            visited[v as usize] = true;
+            state[v as usize] |= VISITED;
             for p in vor.vertex_sites_local(v) {
-                if vor.is_cell_bounded_local(p) && sources[p as usize].is_none() {
-                    sources[p as usize] = Some(v);
-                    transition(vor, positions, p, v, &mut activated, complement);
+                // The source first: most sites have one already, and it is the cheaper test.
+                if sources[p as usize] == NO_SOURCE && vor.is_cell_bounded_local(p) {
+                    sources[p as usize] = v;
+                    transition(vor, positions, p, v, &mut state, complement);
                 }
             }
             // Pushed in reverse so the neighbours are taken counterclockwise.
             let before = stack.len();
             for edge in vor.vertex_edges_local(v) {
                 if let EdgeEnd::Vertex(u) = edge.to {
-                    if activated[u as usize] && !visited[u as usize] {
+                    if state[u as usize] == ACTIVATED {
                         stack.push(u);
                     }
                 }
@@ -113,25 +151,7 @@ pub(crate) fn label_vertices_local(vor: &Voronoi<'_>, rule: LabelRule) -> WaterF
             stack[before..].reverse();
         }
     }
-
-    let labels = (0..vertex_count)
-        .map(|v| {
-            let outer = match rule {
-                LabelRule::WaterReached => visited[v] && activated[v],
-                LabelRule::Literal | LabelRule::Complement => activated[v],
-            };
-            if outer {
-                Label::Outer
-            } else {
-                Label::Inner
-            }
-        })
-        .collect();
-    WaterFlow {
-        labels,
-        sources,
-        visited,
-    }
+    Flow { state, sources }
 }
 
 /// The list L_F: vertices carrying a ray, strictly outside the convex hull, sorted by
@@ -140,7 +160,7 @@ pub(crate) fn label_vertices_local(vor: &Voronoi<'_>, rule: LabelRule) -> WaterF
 fn inlets(
     vor: &Voronoi<'_>,
     positions: &[[f64; 2]],
-    activated: &mut [bool],
+    state: &mut [u8],
     complement: bool,
 ) -> Vec<u32> {
     let tri = vor.triangulation();
@@ -165,7 +185,7 @@ fn inlets(
                 .unwrap_or([0.0; 2]);
             list.push((v, smallest_site));
         } else if !complement {
-            activated[v as usize] = false;
+            state[v as usize] &= !ACTIVATED;
         }
     }
     // Largest circumradius first: decided on the rounded circumcenters where their bound
@@ -198,7 +218,7 @@ fn transition(
     positions: &[[f64; 2]],
     p: u32,
     source: u32,
-    activated: &mut [bool],
+    state: &mut [u8],
     complement: bool,
 ) {
     let point = vor.triangulation().points[p as usize];
@@ -213,10 +233,10 @@ fn transition(
             });
         if complement {
             if side == Sign::Positive {
-                activated[v as usize] = true;
+                state[v as usize] |= ACTIVATED;
             }
         } else if side == Sign::Negative {
-            activated[v as usize] = false;
+            state[v as usize] &= !ACTIVATED;
         }
     }
 }

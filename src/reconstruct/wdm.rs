@@ -106,6 +106,7 @@ impl Flow {
     }
 }
 
+/// The water flow of the module docs on `vor`, sources indexed by local point.
 fn flow_local(vor: &Voronoi<'_>, rule: LabelRule) -> Flow {
     let tri = vor.triangulation();
     let complement = rule == LabelRule::Complement;

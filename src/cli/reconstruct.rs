@@ -37,8 +37,8 @@ JSON output (one line):
   (from an end or a junction to the next one); the medial axis is the Voronoi edges between
   two inner Voronoi vertices, over its own vertex list (WDM only: empty for crust and
   nn-crust, and with --medial-axis none), pruned of noise branches unless --medial-axis
-  raw; unassigned lists the points
-  on no curve (outliers, leftovers of noise), sorted, duplicates not listed.
+  raw; unassigned lists the points on no curve (outliers, leftovers of noise), sorted,
+  duplicates not listed.
 
 Text output: one reconstructed edge `i j` per line, nothing else.
 

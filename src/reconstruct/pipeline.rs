@@ -202,28 +202,27 @@ pub fn reconstruct_observed(
         // edge is in exactly one curve, and they are read off the curves after the axis.
         drop(edges);
         lap(Phase::Curves);
-        let axis = if options.medial_axis() == MedialAxisMode::Omitted {
-            MedialAxis::default()
-        } else if options.medial_axis() == MedialAxisMode::Pruned {
-            pruned_medial_axis(vor, &curves)
-        } else if holes.is_empty() {
-            medial_axis(&vor, &labels, &later_pass)
-        } else {
-            // A vertex is inside the shape when it is inner in the first pass and not
-            // inside a hole: an even number of hole loops separate it from infinity.
-            let in_hole = parity_inside(&vor, &holes);
-            let combined: Vec<Label> = labels
-                .iter()
-                .zip(&in_hole)
-                .map(|(&l, &h)| {
-                    if l == Label::Inner && !h {
-                        Label::Inner
-                    } else {
-                        Label::Outer
-                    }
-                })
-                .collect();
-            medial_axis(&vor, &combined, &later_pass)
+        let axis = match options.medial_axis() {
+            MedialAxisMode::Omitted => MedialAxis::default(),
+            MedialAxisMode::Pruned => pruned_medial_axis(vor, &curves),
+            MedialAxisMode::Raw if holes.is_empty() => medial_axis(&vor, &labels, &later_pass),
+            MedialAxisMode::Raw => {
+                // A vertex is inside the shape when it is inner in the first pass and not
+                // inside a hole: an even number of hole loops separate it from infinity.
+                let in_hole = parity_inside(&vor, &holes);
+                let combined: Vec<Label> = labels
+                    .iter()
+                    .zip(&in_hole)
+                    .map(|(&l, &h)| {
+                        if l == Label::Inner && !h {
+                            Label::Inner
+                        } else {
+                            Label::Outer
+                        }
+                    })
+                    .collect();
+                medial_axis(&vor, &combined, &later_pass)
+            }
         };
         for p in curves.iter_mut().flat_map(|c| c.points.iter_mut()) {
             *p = triangulation.input_index(*p);

@@ -114,10 +114,12 @@ pub(super) fn legend_items(rec: &Reconstruction, options: &SvgOptions, style: &S
             plural(open, "open chain", "open chains"),
         ));
     }
-    // Only an axis that was computed has an entry: "0 segments" would say that the curves
-    // enclose nothing.
-    if rec.algorithm() == Algorithm::Wdm && rec.medial_axis_mode() != Some(MedialAxisMode::Omitted)
-    {
+    // Only an axis that was computed has an entry (none for the baselines, none when it was
+    // omitted): "0 segments" would say that the curves enclose nothing.
+    if matches!(
+        rec.medial_axis_mode(),
+        Some(MedialAxisMode::Pruned | MedialAxisMode::Raw)
+    ) {
         let m = rec.medial_axis().edges.len();
         items.push((
             Swatch::Line(MEDIAL, 1.5),

@@ -255,6 +255,32 @@ fn medial_axis_of_noisy_chains_does_not_depend_on_the_input_order() {
     check_everything(&points);
 }
 
+/// Found by `triangulate` (a bug of the oracle, not of the library): three points near
+/// `f64::MAX`, whose hull edges' coordinate differences overflow. The rays' directions are
+/// halved there (documented on `Voronoi::rays`, finite always); the oracle still asked for
+/// the unhalved difference, infinite, and now asks for its half where it overflows.
+#[test]
+fn rays_near_the_largest_coordinates_are_halved_normals() {
+    let points = [
+        [6.741349255733685e307, 8.98846567431158e307],
+        [-1.1154914242865094e308, 1.3439468740929016e307],
+        [4.4135649871314045e307, -1.0332412548404481e308],
+    ];
+    check_everything(&points);
+    // The case is the one meant: some hull edge's difference overflows.
+    let tri = wdm_crust::triangulate(&points).unwrap();
+    let vor = tri.voronoi();
+    let overflowing = vor
+        .rays()
+        .filter(|&(e, _, _)| {
+            let a = points[tri.halfedge_origin(e as usize) as usize];
+            let b = points[tri.halfedge_destination(e as usize) as usize];
+            !(b[1] - a[1]).is_finite() || !(a[0] - b[0]).is_finite()
+        })
+        .count();
+    assert!(overflowing > 0, "no ray's difference overflows");
+}
+
 /// Found by `predicates` (a bug of the oracle, not of the library): `exact_hull` sorted the
 /// points with `total_cmp`, which puts -0.0 before +0.0, so points on the line x = 0 came out
 /// of real order and the monotone chain returned a polygon that was no convex hull; the

@@ -5,7 +5,7 @@
 use super::bounded::lift_filter;
 use super::exact::{lift_exact, signs};
 use super::filter;
-use super::poly::{distance_terms, dot_points_terms, length_terms};
+use super::poly::{distance_terms, dot_points_terms, length_terms, scaled_length_terms};
 use super::scale::normalize;
 use super::Sign;
 
@@ -71,6 +71,61 @@ pub(crate) fn length_order(
         }
     }
     length_order_exact(p, q, r, s)
+}
+
+/// The order of `|p − q|` and `2^doublings · |r − s|` (`Greater` iff the segment `pq` is
+/// strictly longer than `rs` scaled by that power of two), exact: scaling a length by a
+/// power of two is exact in every stage, so the ratio tests of the reconstruction ("an edge
+/// more than 8 times its neighbour's length") are decided like any other predicate.
+pub(crate) fn scaled_length_order(
+    p: [f64; 2],
+    q: [f64; 2],
+    r: [f64; 2],
+    s: [f64; 2],
+    doublings: u32,
+) -> std::cmp::Ordering {
+    let squared = |a: [f64; 2], b: [f64; 2]| {
+        let (dx, dy) = (a[0] - b[0], a[1] - b[1]);
+        dx * dx + dy * dy
+    };
+    // The square of the scaled length: 4^doublings times |r − s|², exact in rounded
+    // arithmetic unless it overflows (which `normal` sends to the exact stages).
+    let factor = f64::from(4u32.pow(doublings.min(15)));
+    let (first, second) = (squared(p, q), squared(r, s) * factor);
+    const U: f64 = f64::EPSILON / 2.0;
+    let normal = |d: f64| d.is_finite() && (d == 0.0 || d > 1e-280);
+    if doublings <= 15 && normal(first) && normal(second) {
+        let difference = first - second;
+        if difference.abs() > 8.0 * U * (first + second) {
+            return difference
+                .partial_cmp(&0.0)
+                .unwrap_or(std::cmp::Ordering::Equal);
+        }
+    }
+    scaled_length_order_exact(p, q, r, s, doublings)
+}
+
+/// The exact stages of [`scaled_length_order`].
+#[cold]
+#[inline(never)]
+fn scaled_length_order_exact(
+    p: [f64; 2],
+    q: [f64; 2],
+    r: [f64; 2],
+    s: [f64; 2],
+    doublings: u32,
+) -> std::cmp::Ordering {
+    let points = [p, q, r, s];
+    let [fp, fq, fr, fs] = lift_filter(normalize(points).0);
+    let ([sign], _) = signs(scaled_length_terms(&fp, &fq, &fr, &fs, doublings), || {
+        let ([ep, eq, er, es], _) = lift_exact(points);
+        scaled_length_terms(&ep, &eq, &er, &es, doublings)
+    });
+    match sign {
+        Sign::Negative => std::cmp::Ordering::Less,
+        Sign::Zero => std::cmp::Ordering::Equal,
+        Sign::Positive => std::cmp::Ordering::Greater,
+    }
 }
 
 /// The exact stages of [`length_order`]: the running-error filter, then integers (the

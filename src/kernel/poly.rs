@@ -158,6 +158,23 @@ pub(super) fn length_terms<T: Arith>(p: &Pt<T>, q: &Pt<T>, r: &Pt<T>, s: &Pt<T>)
     [norm2(&diff(p, q)).sub(&norm2(&diff(r, s)))]
 }
 
+/// `|p − q|² − 4^doublings · |r − s|²` (degree 2): the order of a length and a length scaled
+/// by a power of two (each doubling of the square is an exact addition).
+#[inline(always)]
+pub(super) fn scaled_length_terms<T: Arith>(
+    p: &Pt<T>,
+    q: &Pt<T>,
+    r: &Pt<T>,
+    s: &Pt<T>,
+    doublings: u32,
+) -> [T; 1] {
+    let mut scaled = norm2(&diff(r, s));
+    for _ in 0..2 * doublings {
+        scaled = scaled.add(&scaled);
+    }
+    [norm2(&diff(p, q)).sub(&scaled)]
+}
+
 /// `(s − p)·(q − p)` (degree 2).
 #[inline(always)]
 pub(super) fn dot_points_terms<T: Arith>(p: &Pt<T>, s: &Pt<T>, q: &Pt<T>) -> [T; 1] {

@@ -49,7 +49,7 @@ use std::collections::{BTreeMap, BTreeSet, BinaryHeap, HashMap};
 
 use super::bits::Bits;
 use super::curves::Adjacency;
-use super::nn_crust::closer;
+use super::proximity::closer;
 use super::spikes::drop_woven_spikes;
 use crate::kernel::metric::{dot_sign, length_order};
 use crate::kernel::Sign;

@@ -22,14 +22,9 @@
 //! Equal distances are broken by the coordinates of the candidates (smaller `x`, then smaller
 //! `y`), never by input index, so the result does not depend on the order of the input.
 
-use std::cmp::Ordering;
-
 use super::extract::chain_edges;
-use crate::delaunay::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
-use crate::predicates::{incircle, CirclePosition};
-
-use crate::kernel::metric::{distance_order, dot_sign};
-use crate::kernel::Sign;
+use super::proximity::DelaunayGraph;
+use crate::delaunay::Triangulation;
 
 /// NN-crust edges of the distinct points of `tri`, `[i, j]` with `i < j`, sorted.
 ///
@@ -60,29 +55,12 @@ pub(crate) fn nn_crust_edges_local(tri: &Triangulation) -> Vec<[u32; 2]> {
         chain.sort_unstable();
         return chain;
     }
-    let points = &tri.points;
-    let neighbours = delaunay_graph(tri);
+    let graph = DelaunayGraph::of(tri);
     let mut edges = Vec::new();
-    for p in 0..points.len() {
-        let around = &neighbours.targets[neighbours.start[p]..neighbours.start[p + 1]];
-        let pp = points[p];
-        let nearest = |candidates: &mut dyn Iterator<Item = u32>| {
-            candidates.min_by(|&a, &b| closer(pp, points[a as usize], points[b as usize]))
-        };
-        let Some(q) = nearest(&mut around.iter().copied()) else {
-            continue;
-        };
-        let pq = points[q as usize];
-        let half = nearest(
-            &mut around
-                .iter()
-                .copied()
-                .filter(|&s| dot_sign(pp, points[s as usize], pq) == Sign::Negative),
-        );
-        let p = p as u32;
-        edges.push([p.min(q), p.max(q)]);
-        if let Some(s) = half {
-            edges.push([p.min(s), p.max(s)]);
+    for p in 0..tri.points.len() as u32 {
+        let proposal = graph.proposal(&tri.points, p, |_| true);
+        for q in proposal.iter() {
+            edges.push([p.min(q), p.max(q)]);
         }
     }
     edges.sort_unstable();
@@ -90,66 +68,14 @@ pub(crate) fn nn_crust_edges_local(tri: &Triangulation) -> Vec<[u32; 2]> {
     edges
 }
 
-/// Adjacency lists of the Delaunay graph in compressed rows.
-struct Adjacency {
-    start: Vec<usize>,
-    targets: Vec<u32>,
-}
-
-/// The neighbours of every point along edges with a dual Voronoi edge.
-fn delaunay_graph(tri: &Triangulation) -> Adjacency {
-    let points = &tri.points;
-    let halfedges = tri.halfedges();
-    let mut pairs: Vec<(u32, u32)> = Vec::with_capacity(halfedges.len() + tri.hull().len());
-    for (e, &twin) in halfedges.iter().enumerate() {
-        let (a, b) = (tri.org(e), tri.dest(e));
-        if twin == NO_TWIN {
-            pairs.push((a, b));
-            pairs.push((b, a));
-            continue;
-        }
-        // Each interior edge from the half-edge with the smaller index; kept unless the
-        // triangles on its two sides share their circumcircle.
-        if (twin as usize) < e {
-            continue;
-        }
-        let c = tri.org(prev_in_triangle(e));
-        let d = tri.org(prev_in_triangle(twin as usize));
-        let at = |i: u32| points[i as usize];
-        if incircle(at(a), at(b), at(c), at(d)) != CirclePosition::On {
-            pairs.push((a, b));
-            pairs.push((b, a));
-        }
-        debug_assert_eq!(tri.org(next_in_triangle(e)), b);
-    }
-    pairs.sort_unstable();
-    let mut start = vec![0usize; points.len() + 1];
-    for &(a, _) in &pairs {
-        start[a as usize + 1] += 1;
-    }
-    for i in 0..points.len() {
-        start[i + 1] += start[i];
-    }
-    Adjacency {
-        start,
-        targets: pairs.into_iter().map(|(_, b)| b).collect(),
-    }
-}
-
-/// Orders `a` before `b` if it is strictly closer to `p`, or equally close and smaller in
-/// `(x, y)`; exact.
-pub(super) fn closer(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Ordering {
-    Ordering::from(distance_order(p, a, b)).then_with(|| {
-        a[0].partial_cmp(&b[0])
-            .unwrap_or(Ordering::Equal)
-            .then(a[1].partial_cmp(&b[1]).unwrap_or(Ordering::Equal))
-    })
-}
-
 #[cfg(test)]
 mod tests {
+    use super::super::proximity::closer;
     use super::*;
+    use crate::kernel::metric::{distance_order, dot_sign};
+    use crate::kernel::Sign;
     use num_rational::BigRational;
+    use std::cmp::Ordering;
 
     fn rational(x: f64) -> BigRational {
         BigRational::from_float(x).unwrap_or_default()

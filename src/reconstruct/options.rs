@@ -84,6 +84,7 @@ pub struct Options {
     peeling_budget: usize,
     medial_axis: MedialAxisMode,
     detour_repair: bool,
+    open_curves: bool,
 }
 
 impl Default for Options {
@@ -95,13 +96,14 @@ impl Default for Options {
             peeling_budget: 4,
             medial_axis: MedialAxisMode::Pruned,
             detour_repair: true,
+            open_curves: true,
         }
     }
 }
 
 impl Options {
     /// The defaults: WDM_CRUST with peeling, the [`LabelRule::WaterReached`] labels, a
-    /// peeling budget of 4 and the detour repair.
+    /// peeling budget of 4, the detour repair and open curves.
     pub fn new() -> Self {
         Self::default()
     }
@@ -154,6 +156,38 @@ impl Options {
     pub fn with_detour_repair(mut self, detour_repair: bool) -> Self {
         self.detour_repair = detour_repair;
         self
+    }
+
+    /// Open curves beside closed ones (default on; WDM only). The water flow draws only
+    /// closed boundaries: on the samples of an open curve it closes a loop through a chord,
+    /// wraps a thin loop around the samples, or leaves them out. With this on, the loops it
+    /// is sure of are kept and every other point is joined into open chains (or loops) by
+    /// proximity, and no point is ever on more than two edges (docs/design/open-curves.md).
+    /// Off, the result is the water flow's alone: closed boundaries only, and on inputs
+    /// that are not closed curves a point may be on more than two edges.
+    ///
+    /// ```
+    /// // A half circle: one open chain from end to end.
+    /// let arc: Vec<[f64; 2]> = (0..50)
+    ///     .map(|i| {
+    ///         let t = i as f64 / 49.0 * std::f64::consts::PI;
+    ///         [t.cos(), t.sin()]
+    ///     })
+    ///     .collect();
+    /// let rec = wdm_crust::reconstruct(&arc)?;
+    /// assert_eq!(rec.curves().len(), 1);
+    /// assert!(!rec.curves()[0].closed);
+    /// assert_eq!(rec.edges().len(), 49);
+    /// # Ok::<(), wdm_crust::Error>(())
+    /// ```
+    pub fn with_open_curves(mut self, open_curves: bool) -> Self {
+        self.open_curves = open_curves;
+        self
+    }
+
+    /// See [`with_open_curves`](Self::with_open_curves).
+    pub fn open_curves(&self) -> bool {
+        self.open_curves
     }
 
     /// See [`with_algorithm`](Self::with_algorithm).

@@ -6,6 +6,7 @@ use super::detours::{repair_detours, Repair};
 use super::ears::{drop_islets, repair_ears, Ears};
 use super::extract::{chain_edges, medial_axis, wdm_crust_edges};
 use super::medial_axis::pruned_medial_axis;
+use super::open_curves;
 use super::options::{Algorithm, MedialAxisMode, Options};
 use super::peel::{hole_edges, parity_inside, peel, Peeling};
 use super::result::{untouched_local_points, untouched_points, MedialAxis, Reconstruction};
@@ -54,6 +55,9 @@ pub enum Phase {
     Extract,
     /// Further passes for nested curves (WDM with peeling).
     Peel,
+    /// The loops the water flow is sure of kept, every other point joined into open chains
+    /// (WDM with [`Options::with_open_curves`]).
+    OpenCurves,
     /// Curve assembly and the unassigned points (with a baseline algorithm, also the
     /// translation to the caller's indices).
     Curves,
@@ -72,6 +76,7 @@ impl Phase {
             Phase::Label => "label",
             Phase::Extract => "extract",
             Phase::Peel => "peel",
+            Phase::OpenCurves => "open-curves",
             Phase::Curves => "curves",
             Phase::MedialAxis => "medial-axis",
         }
@@ -178,6 +183,11 @@ pub fn reconstruct_observed(
             later_pass.extend_from_slice(&repair.added);
             later_pass.sort_unstable();
         }
+        // Sure loops kept, every other point joined into chains by proximity.
+        if options.open_curves() && !triangulation.is_degenerate() {
+            edges = open_curves::settle(&triangulation, &edges);
+        }
+        lap(Phase::OpenCurves);
         // In local indices until the axis has read them (see `assemble_unnamed`).
         let mut curves = curves::assemble_unnamed(
             triangulation.points.len(),

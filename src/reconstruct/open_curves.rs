@@ -1,0 +1,429 @@
+//! Open curves beside closed ones: the loops the water flow is sure of are kept, and every
+//! other point is joined into chains by proximity.
+//!
+//! The water flow separates inner from outer Voronoi vertices, so every boundary it draws
+//! is closed: on an open curve it closes a loop through a chord, wraps a thin loop around
+//! both sides of the samples, leaves the points untouched, or meets itself at junctions.
+//! This stage reads the result of the passes before it and settles it into curves that are
+//! 1-manifold (no point on more than two edges):
+//!
+//! 1. **Sure loops.** A loop of the flow is kept when it is a simple cycle and none of its
+//!    edges is a *chord*: longer than [`CHORD_DOUBLINGS`] doublings of each of the two loop
+//!    edges before it and the two after it. A loop the flow closes around an open curve
+//!    crosses from one end to the other, many sample spacings long beside steps of one
+//!    spacing; a closed curve's loop has no such edge, whatever its corners, its sampling
+//!    density (the ε = 1.2 samples of the quality benchmark) or its noise (two edges on each
+//!    side, because noise puts samples next to each other). Every point of a loop that is
+//!    not sure goes on to the next rule.
+//! 2. **Chains.** Every point on no sure loop proposes its nearest neighbour and its half
+//!    neighbour among such points ([`DelaunayGraph::proposal`]). A proposed edge longer than
+//!    [`GAP_DOUBLINGS`] doublings of the nearest-neighbour distance at both ends is a gap
+//!    between two curves, not a step along one, and is dropped. The rest are taken greedily,
+//!    edges proposed by both ends first, shorter before longer, each only while both its
+//!    points have fewer than two edges: so no point gets a third.
+//! 3. **Junk.** A piece is a curve when it has at least [`MIN_CHAIN_POINTS`] points and at
+//!    least three quarters of them are *isolated*: every Delaunay neighbour off the piece is
+//!    farther than [`ISOLATION_DOUBLINGS`] doublings of the point's longer step along it. A
+//!    sampled curve is nearer to itself than to anything else; a chain drawn through a
+//!    scatter of outliers or through the leftovers of a noise band beside a loop is not.
+//!    The points of other pieces stay unassigned.
+//! 4. **Loops beside chains.** A sure loop that a chain runs beside (more than a quarter of
+//!    its points have a chain point within [`ISOLATION_DOUBLINGS`] doublings of their longer
+//!    loop step) is a thin loop the flow wrapped around part of an open curve's samples,
+//!    among noise: it is dissolved, and the chains are drawn again with its points. So is a
+//!    loop that a chain ends beside, nearer to one of its points than that point's longer
+//!    loop step: the chain goes on along the loop, which the flow closed around the end of
+//!    the same open curve.
+//!
+//! Every decision is exact: distances are compared by the kernel, the length ratios are
+//! powers of two, ties fall to the local indices, which follow the coordinates (the Z
+//! order), never the input order.
+
+use std::cmp::Ordering;
+
+use super::proximity::{DelaunayGraph, Proposal};
+use crate::delaunay::Triangulation;
+use crate::kernel::metric::{length_order, scaled_length_order};
+
+/// A loop edge longer than `2^CHORD_DOUBLINGS` times the two loop edges on each side of it
+/// is a chord across an open curve, not a step along a closed one.
+pub(crate) const CHORD_DOUBLINGS: u32 = 3;
+
+/// A proposed chain edge longer than `2^GAP_DOUBLINGS` times the nearest-neighbour distance
+/// at each of its two ends bridges a gap between two curves.
+pub(crate) const GAP_DOUBLINGS: u32 = 3;
+
+/// The fewest points of an open chain or a loop made of proposals; smaller pieces are junk.
+pub(crate) const MIN_CHAIN_POINTS: usize = 5;
+
+/// A point of a chain is isolated when everything off its chain is farther than
+/// `2^ISOLATION_DOUBLINGS` times its longer step along the chain.
+pub(crate) const ISOLATION_DOUBLINGS: u32 = 1;
+
+const NONE: u32 = u32::MAX;
+
+/// The edges of `edges` (local, distinct, `[a, b]` with `a < b`) settled into sure loops
+/// and proximity chains, every point on at most two edges; sorted.
+pub(super) fn settle(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<[u32; 2]> {
+    let points = &tri.points;
+    let n = points.len();
+    let mut loops = sure_loops(points, edges);
+    // Each round joins the free points into chains; a loop that a chain runs beside is
+    // dissolved and its points join the next round (rule 4). At most one round a loop.
+    let chain_edges = loop {
+        let free = |p: u32| loops.of[p as usize] == NONE;
+        // The Delaunay neighbours of the free points only: few on closed curves.
+        let graph = DelaunayGraph::of_rows(tri, free);
+        let chain_edges = chains(&graph, points, &free);
+        let beside = loops_beside_chains(&graph, points, &chain_edges, &loops);
+        if beside.is_empty() {
+            break chain_edges;
+        }
+        for l in beside {
+            loops.dissolve(l);
+        }
+    };
+    let mut kept: Vec<[u32; 2]> = edges
+        .iter()
+        .copied()
+        .filter(|e| {
+            loops.of[e[0] as usize] != NONE && loops.of[e[0] as usize] == loops.of[e[1] as usize]
+        })
+        .collect();
+    kept.extend(chain_edges);
+    kept.sort_unstable();
+    debug_assert!({
+        let mut degree = vec![0u8; n];
+        kept.iter().flatten().all(|&p| {
+            degree[p as usize] += 1;
+            degree[p as usize] <= 2
+        })
+    });
+    kept
+}
+
+/// The sure loops (rule 1 of the module docs): each loop's points in order, and the loop of
+/// every point (`NONE` when free).
+struct SureLoops {
+    cycles: Vec<Vec<u32>>,
+    of: Vec<u32>,
+}
+
+impl SureLoops {
+    fn dissolve(&mut self, l: u32) {
+        for &p in &self.cycles[l as usize] {
+            self.of[p as usize] = NONE;
+        }
+    }
+
+    /// The longer of the two loop edges at `p`, as its far end.
+    fn longer_step(&self, points: &[[f64; 2]], p: u32, position: &[u32]) -> u32 {
+        let cycle = &self.cycles[self.of[p as usize] as usize];
+        let (k, i) = (cycle.len(), position[p as usize] as usize);
+        let (a, b) = (cycle[(i + 1) % k], cycle[(i + k - 1) % k]);
+        let at = |i: u32| points[i as usize];
+        if length_order(at(p), at(a), at(p), at(b)) == Ordering::Less {
+            b
+        } else {
+            a
+        }
+    }
+}
+
+/// Which points lie on a sure loop of `edges` (rule 1 of the module docs).
+fn sure_loops(points: &[[f64; 2]], edges: &[[u32; 2]]) -> SureLoops {
+    let n = points.len();
+    // The two neighbours of every point of degree at most 2; degree above 2 marked.
+    let mut next = vec![[NONE; 2]; n];
+    let mut degree = vec![0u32; n];
+    for &[a, b] in edges {
+        for (p, q) in [(a, b), (b, a)] {
+            let d = degree[p as usize];
+            if d < 2 {
+                next[p as usize][d as usize] = q;
+            }
+            degree[p as usize] = d + 1;
+        }
+    }
+    let mut loops = SureLoops {
+        cycles: Vec::new(),
+        of: vec![NONE; n],
+    };
+    let mut seen = vec![false; n];
+    let mut cycle = Vec::new();
+    for start in 0..n as u32 {
+        if seen[start as usize] || degree[start as usize] != 2 {
+            continue;
+        }
+        // Walk from `start`; a simple cycle returns to it through degree-2 points only.
+        cycle.clear();
+        let (mut prev, mut at) = (start, next[start as usize][0]);
+        cycle.push(start);
+        seen[start as usize] = true;
+        let mut simple = true;
+        while at != start {
+            if degree[at as usize] != 2 || seen[at as usize] {
+                simple = false;
+                break;
+            }
+            seen[at as usize] = true;
+            cycle.push(at);
+            let [x, y] = next[at as usize];
+            (prev, at) = (at, if x == prev { y } else { x });
+        }
+        if simple && is_sure(points, &cycle) {
+            let l = loops.cycles.len() as u32;
+            for &p in &cycle {
+                loops.of[p as usize] = l;
+            }
+            loops.cycles.push(cycle.clone());
+        }
+    }
+    loops
+}
+
+/// The loops still sure that a chain runs beside (rule 4 of the module docs): more than a
+/// quarter of their points have a chain point as Delaunay neighbour within
+/// `2^ISOLATION_DOUBLINGS` times their longer loop step.
+fn loops_beside_chains(
+    graph: &DelaunayGraph,
+    points: &[[f64; 2]],
+    chain_edges: &[[u32; 2]],
+    loops: &SureLoops,
+) -> Vec<u32> {
+    if chain_edges.is_empty() {
+        return Vec::new();
+    }
+    let n = points.len();
+    let mut position = vec![NONE; n];
+    for cycle in &loops.cycles {
+        for (i, &p) in cycle.iter().enumerate() {
+            position[p as usize] = i as u32;
+        }
+    }
+    let at = |i: u32| points[i as usize];
+    let mut crowded = vec![false; n];
+    let mut count = vec![0usize; loops.cycles.len()];
+    let mut on_chain = vec![false; n];
+    let mut chain_degree = vec![0u8; n];
+    for &c in chain_edges.iter().flatten() {
+        chain_degree[c as usize] += 1;
+    }
+    let mut continued = vec![false; loops.cycles.len()];
+    for &c in chain_edges.iter().flatten() {
+        if std::mem::replace(&mut on_chain[c as usize], true) {
+            continue;
+        }
+        // A chain that ends nearer to a loop point than that point's longer loop step
+        // goes on along the loop: one curve, which the flow closed around its end.
+        if chain_degree[c as usize] == 1 {
+            for &p in graph.neighbours(c) {
+                let l = loops.of[p as usize];
+                if l != NONE {
+                    let step = loops.longer_step(points, p, &position);
+                    if length_order(at(p), at(c), at(p), at(step)) == Ordering::Less {
+                        continued[l as usize] = true;
+                    }
+                }
+            }
+        }
+        for &p in graph.neighbours(c) {
+            let l = loops.of[p as usize];
+            if l == NONE || crowded[p as usize] {
+                continue;
+            }
+            let step = loops.longer_step(points, p, &position);
+            if scaled_length_order(at(p), at(c), at(p), at(step), ISOLATION_DOUBLINGS)
+                != Ordering::Greater
+            {
+                crowded[p as usize] = true;
+                count[l as usize] += 1;
+            }
+        }
+    }
+    (0..loops.cycles.len() as u32)
+        .filter(|&l| {
+            let cycle = &loops.cycles[l as usize];
+            loops.of[cycle[0] as usize] == l
+                && (continued[l as usize] || 4 * count[l as usize] > cycle.len())
+        })
+        .collect()
+}
+
+/// Rule 1 for the simple cycle `cycle` (its points in order): no edge is a chord, longer
+/// than `2^CHORD_DOUBLINGS` times each of the two loop edges before it and the two after
+/// it. (Two edges on each side, not one nor the nearest-neighbour distance: noise puts
+/// samples next to each other, and one short step beside an ordinary one is no chord. A
+/// median over a wider window or the whole loop was measured and broke the loops of real
+/// noisy scans, whose spacing varies along the loop.)
+fn is_sure(points: &[[f64; 2]], cycle: &[u32]) -> bool {
+    let k = cycle.len();
+    let at = |i: usize| points[cycle[i % k] as usize];
+    (0..k).all(|i| {
+        let (p, q) = (at(i), at(i + 1));
+        let longer = |a: [f64; 2], b: [f64; 2]| {
+            scaled_length_order(p, q, a, b, CHORD_DOUBLINGS) == Ordering::Greater
+        };
+        let before = longer(at(i + k - 1), at(i)) && longer(at(i + k - 2), at(i + k - 1));
+        let after = longer(at(i + 1), at(i + 2)) && longer(at(i + 2), at(i + 3));
+        !(before && after)
+    })
+}
+
+/// Whether `pq` is longer than `2^doublings` times the nearest-neighbour distance at both
+/// `p` and `q` (their proposals `at_p`, `at_q`).
+fn is_long(
+    points: &[[f64; 2]],
+    p: u32,
+    q: u32,
+    at_p: Proposal,
+    at_q: Proposal,
+    doublings: u32,
+) -> bool {
+    let at = |i: u32| points[i as usize];
+    let longer_than = |from: u32, nearest: Option<u32>| {
+        nearest.is_some_and(|m| {
+            scaled_length_order(at(p), at(q), at(from), at(m), doublings) == Ordering::Greater
+        })
+    };
+    longer_than(p, at_p.nearest) && longer_than(q, at_q.nearest)
+}
+
+/// The chain edges among the points on no sure loop (rules 2 and 3 of the module docs).
+fn chains(graph: &DelaunayGraph, points: &[[f64; 2]], free: &dyn Fn(u32) -> bool) -> Vec<[u32; 2]> {
+    let n = points.len();
+    let proposals: Vec<Proposal> = (0..n as u32)
+        .map(|p| {
+            if free(p) {
+                graph.proposal(points, p, free)
+            } else {
+                Proposal::default()
+            }
+        })
+        .collect();
+    // Each proposed edge once, with whether both ends propose it.
+    let mut candidates: Vec<([u32; 2], bool)> = Vec::new();
+    for p in 0..n as u32 {
+        for q in proposals[p as usize].iter() {
+            let mutual = proposals[q as usize].contains(p);
+            if mutual && q < p {
+                continue;
+            }
+            if is_long(
+                points,
+                p,
+                q,
+                proposals[p as usize],
+                proposals[q as usize],
+                GAP_DOUBLINGS,
+            ) {
+                continue;
+            }
+            candidates.push(([p.min(q), p.max(q)], mutual));
+        }
+    }
+    let at = |i: u32| points[i as usize];
+    candidates.sort_unstable_by(|&(e, me), &(f, mf)| {
+        mf.cmp(&me)
+            .then_with(|| length_order(at(e[0]), at(e[1]), at(f[0]), at(f[1])))
+            .then_with(|| e.cmp(&f))
+    });
+    candidates.dedup_by_key(|c| c.0);
+    let mut degree = vec![0u8; n];
+    let mut taken = Vec::new();
+    for ([a, b], _) in candidates {
+        if degree[a as usize] < 2 && degree[b as usize] < 2 {
+            degree[a as usize] += 1;
+            degree[b as usize] += 1;
+            taken.push([a, b]);
+        }
+    }
+    keep_curve_like_pieces(graph, points, taken)
+}
+
+/// The pieces of `edges` (each point on at most two) that are curves (rule 3 of the module
+/// docs): at least [`MIN_CHAIN_POINTS`] points, at least three quarters of them isolated.
+fn keep_curve_like_pieces(
+    graph: &DelaunayGraph,
+    points: &[[f64; 2]],
+    edges: Vec<[u32; 2]>,
+) -> Vec<[u32; 2]> {
+    let n = points.len();
+    let mut next = vec![[NONE; 2]; n];
+    for &[a, b] in &edges {
+        for (p, q) in [(a, b), (b, a)] {
+            let slot = usize::from(next[p as usize][0] != NONE);
+            next[p as usize][slot] = q;
+        }
+    }
+    // Label each piece by a walk from each of its points not yet labelled.
+    let mut piece = vec![NONE; n];
+    let mut members: Vec<u32> = Vec::new();
+    let mut keep = vec![false; n];
+    for start in 0..n as u32 {
+        if piece[start as usize] != NONE || next[start as usize][0] == NONE {
+            continue;
+        }
+        members.clear();
+        let mut stack = vec![start];
+        piece[start as usize] = start;
+        while let Some(p) = stack.pop() {
+            members.push(p);
+            for q in next[p as usize] {
+                if q != NONE && piece[q as usize] == NONE {
+                    piece[q as usize] = start;
+                    stack.push(q);
+                }
+            }
+        }
+        if members.len() < MIN_CHAIN_POINTS {
+            continue;
+        }
+        let isolated = members
+            .iter()
+            .filter(|&&p| is_isolated(graph, points, p, next[p as usize], &piece))
+            .count();
+        if 4 * isolated >= 3 * members.len() {
+            for &p in &members {
+                keep[p as usize] = true;
+            }
+        }
+    }
+    edges
+        .into_iter()
+        .filter(|&[a, _]| keep[a as usize])
+        .collect()
+}
+
+/// Whether every Delaunay neighbour of `p` off its piece is farther than
+/// `2^ISOLATION_DOUBLINGS` times `p`'s longer edge along the piece (`along`): a point of a
+/// sampled curve is nearer its neighbours along the curve than anything else, a point of a
+/// scatter (outliers, the leftovers of a noise band) is not.
+fn is_isolated(
+    graph: &DelaunayGraph,
+    points: &[[f64; 2]],
+    p: u32,
+    along: [u32; 2],
+    piece: &[u32],
+) -> bool {
+    let at = |i: u32| points[i as usize];
+    let step = match along {
+        [a, NONE] => a,
+        [a, b] => {
+            if length_order(at(p), at(a), at(p), at(b)) == Ordering::Less {
+                b
+            } else {
+                a
+            }
+        }
+    };
+    let own = piece[p as usize];
+    graph
+        .neighbours(p)
+        .iter()
+        .filter(|&&o| piece[o as usize] != own)
+        .all(|&o| {
+            scaled_length_order(at(p), at(o), at(p), at(step), ISOLATION_DOUBLINGS)
+                == Ordering::Greater
+        })
+}

@@ -1,0 +1,143 @@
+//! Proximity on the Delaunay graph: each point's nearest neighbour and its *half
+//! neighbour*, the nearest point on the far side of the line through it orthogonal to its
+//! nearest neighbour (Dey and Kumar's NN-crust). The NN-crust baseline takes both edges
+//! of every point; the open-curve stage takes them as proposals (see `open_curves`).
+//!
+//! Candidates are the neighbours of a point in the Delaunay graph: the edges with a dual
+//! Voronoi edge (hull edges, and interior edges whose two triangles are not cocircular).
+//! The nearest neighbour is always among them (its diametral disk holds no other point);
+//! leaving out the diagonals of cocircular groups makes every answer independent of how
+//! the triangulation split them.
+//!
+//! # Exactness and determinism
+//!
+//! Both tests are degree-2 polynomials in the input coordinates, decided exactly by the
+//! kernel: `|p − a|² − |p − b|²` compares two distances, `(s − p)·(q − p)` is the
+//! half-plane test. Equal distances are broken by the candidates' coordinates (smaller `x`,
+//! then smaller `y`), never by index, so nothing depends on the order of the input.
+
+use std::cmp::Ordering;
+
+use crate::delaunay::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
+use crate::kernel::metric::{distance_order, dot_sign};
+use crate::kernel::Sign;
+use crate::predicates::{incircle, CirclePosition};
+
+/// Adjacency lists of the Delaunay graph (local indices) in compressed rows.
+pub(super) struct DelaunayGraph {
+    start: Vec<usize>,
+    targets: Vec<u32>,
+}
+
+/// A point's nearest neighbour and half neighbour among the admitted candidates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(super) struct Proposal {
+    /// The nearest neighbour, if any candidate was admitted.
+    pub nearest: Option<u32>,
+    /// The nearest candidate strictly more than 90° away from the nearest neighbour.
+    pub half: Option<u32>,
+}
+
+impl Proposal {
+    /// The proposed neighbours: the nearest, then the half neighbour.
+    pub fn iter(self) -> impl Iterator<Item = u32> {
+        self.nearest.into_iter().chain(self.half)
+    }
+
+    /// Whether `q` is one of the proposed neighbours.
+    pub fn contains(self, q: u32) -> bool {
+        self.nearest == Some(q) || self.half == Some(q)
+    }
+}
+
+impl DelaunayGraph {
+    /// The neighbours of every point of `tri` along edges with a dual Voronoi edge.
+    pub fn of(tri: &Triangulation) -> DelaunayGraph {
+        Self::of_rows(tri, |_| true)
+    }
+
+    /// [`of`](Self::of) with the neighbours listed only for the points `p` with `row(p)`
+    /// (the other rows are empty).
+    pub fn of_rows(tri: &Triangulation, row: impl Fn(u32) -> bool) -> DelaunayGraph {
+        let points = &tri.points;
+        let halfedges = tri.halfedges();
+        let mut pairs: Vec<(u32, u32)> = Vec::new();
+        for (e, &twin) in halfedges.iter().enumerate() {
+            let (a, b) = (tri.org(e), tri.dest(e));
+            let mut push = |p: u32, q: u32| {
+                if row(p) {
+                    pairs.push((p, q));
+                }
+            };
+            if twin == NO_TWIN {
+                push(a, b);
+                push(b, a);
+                continue;
+            }
+            // Each interior edge from the half-edge with the smaller index; kept unless the
+            // triangles on its two sides share their circumcircle.
+            if (twin as usize) < e {
+                continue;
+            }
+            let c = tri.org(prev_in_triangle(e));
+            let d = tri.org(prev_in_triangle(twin as usize));
+            let at = |i: u32| points[i as usize];
+            if (row(a) || row(b)) && incircle(at(a), at(b), at(c), at(d)) != CirclePosition::On {
+                push(a, b);
+                push(b, a);
+            }
+            debug_assert_eq!(tri.org(next_in_triangle(e)), b);
+        }
+        pairs.sort_unstable();
+        let mut start = vec![0usize; points.len() + 1];
+        for &(a, _) in &pairs {
+            start[a as usize + 1] += 1;
+        }
+        for i in 0..points.len() {
+            start[i + 1] += start[i];
+        }
+        DelaunayGraph {
+            start,
+            targets: pairs.into_iter().map(|(_, b)| b).collect(),
+        }
+    }
+
+    /// The Delaunay neighbours of `p`.
+    pub fn neighbours(&self, p: u32) -> &[u32] {
+        &self.targets[self.start[p as usize]..self.start[p as usize + 1]]
+    }
+
+    /// The nearest and the half neighbour of `p` among its Delaunay neighbours `s` with
+    /// `admit(s)`.
+    pub fn proposal(&self, points: &[[f64; 2]], p: u32, admit: impl Fn(u32) -> bool) -> Proposal {
+        let around = self.neighbours(p);
+        let pp = points[p as usize];
+        let nearest = |candidates: &mut dyn Iterator<Item = u32>| {
+            candidates.min_by(|&a, &b| closer(pp, points[a as usize], points[b as usize]))
+        };
+        let Some(q) = nearest(&mut around.iter().copied().filter(|&s| admit(s))) else {
+            return Proposal::default();
+        };
+        let pq = points[q as usize];
+        let half = nearest(
+            &mut around
+                .iter()
+                .copied()
+                .filter(|&s| admit(s) && dot_sign(pp, points[s as usize], pq) == Sign::Negative),
+        );
+        Proposal {
+            nearest: Some(q),
+            half,
+        }
+    }
+}
+
+/// Orders `a` before `b` if it is strictly closer to `p`, or equally close and smaller in
+/// `(x, y)`; exact.
+pub(super) fn closer(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Ordering {
+    Ordering::from(distance_order(p, a, b)).then_with(|| {
+        a[0].partial_cmp(&b[0])
+            .unwrap_or(Ordering::Equal)
+            .then(a[1].partial_cmp(&b[1]).unwrap_or(Ordering::Equal))
+    })
+}

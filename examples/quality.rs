@@ -885,6 +885,8 @@ fn main() {
     }
     print_survey_table(&rows, &methods);
 
+    open_curves_table(&methods);
+
     // WDM variants.
     let variants = wdm_variants();
     let rows: Vec<Row> = variant_inputs
@@ -1070,5 +1072,252 @@ fn print_survey_table(rows: &[SurveyRow], methods: &[Method]) {
             );
         }
         println!("{line}");
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Open curves, alone and beside closed ones.
+
+/// The pieces' points (each piece's `points` are its samples, in order) with Gaussian noise
+/// of `noise` × the piece's mean step on each coordinate, shuffled; the truth joins each
+/// piece's consecutive samples (and the last to the first of a closed one).
+fn open_case(pieces: Vec<DenseCurve>, noise: f64, rng: &mut Rng) -> Case {
+    let total: usize = pieces.iter().map(|c| c.points.len()).sum();
+    let order = rng.permutation(total);
+    let mut points = vec![[0.0; 2]; total];
+    let mut truth = HashSet::new();
+    let mut base = 0;
+    for c in &pieces {
+        let k = c.points.len();
+        let steps = if c.closed { k } else { k - 1 };
+        let spacing = c.length() / steps as f64;
+        for (i, p) in c.points.iter().enumerate() {
+            points[order[base + i]] = [
+                p[0] + noise * spacing * rng.normal(),
+                p[1] + noise * spacing * rng.normal(),
+            ];
+        }
+        for i in 0..steps {
+            let (a, b) = (order[base + i] as u32, order[base + (i + 1) % k] as u32);
+            truth.insert((a.min(b), a.max(b)));
+        }
+        base += k;
+    }
+    Case {
+        points,
+        truth,
+        curves: pieces,
+    }
+}
+
+/// `n` samples of the arc of radius `r` about `centre` from `a0` to `a1`, with cos/sin.
+fn arc_curve(centre: [f64; 2], r: f64, a0: f64, a1: f64, n: usize) -> DenseCurve {
+    let points: Vec<[f64; 2]> = (0..n)
+        .map(|i| {
+            let t = a0 + (a1 - a0) * i as f64 / (n - 1) as f64;
+            [centre[0] + r * t.cos(), centre[1] + r * t.sin()]
+        })
+        .collect();
+    DenseCurve::from_points(&points, false, &[])
+}
+
+/// About `n` samples evenly spaced in arc length along `f` on [0, 1].
+fn parametric_curve(f: impl Fn(f64) -> [f64; 2], n: usize) -> DenseCurve {
+    let dense: Vec<[f64; 2]> = (0..DENSE)
+        .map(|i| f(i as f64 / (DENSE - 1) as f64))
+        .collect();
+    let dense = DenseCurve::from_points(&dense, false, &[]);
+    let step = dense.length() / (n - 1) as f64;
+    let mut samples = vec![dense.points[0]];
+    let mut walked = 0.0;
+    for w in dense.points.windows(2) {
+        walked += ((w[1][0] - w[0][0]).powi(2) + (w[1][1] - w[0][1]).powi(2)).sqrt();
+        if walked >= step * samples.len() as f64 {
+            samples.push(w[1]);
+        }
+    }
+    if samples.last() != dense.points.last() {
+        samples.push(*dense.points.last().unwrap_or(&[0.0; 2]));
+    }
+    DenseCurve::from_points(&samples, false, &[])
+}
+
+/// The open-curve families: (label, generator of one trial's pieces).
+fn open_families() -> Vec<(&'static str, Box<dyn Fn(&mut Rng) -> Vec<DenseCurve>>)> {
+    use std::f64::consts::{PI, TAU};
+    vec![
+        (
+            "arcs of 20–340° (cos/sin)",
+            Box::new(|rng: &mut Rng| {
+                let degrees = rng.range(20.0, 340.0);
+                let n = 20 + rng.below(200);
+                vec![arc_curve(
+                    [rng.f64(), rng.f64()],
+                    rng.range(0.5, 3.0),
+                    rng.range(0.0, TAU),
+                    0.0,
+                    n,
+                )
+                .transformed(&Similarity::rotation(degrees.to_radians()))]
+                .into_iter()
+                .map(|c| {
+                    let a0 = rng.range(0.0, TAU);
+                    arc_curve(
+                        [0.0, 0.0],
+                        1.0,
+                        a0,
+                        a0 + degrees.to_radians(),
+                        c.points.len(),
+                    )
+                })
+                .collect()
+            }),
+        ),
+        (
+            "spirals",
+            Box::new(|rng: &mut Rng| {
+                let (turns, inner) = (rng.range(1.0, 3.0), rng.range(0.1, 0.5));
+                let n = 150 + rng.below(250);
+                vec![parametric_curve(
+                    |t| {
+                        let (a, r) = (TAU * turns * t, inner + t);
+                        [r * a.cos(), r * a.sin()]
+                    },
+                    n,
+                )]
+            }),
+        ),
+        (
+            "S-curves and waves",
+            Box::new(|rng: &mut Rng| {
+                let (waves, height) = (rng.range(0.5, 3.0), rng.range(0.2, 1.0));
+                let n = 100 + rng.below(200);
+                vec![parametric_curve(
+                    |t| [4.0 * t, height * (TAU * waves * t).sin()],
+                    n,
+                )]
+            }),
+        ),
+        (
+            "polylines, corners ≥ 60°",
+            Box::new(|rng: &mut Rng| {
+                // A random walk whose every turn is at most 120°.
+                let mut vertices = vec![[0.0, 0.0]];
+                let mut heading = rng.range(0.0, TAU);
+                for _ in 0..2 + rng.below(5) {
+                    let last = vertices[vertices.len() - 1];
+                    let length = rng.range(0.5, 1.5);
+                    vertices.push([
+                        last[0] + length * heading.cos(),
+                        last[1] + length * heading.sin(),
+                    ]);
+                    heading += rng.range(-2.0 * PI / 3.0, 2.0 * PI / 3.0);
+                }
+                vec![DenseCurve::polyline(&vertices, false, 60 + rng.below(150))]
+            }),
+        ),
+        (
+            "open strokes beside a closed loop",
+            Box::new(|rng: &mut Rng| {
+                let n = 60 + rng.below(100);
+                let loop_ = Ellipse {
+                    a: 1.0,
+                    b: rng.range(0.5, 1.0),
+                }
+                .dense(n);
+                let mut pieces = vec![DenseCurve::from_points(&loop_.points, true, &[])];
+                for k in 0..1 + rng.below(3) {
+                    let a0 = rng.range(0.0, TAU);
+                    let r = 1.6 + 0.5 * k as f64;
+                    pieces.push(arc_curve(
+                        [0.0, 0.0],
+                        r,
+                        a0,
+                        a0 + rng.range(0.5, 2.5),
+                        20 + rng.below(60),
+                    ));
+                }
+                pieces
+            }),
+        ),
+        (
+            "ε-samples of open curves, ε = 0.1",
+            Box::new(|rng: &mut Rng| {
+                let curve = if rng.chance(0.5) {
+                    arc_curve([0.0, 0.0], 1.0, 0.0, rng.range(1.0, 5.0), DENSE)
+                } else {
+                    DenseCurve::polyline(&[[0.0, 0.0], [3.0, 0.5], [3.5, 2.0]], false, DENSE)
+                };
+                let sample = CurveSet::new(vec![curve]).eps_sample(0.1, rng);
+                vec![DenseCurve::from_points(&sample.points, false, &[])]
+            }),
+        ),
+    ]
+}
+
+/// Per method: exact edge sets, right counts of loops and chains, junk pieces, the largest
+/// degree of any point, and the Hausdorff distance.
+fn open_curves_table(methods: &[Method]) {
+    println!(
+        "\n### Open and mixed curves\n\nexact = share of trials whose edges are exactly the \
+         truth; right = share whose loops and chains are as many as the true closed and open \
+         curves; junk = mean pieces beyond the true count; deg = the largest number of edges \
+         at any point over all trials (2 for curves); H = symmetric Hausdorff distance in % of \
+         the bounding-box diagonal, mean over trials. 20 trials a row; noise is Gaussian of \
+         the given multiple of the mean step on each coordinate.\n"
+    );
+    let mut header = String::from("| input | noise | n |");
+    let mut rule = String::from("|---|---:|---:|");
+    for method in methods {
+        let name = method.name;
+        header += &format!(" {name} exact | {name} right | {name} junk | {name} deg | {name} H |");
+        rule += "---:|---:|---:|---:|---:|";
+    }
+    println!("{header}\n{rule}");
+    for (f, (label, family)) in open_families().into_iter().enumerate() {
+        for (j, &noise) in [0.0, 0.3].iter().enumerate() {
+            let mut rng = Rng::new(1300 + 10 * f as u64 + j as u64);
+            let cases: Vec<Case> = (0..20)
+                .map(|_| {
+                    let pieces = family(&mut rng);
+                    open_case(pieces, noise, &mut rng)
+                })
+                .collect();
+            let n = cases.iter().map(|c| c.points.len()).sum::<usize>() / cases.len();
+            let mut line = format!("| {label} | {noise} | {n} |");
+            for method in methods {
+                let (mut exact, mut right, mut junk, mut degree, mut h) = (0, 0, 0, 0, 0.0);
+                for case in &cases {
+                    let Ok(rec) = reconstruct_with(&case.points, &method.options) else {
+                        continue;
+                    };
+                    let output: HashSet<(u32, u32)> =
+                        rec.edges().iter().map(|&[a, b]| (a, b)).collect();
+                    exact += usize::from(output == case.truth);
+                    let closed = rec.curves().iter().filter(|c| c.closed).count();
+                    let open = rec.curves().len() - closed;
+                    let true_closed = case.curves.iter().filter(|c| c.closed).count();
+                    let true_open = case.curves.len() - true_closed;
+                    right += usize::from(closed == true_closed && open == true_open);
+                    junk += (closed + open).saturating_sub(case.curves.len());
+                    let mut at = vec![0usize; case.points.len()];
+                    for &[a, b] in rec.edges() {
+                        at[a as usize] += 1;
+                        at[b as usize] += 1;
+                    }
+                    degree = degree.max(at.into_iter().max().unwrap_or(0));
+                    h += curve_distances(&case.points, rec.edges(), &case.curves).0;
+                }
+                let trials = cases.len();
+                line += &format!(
+                    " {:.0} % | {:.0} % | {:.2} | {degree} | {:.2} |",
+                    percent(exact, trials),
+                    percent(right, trials),
+                    junk as f64 / trials as f64,
+                    h / trials as f64
+                );
+            }
+            println!("{line}");
+        }
     }
 }

@@ -19,11 +19,13 @@ fn check_everything(points: &[[f64; 2]]) {
     let Ok(tri) = result else { return };
     checks::check_voronoi(&tri.voronoi()).unwrap();
     // The oracles check the paper's WDM_MAT and peeling, without the detour repair (which
-    // swaps first-pass edges; its invariants are checked in the pipeline's tests); the
-    // pruned axis, repair included, is checked under permutation.
+    // swaps first-pass edges; its invariants are checked in the pipeline's tests) and
+    // without the open-curve stage (which reads the flow's result); the default, both
+    // included, is checked under permutation and for points on three edges.
     let raw = Options::new()
         .with_medial_axis(MedialAxisMode::Raw)
-        .with_detour_repair(false);
+        .with_detour_repair(false)
+        .with_open_curves(false);
     let single_options = raw.with_peeling(false);
     let single = reconstruct_with(points, &single_options).unwrap();
     let full = reconstruct_with(points, &raw).unwrap();

@@ -114,7 +114,10 @@ fn a_parallel_slot_is_closed_at_its_mouth_and_repaired() {
         let mouth = (3 * per_edge, 6 * per_edge);
         let first_pass = reconstruct_with(
             &pts,
-            &Options::new().with_peeling(false).with_detour_repair(false),
+            &Options::new()
+                .with_peeling(false)
+                .with_detour_repair(false)
+                .with_open_curves(false),
         )
         .unwrap();
         assert!(
@@ -203,7 +206,11 @@ fn a_shape_with_a_hole_needs_peeling() {
         assert_eq!(peeled.curves().len(), 2);
         assert!(!peeled.peeling_budget_exhausted());
         // The paper's single pass never reaches the hole: its curve is lost entirely.
-        let single = reconstruct_with(&sample.points, &Options::new().with_peeling(false)).unwrap();
+        let single = reconstruct_with(
+            &sample.points,
+            &Options::new().with_peeling(false).with_open_curves(false),
+        )
+        .unwrap();
         let inner: EdgeSet = Sample {
             curves: vec![sample.curves[1].clone()],
             ..sample.clone()
@@ -250,8 +257,9 @@ fn concentric_rings(rings: usize, per_ring: usize) -> Vec<[f64; 2]> {
 #[test]
 fn peeling_many_nested_rings_stops_at_the_budget() {
     let rings = concentric_rings(20, 300);
-    let unbounded =
-        reconstruct_with(&rings, &Options::new().with_peeling_budget(usize::MAX)).unwrap();
+    // The budget of the flow's passes; the open-curve stage joins whatever they leave.
+    let flow = Options::new().with_open_curves(false);
+    let unbounded = reconstruct_with(&rings, &flow.with_peeling_budget(usize::MAX)).unwrap();
     assert!(!unbounded.peeling_budget_exhausted());
     assert_eq!(unbounded.passes(), 20);
     assert_eq!(unbounded.curves().len(), 20);
@@ -260,7 +268,7 @@ fn peeling_many_nested_rings_stops_at_the_budget() {
         .iter()
         .all(|c| c.closed && c.points.len() == 300));
     assert!(unbounded.unassigned().is_empty());
-    let bounded = reconstruct(&rings).unwrap();
+    let bounded = reconstruct_with(&rings, &flow).unwrap();
     assert!(bounded.peeling_budget_exhausted());
     assert!(bounded.passes() < unbounded.passes());
     // The extra passes ran on at most 4n points: each on all points not yet on a curve.
@@ -274,6 +282,11 @@ fn peeling_many_nested_rings_stops_at_the_budget() {
     let zero = reconstruct_with(&rings, &Options::new().with_peeling_budget(0)).unwrap();
     assert_eq!(zero.passes(), 1);
     assert!(zero.peeling_budget_exhausted());
+    // By default the rings the passes left are joined by proximity: every ring a loop.
+    let joined = reconstruct(&rings).unwrap();
+    assert!(joined.peeling_budget_exhausted());
+    assert_eq!(edge_set(joined.edges()), all);
+    assert!(joined.unassigned().is_empty());
 }
 
 /// A grid is no sample of curves: its rows lie one spacing apart. The first pass takes the
@@ -622,7 +635,12 @@ fn rounded_triangle(n: usize) -> Vec<[f64; 2]> {
 fn label_readings_differ_on_a_convex_shape_with_a_junction() {
     for n in [12, 24, 36] {
         let pts = rounded_triangle(n);
-        let with = |rule| reconstruct_with(&pts, &Options::new().with_label_rule(rule)).unwrap();
+        // The readings of the flow alone: the open-curve stage would take the junction's
+        // spurious edges off again.
+        let with = |rule| {
+            let options = Options::new().with_label_rule(rule).with_open_curves(false);
+            reconstruct_with(&pts, &options).unwrap()
+        };
         let truth = cycle_edges(n);
         // ARCHITECTURE.md's reading: outer = reached by the water and still activated.
         let reached = with(LabelRule::WaterReached);
@@ -857,6 +875,7 @@ fn corridors_into_a_hole_are_closed_off() {
             &Options::new()
                 .with_peeling(false)
                 .with_detour_repair(false)
+                .with_open_curves(false)
                 .with_medial_axis(wdm_crust::reconstruct::MedialAxisMode::Raw),
         )
         .unwrap();

@@ -1056,6 +1056,14 @@ pub fn check_peeled(points: &[[f64; 2]], single: &Reconstruction, full: &Reconst
 /// a sorted list of segments between distinct, used vertices, none NaN.
 pub fn check_default(points: &[[f64; 2]], rec: &Reconstruction) -> Check {
     check_edge_list(points, rec.edges())?;
+    // The default result is 1-manifold: no point on three edges.
+    let mut degree = vec![0u32; points.len()];
+    for &[a, b] in rec.edges() {
+        for p in [a, b] {
+            degree[p as usize] += 1;
+            ensure!(degree[p as usize] <= 2, "point {p} on three edges");
+        }
+    }
     check_curves(points.len(), rec.edges(), rec.curves())?;
     check_point_classes(rec, points)?;
     ensure!(

@@ -20,7 +20,12 @@
 //!    [`GAP_DOUBLINGS`] doublings of the nearest-neighbour distance at both ends is a gap
 //!    between two curves, not a step along one, and is dropped. The rest are taken greedily,
 //!    edges proposed by both ends first, shorter before longer, each only while both its
-//!    points have fewer than two edges: so no point gets a third.
+//!    points have fewer than two edges: so no point gets a third. An edge between the two
+//!    ends of one chain closes it into a loop only when the chain has at least
+//!    [`MIN_CLOSED_POINTS`] points. Then the ends left (noise turns a step away from both
+//!    its ends' proposals now and then) join the Delaunay neighbours that are ends too or on
+//!    no chain and choose each other as nearest, under the same rules, when the join is at
+//!    most [`JOIN_DOUBLINGS`] doublings of the chain's step at each end it joins.
 //! 3. **Junk.** A piece is a curve when it has at least [`MIN_CHAIN_POINTS`] points and at
 //!    least three quarters of them are *isolated*: every Delaunay neighbour off the piece is
 //!    farther than [`ISOLATION_DOUBLINGS`] doublings of the point's longer step along it. A
@@ -34,6 +39,10 @@
 //!    loop that a chain ends beside, nearer to one of its points than that point's longer
 //!    loop step: the chain goes on along the loop, which the flow closed around the end of
 //!    the same open curve.
+//! 5. **The flow's paths.** Where a loop with chords lies on points that proximity joined
+//!    into no curve (a noisy scan of an open curve, whose chains are no isolated curves),
+//!    the loop's paths between its chords are kept, each run of at least
+//!    [`MIN_CHAIN_POINTS`] such points an open chain.
 //!
 //! Every decision is exact: distances are compared by the kernel, the length ratios are
 //! powers of two, ties fall to the local indices, which follow the coordinates (the Z
@@ -41,7 +50,7 @@
 
 use std::cmp::Ordering;
 
-use super::proximity::{DelaunayGraph, Proposal};
+use super::proximity::{closer, DelaunayGraph, Proposal};
 use crate::delaunay::Triangulation;
 use crate::kernel::metric::{length_order, scaled_length_order};
 
@@ -55,6 +64,16 @@ pub(crate) const GAP_DOUBLINGS: u32 = 3;
 
 /// The fewest points of an open chain or a loop made of proposals; smaller pieces are junk.
 pub(crate) const MIN_CHAIN_POINTS: usize = 5;
+
+/// A join of two chain ends is at most `2^JOIN_DOUBLINGS` times the step at each of them
+/// (the longer of its last two edges): a break that noise made in one curve, not the gap
+/// between two.
+pub(crate) const JOIN_DOUBLINGS: u32 = 2;
+
+/// The fewest points of a loop that proximity closes: a closed curve turns by 2π, an
+/// ε-sample by about ε a sample, so fewer than 7 points are no ε-sample for ε < 1 (the
+/// bound of peeling's loops).
+pub(crate) const MIN_CLOSED_POINTS: usize = 7;
 
 /// A point of a chain is isolated when everything off its chain is farther than
 /// `2^ISOLATION_DOUBLINGS` times its longer step along the chain.
@@ -90,7 +109,19 @@ pub(super) fn settle(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<[u32; 2]> {
             loops.of[e[0] as usize] != NONE && loops.of[e[0] as usize] == loops.of[e[1] as usize]
         })
         .collect();
+    // Rule 5: the flow's paths between chords where proximity drew no curve.
+    let mut on_chain = vec![false; n];
+    for &p in chain_edges.iter().flatten() {
+        on_chain[p as usize] = true;
+    }
     kept.extend(chain_edges);
+    for path in &loops.fallbacks {
+        for run in path.split(|&p| on_chain[p as usize] || loops.of[p as usize] != NONE) {
+            if run.len() >= MIN_CHAIN_POINTS {
+                kept.extend(run.windows(2).map(|w| [w[0].min(w[1]), w[0].max(w[1])]));
+            }
+        }
+    }
     kept.sort_unstable();
     debug_assert!({
         let mut degree = vec![0u8; n];
@@ -107,6 +138,8 @@ pub(super) fn settle(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<[u32; 2]> {
 struct SureLoops {
     cycles: Vec<Vec<u32>>,
     of: Vec<u32>,
+    /// The paths that the loops with chords leave without them (rule 5).
+    fallbacks: Vec<Vec<u32>>,
 }
 
 impl SureLoops {
@@ -148,6 +181,7 @@ fn sure_loops(points: &[[f64; 2]], edges: &[[u32; 2]]) -> SureLoops {
     let mut loops = SureLoops {
         cycles: Vec::new(),
         of: vec![NONE; n],
+        fallbacks: Vec::new(),
     };
     let mut seen = vec![false; n];
     let mut cycle = Vec::new();
@@ -171,12 +205,24 @@ fn sure_loops(points: &[[f64; 2]], edges: &[[u32; 2]]) -> SureLoops {
             let [x, y] = next[at as usize];
             (prev, at) = (at, if x == prev { y } else { x });
         }
-        if simple && is_sure(points, &cycle) {
+        if !simple {
+            continue;
+        }
+        let chords = chords(points, &cycle);
+        if chords.is_empty() {
             let l = loops.cycles.len() as u32;
             for &p in &cycle {
                 loops.of[p as usize] = l;
             }
             loops.cycles.push(cycle.clone());
+        } else {
+            // The loop between its chords, from the end of one to the start of the next.
+            for (c, &i) in chords.iter().enumerate() {
+                let j = chords[(c + 1) % chords.len()];
+                let length = (j + cycle.len() - i - 1) % cycle.len() + 1;
+                let path = (1..=length).map(|d| cycle[(i + d) % cycle.len()]).collect();
+                loops.fallbacks.push(path);
+            }
         }
     }
     loops
@@ -250,24 +296,26 @@ fn loops_beside_chains(
         .collect()
 }
 
-/// Rule 1 for the simple cycle `cycle` (its points in order): no edge is a chord, longer
-/// than `2^CHORD_DOUBLINGS` times each of the two loop edges before it and the two after
-/// it. (Two edges on each side, not one nor the nearest-neighbour distance: noise puts
-/// samples next to each other, and one short step beside an ordinary one is no chord. A
-/// median over a wider window or the whole loop was measured and broke the loops of real
-/// noisy scans, whose spacing varies along the loop.)
-fn is_sure(points: &[[f64; 2]], cycle: &[u32]) -> bool {
+/// The chords of the simple cycle `cycle` (its points in order), by position (edge `i`
+/// joins positions `i` and `i + 1`): edges longer than `2^CHORD_DOUBLINGS` times each of the
+/// two loop edges before them and the two after them (rule 1). (Two edges on each side, not
+/// one nor the nearest-neighbour distance: noise puts samples next to each other, and one
+/// short step beside an ordinary one is no chord. A median over a wider window or the whole
+/// loop was measured and broke the loops of real noisy scans, whose spacing varies.)
+fn chords(points: &[[f64; 2]], cycle: &[u32]) -> Vec<usize> {
     let k = cycle.len();
     let at = |i: usize| points[cycle[i % k] as usize];
-    (0..k).all(|i| {
-        let (p, q) = (at(i), at(i + 1));
-        let longer = |a: [f64; 2], b: [f64; 2]| {
-            scaled_length_order(p, q, a, b, CHORD_DOUBLINGS) == Ordering::Greater
-        };
-        let before = longer(at(i + k - 1), at(i)) && longer(at(i + k - 2), at(i + k - 1));
-        let after = longer(at(i + 1), at(i + 2)) && longer(at(i + 2), at(i + 3));
-        !(before && after)
-    })
+    (0..k)
+        .filter(|&i| {
+            let (p, q) = (at(i), at(i + 1));
+            let longer = |a: [f64; 2], b: [f64; 2]| {
+                scaled_length_order(p, q, a, b, CHORD_DOUBLINGS) == Ordering::Greater
+            };
+            let before = longer(at(i + k - 1), at(i)) && longer(at(i + k - 2), at(i + k - 1));
+            let after = longer(at(i + 1), at(i + 2)) && longer(at(i + 2), at(i + 3));
+            before && after
+        })
+        .collect()
 }
 
 /// Whether `pq` is longer than `2^doublings` times the nearest-neighbour distance at both
@@ -329,16 +377,153 @@ fn chains(graph: &DelaunayGraph, points: &[[f64; 2]], free: &dyn Fn(u32) -> bool
             .then_with(|| e.cmp(&f))
     });
     candidates.dedup_by_key(|c| c.0);
-    let mut degree = vec![0u8; n];
-    let mut taken = Vec::new();
-    for ([a, b], _) in candidates {
-        if degree[a as usize] < 2 && degree[b as usize] < 2 {
-            degree[a as usize] += 1;
-            degree[b as usize] += 1;
-            taken.push([a, b]);
+    let mut greedy = Greedy::new(n);
+    for (edge, _) in candidates {
+        greedy.take(edge);
+    }
+    // Noise turns a step of the curve away from both its ends' proposals now and then (the
+    // next sample falls less than 90° from the previous one): the chain ends there. Ends that
+    // are Delaunay neighbours join, shortest first, under the same rules.
+    let mut along = vec![[NONE; 2]; n];
+    for &[a, b] in &greedy.taken {
+        for (p, q) in [(a, b), (b, a)] {
+            let slot = usize::from(along[p as usize][0] != NONE);
+            along[p as usize][slot] = q;
         }
     }
-    keep_curve_like_pieces(graph, points, taken)
+    // The chain's step at an end: the longer of its last two edges (noise makes single
+    // steps short).
+    let end_step = |end: u32| -> Option<[u32; 2]> {
+        let first = along[end as usize][0];
+        if first == NONE {
+            return None;
+        }
+        let [x, y] = along[first as usize];
+        let second = if x == end { y } else { x };
+        Some(
+            if second != NONE
+                && length_order(at(first), at(second), at(end), at(first)) == Ordering::Greater
+            {
+                [first, second]
+            } else {
+                [end, first]
+            },
+        )
+    };
+    // A join is no longer than `2^JOIN_DOUBLINGS` times the step at each chain end it
+    // joins: a break of one curve, not the gap between two.
+    let short = |p: u32, q: u32| {
+        [(p, q), (q, p)].iter().all(|&(end, other)| {
+            end_step(end).is_none_or(|[a, b]| {
+                scaled_length_order(at(end), at(other), at(a), at(b), JOIN_DOUBLINGS)
+                    != Ordering::Greater
+            })
+        })
+    };
+    let step: Vec<u32> = along.iter().map(|a| a[0]).collect();
+    // Each end's nearest admissible end (or point on no chain); pairs that choose each
+    // other join.
+    let degree = &greedy.degree;
+    let open = |p: u32| free(p) && degree[p as usize] < 2;
+    let best: Vec<u32> = (0..n as u32)
+        .map(|p| {
+            if !open(p) {
+                return NONE;
+            }
+            graph
+                .neighbours(p)
+                .iter()
+                .copied()
+                .filter(|&q| {
+                    open(q)
+                        && step[p as usize] != q
+                        && degree[p as usize] + degree[q as usize] >= 1
+                        && short(p, q)
+                })
+                .min_by(|&a, &b| closer(at(p), at(a), at(b)))
+                .unwrap_or(NONE)
+        })
+        .collect();
+    let mut joins: Vec<[u32; 2]> = (0..n as u32)
+        .filter_map(|p| {
+            let q = best[p as usize];
+            (q != NONE && q > p && best[q as usize] == p).then_some([p, q])
+        })
+        .collect();
+    joins.sort_unstable_by(|e, f| {
+        length_order(at(e[0]), at(e[1]), at(f[0]), at(f[1])).then_with(|| e.cmp(f))
+    });
+    for edge in joins {
+        greedy.take(edge);
+    }
+    keep_curve_like_pieces(graph, points, greedy.taken)
+}
+
+/// The chains drawn so far: each point's degree, the pieces, the edges taken.
+struct Greedy {
+    degree: Vec<u8>,
+    pieces: Pieces,
+    taken: Vec<[u32; 2]>,
+}
+
+impl Greedy {
+    fn new(n: usize) -> Greedy {
+        Greedy {
+            degree: vec![0; n],
+            pieces: Pieces::new(n),
+            taken: Vec::new(),
+        }
+    }
+
+    /// Takes `[a, b]` if both have fewer than two edges and, when they are the ends of one
+    /// chain, the chain has at least [`MIN_CLOSED_POINTS`] points (three close samples of a
+    /// noisy curve propose each other all round).
+    fn take(&mut self, [a, b]: [u32; 2]) {
+        if self.degree[a as usize] >= 2 || self.degree[b as usize] >= 2 {
+            return;
+        }
+        let (ra, rb) = (self.pieces.root(a), self.pieces.root(b));
+        if ra == rb && (self.pieces.size[ra as usize] as usize) < MIN_CLOSED_POINTS {
+            return;
+        }
+        self.pieces.join(ra, rb);
+        self.degree[a as usize] += 1;
+        self.degree[b as usize] += 1;
+        self.taken.push([a, b]);
+    }
+}
+
+/// Union–find over the points: the chains drawn so far.
+struct Pieces {
+    parent: Vec<u32>,
+    size: Vec<u32>,
+}
+
+impl Pieces {
+    fn new(n: usize) -> Pieces {
+        Pieces {
+            parent: (0..n as u32).collect(),
+            size: vec![1; n],
+        }
+    }
+
+    fn root(&mut self, mut p: u32) -> u32 {
+        while self.parent[p as usize] != p {
+            let up = self.parent[self.parent[p as usize] as usize];
+            self.parent[p as usize] = up;
+            p = up;
+        }
+        p
+    }
+
+    /// Joins the pieces of the roots `a` and `b` (the smaller root stays).
+    fn join(&mut self, a: u32, b: u32) {
+        if a != b {
+            let (keep, gone) = (a.min(b), a.max(b));
+            self.parent[gone as usize] = keep;
+            self.size[keep as usize] += self.size[gone as usize];
+        }
+    }
 }
 
 /// The pieces of `edges` (each point on at most two) that are curves (rule 3 of the module
@@ -356,15 +541,15 @@ fn keep_curve_like_pieces(
             next[p as usize][slot] = q;
         }
     }
-    // Label each piece by a walk from each of its points not yet labelled.
+    // Each piece's points, found by a walk from each point not yet labelled; labelled by
+    // their first point.
     let mut piece = vec![NONE; n];
-    let mut members: Vec<u32> = Vec::new();
-    let mut keep = vec![false; n];
+    let mut pieces: Vec<Vec<u32>> = Vec::new();
     for start in 0..n as u32 {
         if piece[start as usize] != NONE || next[start as usize][0] == NONE {
             continue;
         }
-        members.clear();
+        let mut members = Vec::new();
         let mut stack = vec![start];
         piece[start as usize] = start;
         while let Some(p) = stack.pop() {
@@ -376,14 +561,20 @@ fn keep_curve_like_pieces(
                 }
             }
         }
-        if members.len() < MIN_CHAIN_POINTS {
-            continue;
+        if members.len() >= MIN_CHAIN_POINTS {
+            pieces.push(members);
         }
+    }
+    let mut keep = vec![false; n];
+    let isolated_enough = |members: &[u32]| {
         let isolated = members
             .iter()
             .filter(|&&p| is_isolated(graph, points, p, next[p as usize], &piece))
             .count();
-        if 4 * isolated >= 3 * members.len() {
+        4 * isolated >= 3 * members.len()
+    };
+    for members in pieces {
+        if isolated_enough(&members) {
             for &p in &members {
                 keep[p as usize] = true;
             }

@@ -345,9 +345,12 @@ mod tests {
             for peeling in [false, true] {
                 // The steps without the detour repair; what the repair changes is checked
                 // below.
+                // The water flow's own result: the open-curve stage, which reads it, is
+                // tested in open_curves.rs and tests/open_curves.rs.
                 let options = Options::new()
                     .with_peeling(peeling)
                     .with_detour_repair(false)
+                    .with_open_curves(false)
                     .with_medial_axis(MedialAxisMode::Raw);
                 let rec = reconstruct_with(&points, &options).unwrap();
                 let repaired =

@@ -183,16 +183,17 @@ fn byte_order_mark_before_a_header() {
 }
 
 /// Found by `reconstruct` (single pass, 507 points: a shifted lattice of order 10^2 plus
-/// points of order 10^-42; `tests/data/tiny-points-sharing-a-zorder-key.txt`); fixed. The tiny points
-/// share one Z-order key, so their order in the divide and conquer, hence the first corner of
-/// their triangles, followed the input order; the rounded circumcenter, computed from the
-/// first corner, moved by an ulp under permutation. Positions are now computed from a
-/// triangle chosen and rotated by coordinates alone (`Voronoi::canonical_triangle`).
+/// points of order 10^-42; `tests/data/regressions/tiny-points-sharing-a-zorder-key.txt`);
+/// fixed. The tiny points share one Z-order key, so their order in the divide and conquer,
+/// hence the first corner of their triangles, followed the input order; the rounded
+/// circumcenter, computed from the first corner, moved by an ulp under permutation.
+/// Positions are now computed from a triangle chosen and rotated by coordinates alone
+/// (`Voronoi::canonical_triangle`).
 #[test]
 fn tiny_points_sharing_a_zorder_key_give_order_independent_positions() {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/tiny-points-sharing-a-zorder-key.txt"
+        "/tests/data/regressions/tiny-points-sharing-a-zorder-key.txt"
     );
     let points = wdm_crust::io::read_points_from_path(std::path::Path::new(path)).unwrap();
     let text = std::fs::read_to_string(path).unwrap();
@@ -226,7 +227,10 @@ fn tiny_points_sharing_a_zorder_key_give_order_independent_positions() {
 #[test]
 fn medial_axis_of_noisy_chains_does_not_depend_on_the_input_order() {
     let read = |name: &str| {
-        let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
+        let path = format!(
+            "{}/tests/data/regressions/{name}",
+            env!("CARGO_MANIFEST_DIR")
+        );
         wdm_crust::io::read_points_from_path(std::path::Path::new(&path))
             .unwrap_or_else(|e| panic!("{path}: {e}"))
     };

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::baselines::{incircle_before_17, orient_before_17, robust_incircle, robust_orient};
+use common::baselines::{incircle_unguarded, orient_unguarded, robust_incircle, robust_orient};
 use common::{curve_points, sizes, Rng};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use wdm_crust::predicates::{
@@ -117,11 +117,11 @@ fn bench_predicates(c: &mut Criterion) {
                 .count()
         })
     });
-    group.bench_function("orient2d_before_17/random", |b| {
+    group.bench_function("orient2d_unguarded/random", |b| {
         b.iter(|| {
             random
                 .iter()
-                .filter(|p| orient_before_17(p[0], p[1], p[2]) == 0)
+                .filter(|p| orient_unguarded(p[0], p[1], p[2]) == 0)
                 .count()
         })
     });
@@ -157,11 +157,11 @@ fn bench_predicates(c: &mut Criterion) {
                 .count()
         })
     });
-    group.bench_function("incircle_before_17/random", |b| {
+    group.bench_function("incircle_unguarded/random", |b| {
         b.iter(|| {
             random
                 .iter()
-                .filter(|p| incircle_before_17(p[0], p[1], p[2], p[3]) == 0)
+                .filter(|p| incircle_unguarded(p[0], p[1], p[2], p[3]) == 0)
                 .count()
         })
     });

@@ -74,8 +74,8 @@ fn bench_peers(group: &mut BenchmarkGroup<'_, WallTime>, n: usize, points: &[[f6
 }
 
 /// wdm-crust in pools of 1 and 2 threads on the same points in the same run: the parallel
-/// speed-up; on uniform points the peers too (one thread), for the lead the single-threaded
-/// construction keeps (on the curve set they are 5–100× behind and take 20 s an iteration
+/// speed-up; on uniform points the peers too (one thread), for the margin by which the
+/// single-threaded construction stays ahead (on the curve set they are 5–100× behind and take 20 s an iteration
 /// at 10^6: see `triangulate/curve`).
 #[cfg(feature = "parallel")]
 fn bench_threads(c: &mut Criterion) {

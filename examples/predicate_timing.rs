@@ -13,7 +13,7 @@
 //! interior edge: its triangle and the opposite point; the Voronoi dual and `validate` make
 //! exactly these): thin, nearly cocircular quadruples, where the filters decline more often.
 //!
-//! Baselines: the public functions before issue 17 (Shewchuk's filters without an underflow
+//! Baselines: the unguarded forms (Shewchuk's filters without an underflow
 //! term, then `robust`), and the `robust` crate itself, compared with zero as its callers do
 //! and classified into a sign as the public functions answer.
 
@@ -23,7 +23,7 @@ mod common;
 use std::hint::black_box;
 use std::time::Instant;
 
-use common::baselines::{incircle_before_17, orient_before_17, robust_incircle, robust_orient};
+use common::baselines::{incircle_unguarded, orient_unguarded, robust_incircle, robust_orient};
 use common::{PointSet, Rng};
 use wdm_crust::predicates::{incircle, incircle_added_slack, orient2d, orient2d_added_slack};
 
@@ -91,7 +91,7 @@ fn time_incircle(name: &str, quads: &[[[f64; 2]; 4]]) {
     let quads = black_box(quads);
     let row = [
         per_call(quads, |p| incircle(p[0], p[1], p[2], p[3]) as u8 == 0),
-        per_call(quads, |p| incircle_before_17(p[0], p[1], p[2], p[3]) == 0),
+        per_call(quads, |p| incircle_unguarded(p[0], p[1], p[2], p[3]) == 0),
         per_call(quads, |p| {
             classified(robust_incircle(p[0], p[1], p[2], p[3])) == 0
         }),
@@ -107,13 +107,13 @@ fn main() {
         .collect();
     let quads = black_box(&points);
     println!("ns per call, random points, best of 400 timings of {CALLS}-call loops");
-    println!("| predicate | public | underflow term added to the bound (`*_added_slack`) | before issue 17 | robust, == 0 | robust, sign |");
+    println!("| predicate | public | underflow term added to the bound (`*_added_slack`) | unguarded | robust, == 0 | robust, sign |");
     println!("|---|---:|---:|---:|---:|---:|");
     for round in 0..3 {
         let orient = [
             per_call(quads, |p| orient2d(p[0], p[1], p[2]) as u8 == 0),
             per_call(quads, |p| orient2d_added_slack(p[0], p[1], p[2]) as u8 == 0),
-            per_call(quads, |p| orient_before_17(p[0], p[1], p[2]) == 0),
+            per_call(quads, |p| orient_unguarded(p[0], p[1], p[2]) == 0),
             per_call(quads, |p| robust_orient(p[0], p[1], p[2]) == 0.0),
             per_call(quads, |p| classified(robust_orient(p[0], p[1], p[2])) == 0),
         ];
@@ -122,7 +122,7 @@ fn main() {
             per_call(quads, |p| {
                 incircle_added_slack(p[0], p[1], p[2], p[3]) as u8 == 0
             }),
-            per_call(quads, |p| incircle_before_17(p[0], p[1], p[2], p[3]) == 0),
+            per_call(quads, |p| incircle_unguarded(p[0], p[1], p[2], p[3]) == 0),
             per_call(quads, |p| robust_incircle(p[0], p[1], p[2], p[3]) == 0.0),
             per_call(quads, |p| {
                 classified(robust_incircle(p[0], p[1], p[2], p[3])) == 0
@@ -135,7 +135,7 @@ fn main() {
     }
     println!();
     println!("in-circle on the Delaunay tests of curve samples ({CALLS} tests from 2^16 points)");
-    println!("| tests | public | before issue 17 | robust, sign |");
+    println!("| tests | public | unguarded | robust, sign |");
     println!("|---|---:|---:|---:|");
     let star = random_parameter_star(1 << 16, &mut rng);
     let even = PointSet::Curve.points(1 << 16, 7);

@@ -1,7 +1,7 @@
 #!/bin/bash
-# Alternating A/B runs of two builds of examples/stress.rs on the sets and sizes the README's
-# "whole reconstruction against its triangulation" table reports (on a shared machine only
-# alternation and ranges mean anything). Build each side first, e.g.:
+# Alternating A/B runs of two builds of examples/stress.rs on the sets and sizes of the
+# stress table in benches/README.md (on a shared machine only alternation and ranges mean
+# anything). Build each side first, e.g.:
 #   git worktree add /tmp/ab-old <commit> && (cd /tmp/ab-old && cargo build --release --example stress)
 #   cargo build --release --example stress
 #   scripts/ab-stress.sh /tmp/ab-old/target/release/examples/stress target/release/examples/stress > ab.txt

@@ -56,3 +56,8 @@ pub use error::Error;
 pub use reconstruct::{reconstruct, reconstruct_observed, reconstruct_with, Reconstruction};
 pub use voronoi::Voronoi;
 pub use voronoi::{BoundingBox, BoxError};
+
+// The README's Rust example runs with the doc tests (`cargo test --doc`).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -1,5 +1,5 @@
 //! Data-parallel loops: on rayon's pool with the `parallel` feature, plain loops without it.
-//! Every helper returns what the plain loop returns, in the same order, so results never
+//! Every function here returns what the plain loop returns, in the same order, so results never
 //! depend on the number of threads.
 
 use std::ops::Range;

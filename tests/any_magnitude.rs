@@ -118,7 +118,7 @@ fn power_of_two_scaling_changes_nothing() {
     }
 }
 
-/// The example: 500 points scaled to 1e-100 and to 1e150 (not powers of two: the
+/// 500 points scaled to 1e-100 and to 1e150 (not powers of two: the
 /// points differ from the unscaled ones) are triangulated, their dual built and their curve
 /// reconstructed.
 #[test]

@@ -1,7 +1,7 @@
 //! Inputs found by the fuzz targets (`fuzz/`), pasted as literals, with the same exact
 //! oracles the targets use (`fuzz/src/checks.rs`, included by path).
 //!
-//! Tests marked `#[ignore]` pin open issues in core code: they fail until the issue is fixed
+//! Tests marked `#[ignore]` pin open bugs in core code: they fail until the bug is fixed
 //! (run them with `cargo test --test fuzz_regressions -- --ignored`); remove the `ignore`
 //! with the fix.
 
@@ -103,7 +103,7 @@ fn many_copies_of_one_point() {
     checks::check_triangulate(&copies, &tri).unwrap();
 }
 
-/// Fixed issue, found by `reconstruct` (medial axis compared bitwise under permutation).
+/// Found by `reconstruct` (medial axis compared bitwise under permutation); fixed.
 ///
 /// src/voronoi.rs, `order_face_cycle`: the boundary cycle of a merged (cocircular) face starts
 /// at the half-edge whose origin has the smallest *point index*, so permuting the input
@@ -117,7 +117,7 @@ fn many_copies_of_one_point() {
 /// independently of point indices (e.g. the smallest half-edge id of the face: the triangle
 /// arrays are identical under permutation) fixes it.
 #[test]
-fn merged_face_position_depends_on_input_order() {
+fn merged_face_position_does_not_depend_on_the_input_order() {
     let points = [
         [1.570784008902847, 4.999976474595966],
         [-162.48185981524023, 4.704677472743322],
@@ -138,10 +138,10 @@ fn merged_face_position_depends_on_input_order() {
 /// decided, and that path followed the (index-dependent) boundary order of merged faces.
 /// Here the medial axis had 16 segments for the input and 13 for the same points reversed
 /// (the crust edges are the same). Making the boundary order index-independent hid it; the
-/// cause was removed with issue 18 (see
+/// cause was removed by counting only hole loops in the parity (see
 /// [`medial_axis_of_noisy_chains_does_not_depend_on_the_input_order`]).
 #[test]
-fn peeled_medial_axis_depends_on_input_order() {
+fn peeled_medial_axis_of_rotated_grids_does_not_depend_on_the_input_order() {
     let points = [
         [58.40224834496213, 71.42952742566177],
         [57.71236069786755, 70.70561097027048],
@@ -184,17 +184,18 @@ fn byte_order_mark_before_a_header() {
     assert_eq!(on_the_fly, detected);
 }
 
-/// Fixed issue, found by `reconstruct` (single pass, 507 points: a shifted lattice of order
-/// 10^2 plus points of order 10^-42; `tests/data/fuzz-order-tiny-points.txt`). The tiny points
-/// share one Z-order key, so their order in the divide and conquer, hence the first corner of
-/// their triangles, followed the input order; the rounded circumcenter, computed from the
-/// first corner, moved by an ulp under permutation. Positions are now computed from a
-/// triangle chosen and rotated by coordinates alone (`Voronoi::canonical_triangle`).
+/// Found by `reconstruct` (single pass, 507 points: a shifted lattice of order 10^2 plus
+/// points of order 10^-42; `tests/data/regressions/tiny-points-sharing-a-zorder-key.txt`);
+/// fixed. The tiny points share one Z-order key, so their order in the divide and conquer,
+/// hence the first corner of their triangles, followed the input order; the rounded
+/// circumcenter, computed from the first corner, moved by an ulp under permutation.
+/// Positions are now computed from a triangle chosen and rotated by coordinates alone
+/// (`Voronoi::canonical_triangle`).
 #[test]
 fn tiny_points_sharing_a_zorder_key_give_order_independent_positions() {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/fuzz-order-tiny-points.txt"
+        "/tests/data/regressions/tiny-points-sharing-a-zorder-key.txt"
     );
     let points = wdm_crust::io::read_points_from_path(std::path::Path::new(path)).unwrap();
     let text = std::fs::read_to_string(path).unwrap();
@@ -215,7 +216,7 @@ fn tiny_points_sharing_a_zorder_key_give_order_independent_positions() {
     check_everything(&points);
 }
 
-/// Issue 18, found by `reconstruct` (25 minutes, `-max_len=4096 -len_control=0`): 600 points,
+/// Found by `reconstruct` (25 minutes, `-max_len=4096 -len_control=0`): 600 points,
 /// two closed curves at ~1e40 and ~1e58 scale, 157 duplicates, in two orders. The crust was
 /// the same; with peeling the medial axis had 435 segments in one order and 436 in the other.
 ///
@@ -228,12 +229,15 @@ fn tiny_points_sharing_a_zorder_key_give_order_independent_positions() {
 #[test]
 fn medial_axis_of_noisy_chains_does_not_depend_on_the_input_order() {
     let read = |name: &str| {
-        let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
+        let path = format!(
+            "{}/tests/data/regressions/{name}",
+            env!("CARGO_MANIFEST_DIR")
+        );
         wdm_crust::io::read_points_from_path(std::path::Path::new(&path))
             .unwrap_or_else(|e| panic!("{path}: {e}"))
     };
-    let points = read("fuzz-medial-axis-order-points.txt");
-    let permuted = read("fuzz-medial-axis-order-permuted.txt");
+    let points = read("noisy-chains-at-wide-scales.txt");
+    let permuted = read("noisy-chains-at-wide-scales-permuted.txt");
     assert_eq!((points.len(), permuted.len()), (600, 600));
     // permuted[i] = points[perm[i]]; among duplicates any index will do, since the checks map
     // every index to the first occurrence of its coordinates.
@@ -350,7 +354,7 @@ fn hull_oracle_orders_negative_zero_as_zero() {
     for i in 0..n {
         let (a, b, c) = (hull[i], hull[(i + 1) % n], hull[(i + 2) % n]);
         // Weakly convex: with `keep_collinear` the points inside hull edges stay (every
-        // finite point is in the hull's input since issue 17, some of them collinear).
+        // finite point is in the hull's input, some of them collinear).
         assert_ne!(
             wdm_crust::predicates::orient2d(a, b, c),
             wdm_crust::predicates::Orientation::Clockwise,

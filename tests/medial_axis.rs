@@ -4,7 +4,7 @@
 //! curves (`wdm_crust_testkit::medial_balls`), computed without any Voronoi code. For clean
 //! ε-samples and for evenly spaced samples with Gaussian noise of 0.1 and 0.3 × the spacing,
 //! of single shapes, a shape with a hole and two separate shapes, each under a random
-//! similarity, the tests check issue 13's numbers:
+//! similarity, the tests check these numbers:
 //!
 //! * **precision**: no output segment lies farther than 3 % of the shape's diameter `D` from
 //!   the true axis;
@@ -461,7 +461,7 @@ fn check(rows: &[(&'static str, Tally, Tally, usize)], expect: &Expect) {
     }
 }
 
-/// Clean ε-samples meet the issue's numbers. The superellipse's rounded corners carry
+/// Clean ε-samples meet the module's numbers. The superellipse's rounded corners carry
 /// branches whose object angle falls below 60° while the radius is still large: they keep
 /// their length because clean samples are pruned at 30° (trunk gap 2.5 % of the diameter;
 /// 6.4 % at 60°).

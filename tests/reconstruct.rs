@@ -674,7 +674,7 @@ fn degenerate_inputs_give_a_chain_or_nothing() {
     assert!(rec.medial_axis().edges.is_empty());
 }
 
-// ----- noisy closed curves (issue 13): one closed curve per true curve -----
+// ----- noisy closed curves: one closed curve per true curve -----
 
 /// Evenly spaced samples of `curves` with Gaussian noise of `noise` × the mean spacing on
 /// each coordinate, shuffled.

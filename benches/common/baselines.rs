@@ -1,6 +1,7 @@
 //! The predicates the public `orient2d` / `incircle` are compared with: the `robust` crate,
-//! and the public functions as they were before issue 17 (Shewchuk's filters without an
-//! underflow term, then `robust`; exact only where no product underflows).
+//! and the *unguarded* forms, Shewchuk's filters without an underflow term, then `robust`
+//! (exact only where no product underflows; the cost the guarded public functions must
+//! match).
 
 fn coord(p: [f64; 2]) -> robust::Coord<f64> {
     robust::Coord { x: p[0], y: p[1] }
@@ -30,11 +31,11 @@ fn sign_of(x: f64) -> u8 {
     }
 }
 
-/// The public `orient2d` before issue 17 (any finite input): Shewchuk's filter without an
-/// underflow term, then `robust`. Exact only where no product underflows; the baseline of
-/// "no measurable slowdown".
+/// The unguarded orientation: Shewchuk's filter without an underflow term, then `robust`.
+/// Exact only where no product underflows; the baseline of "no measurable slowdown" for the
+/// public `orient2d`, which is exact for any finite input.
 #[inline(always)]
-pub fn orient_before_17(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> u8 {
+pub fn orient_unguarded(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> u8 {
     let left = (a[0] - c[0]) * (b[1] - c[1]);
     let right = (a[1] - c[1]) * (b[0] - c[0]);
     let det = left - right;
@@ -48,9 +49,9 @@ pub fn orient_before_17(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> u8 {
     }
 }
 
-/// The public `incircle` before issue 17, as [`orient_before_17`].
+/// The unguarded in-circle test, as [`orient_unguarded`].
 #[inline(always)]
-pub fn incircle_before_17(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> u8 {
+pub fn incircle_unguarded(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> u8 {
     let [adx, ady] = [a[0] - d[0], a[1] - d[1]];
     let [bdx, bdy] = [b[0] - d[0], b[1] - d[1]];
     let [cdx, cdy] = [c[0] - d[0], c[1] - d[1]];

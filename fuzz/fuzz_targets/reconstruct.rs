@@ -18,9 +18,10 @@ use wdm_crust_fuzz::scene::{permutation, Scene};
 
 const MAX_POINTS: usize = 600;
 
-/// Relaxes the order-independence check for the issues fixed in `order_face_cycle`
+/// Relaxes the order-independence check for the order dependences fixed in `order_face_cycle`
 /// (src/voronoi.rs) and in the hole parity of peeling (tests
-/// `merged_face_position_depends_on_input_order`, `peeled_medial_axis_depends_on_input_order`
+/// `merged_face_position_does_not_depend_on_the_input_order`,
+/// `peeled_medial_axis_of_rotated_grids_does_not_depend_on_the_input_order`
 /// and `medial_axis_of_noisy_chains_does_not_depend_on_the_input_order` in
 /// tests/fuzz_regressions.rs): when `true`,
 /// Voronoi vertex positions are compared within the accuracy of `circumcenter` instead of

@@ -27,14 +27,14 @@ POINT_SUFFIXES = {".txt", ".xy", ".xym", ".p2d", ".gtn", ".node", ".csv"}
 
 
 def point_files(fuzz):
-    """The real point sets (tests/data), or the fuzz regression inputs."""
+    """The real point sets (tests/data), or the fuzz regression inputs (tests/data/regressions)."""
     files = sorted(
         p
         for p in DATA.rglob("*")
         if p.is_file()
         and p.suffix in POINT_SUFFIXES
         and p.name != "GPL-3.0.txt"
-        and p.name.startswith("fuzz-") == fuzz
+        and (p.relative_to(DATA).parts[0] == "regressions") == fuzz
     )
     assert files, f"no point files under {DATA}"
     return files

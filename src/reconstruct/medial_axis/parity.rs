@@ -63,9 +63,8 @@ fn depth_first(
 /// components, few (about one per loop and one outside), are then joined across the loops'
 /// edges and searched from the rays' on one thread. The depth-first search is one
 /// dependent chain of cache misses: 0.55 s of a 13.5 s reconstruction at 10^7 points on
-/// one thread (noisy curve set); the components took 0.45 s on two in session 11, 0.72–0.75 s
-/// against the search's 0.56 s in session 12 (and 0.57 against 0.39 s on the curve set), so
-/// they run from four threads.
+/// one thread (noisy curve set); on two threads the components took 0.72–0.75 s against the
+/// search's 0.56 s (0.57 against 0.39 s on the curve set), so they run from four threads.
 #[cfg(feature = "parallel")]
 mod components {
     use std::sync::atomic::{AtomicU32, Ordering::Relaxed};

@@ -1,4 +1,4 @@
-//! Tiny 2D vector helpers on `[f64; 2]`, private to the sampling module.
+//! Tiny 2D vector functions on `[f64; 2]`, private to the sampling module.
 
 pub(crate) type P2 = [f64; 2];
 

@@ -1,11 +1,13 @@
-# Sourced by the device scripts (scripts/device-*.sh) with `log_name` set: the stress
-# binary, the log under $OUT (set by the device tool; a temporary folder elsewhere), and
-# `run`. Each run has its own time limit, so one slow run cannot take the rest with it.
-bin=${STRESS_BIN:-.device-bin/stress}
+# Sourced by scripts/many-core-*.sh with `log_name` set: the stress binary, the log file, and
+# `run`. The binary is $STRESS_BIN (default target/release/examples/stress); the log goes to
+# $OUT/$log_name, $OUT defaulting to a new temporary folder. Each run has its own time limit,
+# so one slow run cannot take the rest with it.
+bin=${STRESS_BIN:-target/release/examples/stress}
 out=${OUT:-$(mktemp -d)}
 mkdir -p "$out"
 log="$out/$log_name"
 : >"$log"
+echo "log: $log"
 
 # `run LIMIT THREADS ARGS…`: one stress run with RAYON_NUM_THREADS=THREADS.
 run() {

@@ -43,6 +43,14 @@ fn bench_phases(c: &mut Criterion) {
             &points,
             |b, p| b.iter(|| reconstruct_with(p, &curves_only).expect("valid points")),
         );
+        // The water flow's result alone, without the open-curve stage: what that stage
+        // costs on closed curves.
+        let closed_only = Options::new().with_open_curves(false);
+        group.bench_with_input(
+            BenchmarkId::new("reconstruct_closed_only", n),
+            &points,
+            |b, p| b.iter(|| reconstruct_with(p, &closed_only).expect("valid points")),
+        );
     }
     group.finish();
 }

@@ -82,11 +82,22 @@ pub(crate) const ISOLATION_DOUBLINGS: u32 = 1;
 const NONE: u32 = u32::MAX;
 
 /// The edges of `edges` (local, distinct, `[a, b]` with `a < b`) settled into sure loops
-/// and proximity chains, every point on at most two edges; sorted.
+/// and proximity chains, every point on at most two edges; in no particular order (the
+/// curves are assembled from them).
 pub(super) fn settle(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<[u32; 2]> {
     let points = &tri.points;
     let n = points.len();
     let mut loops = sure_loops(points, edges);
+    if loops.of.iter().filter(|&&l| l == NONE).count() < MIN_CHAIN_POINTS {
+        // (Nearly) every point on a sure loop, the samples of closed curves: too few points
+        // left for any chain or any path of the flow's.
+        let kept: Vec<[u32; 2]> = edges
+            .iter()
+            .copied()
+            .filter(|e| loops.of[e[0] as usize] != NONE)
+            .collect();
+        return kept;
+    }
     // Each round joins the free points into chains; a loop that a chain runs beside is
     // dissolved and its points join the next round (rule 4). At most one round a loop.
     let chain_edges = loop {
@@ -122,7 +133,6 @@ pub(super) fn settle(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<[u32; 2]> {
             }
         }
     }
-    kept.sort_unstable();
     debug_assert!({
         let mut degree = vec![0u8; n];
         kept.iter().flatten().all(|&p| {
@@ -305,15 +315,38 @@ fn loops_beside_chains(
 fn chords(points: &[[f64; 2]], cycle: &[u32]) -> Vec<usize> {
     let k = cycle.len();
     let at = |i: usize| points[cycle[i % k] as usize];
+    // Each edge's squared length in rounded arithmetic decides where it is far from the
+    // bound (every edge of a closed curve against its first neighbour); the kernel decides
+    // the rest exactly.
+    let squared: Vec<f64> = (0..k)
+        .map(|i| {
+            let (p, q) = (at(i), at(i + 1));
+            let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
+            dx * dx + dy * dy
+        })
+        .collect();
+    let factor = f64::from(4u32.pow(CHORD_DOUBLINGS));
+    let longer = |i: usize, j: usize| {
+        let (a, b) = (squared[i], factor * squared[j % k]);
+        // Each rounded square is within 4 units of the exact one while nothing overflows or
+        // nears the subnormal range; 16 units of margin cover both and the product.
+        let normal = |d: f64| d.is_finite() && d > 1e-280;
+        if normal(a) && normal(b) {
+            const MARGIN: f64 = 16.0 * f64::EPSILON;
+            if a > b * (1.0 + MARGIN) {
+                return true;
+            }
+            if a < b * (1.0 - MARGIN) {
+                return false;
+            }
+        }
+        let j = j % k;
+        scaled_length_order(at(i), at(i + 1), at(j), at(j + 1), CHORD_DOUBLINGS)
+            == Ordering::Greater
+    };
     (0..k)
         .filter(|&i| {
-            let (p, q) = (at(i), at(i + 1));
-            let longer = |a: [f64; 2], b: [f64; 2]| {
-                scaled_length_order(p, q, a, b, CHORD_DOUBLINGS) == Ordering::Greater
-            };
-            let before = longer(at(i + k - 1), at(i)) && longer(at(i + k - 2), at(i + k - 1));
-            let after = longer(at(i + 1), at(i + 2)) && longer(at(i + 2), at(i + 3));
-            before && after
+            longer(i, i + k - 1) && longer(i, i + 1) && longer(i, i + k - 2) && longer(i, i + 2)
         })
         .collect()
 }

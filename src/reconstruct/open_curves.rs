@@ -91,12 +91,11 @@ pub(super) fn settle(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<[u32; 2]> {
     if loops.of.iter().filter(|&&l| l == NONE).count() < MIN_CHAIN_POINTS {
         // (Nearly) every point on a sure loop, the samples of closed curves: too few points
         // left for any chain or any path of the flow's.
-        let kept: Vec<[u32; 2]> = edges
+        return edges
             .iter()
             .copied()
             .filter(|e| loops.of[e[0] as usize] != NONE)
             .collect();
-        return kept;
     }
     // Each round joins the free points into chains; a loop that a chain runs beside is
     // dissolved and its points join the next round (rule 4). At most one round a loop.

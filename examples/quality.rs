@@ -1149,28 +1149,14 @@ fn open_families() -> Vec<(&'static str, Box<dyn Fn(&mut Rng) -> Vec<DenseCurve>
         (
             "arcs of 20–340° (cos/sin)",
             Box::new(|rng: &mut Rng| {
-                let degrees = rng.range(20.0, 340.0);
+                let degrees: f64 = rng.range(20.0, 340.0);
                 let n = 20 + rng.below(200);
-                vec![arc_curve(
+                let (centre, r, a0) = (
                     [rng.f64(), rng.f64()],
                     rng.range(0.5, 3.0),
                     rng.range(0.0, TAU),
-                    0.0,
-                    n,
-                )
-                .transformed(&Similarity::rotation(degrees.to_radians()))]
-                .into_iter()
-                .map(|c| {
-                    let a0 = rng.range(0.0, TAU);
-                    arc_curve(
-                        [0.0, 0.0],
-                        1.0,
-                        a0,
-                        a0 + degrees.to_radians(),
-                        c.points.len(),
-                    )
-                })
-                .collect()
+                );
+                vec![arc_curve(centre, r, a0, a0 + degrees.to_radians(), n)]
             }),
         ),
         (

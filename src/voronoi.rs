@@ -302,7 +302,7 @@ impl<'a> Voronoi<'a> {
     /// input order where points tie in the Z-order (points much closer together than the
     /// spread of the input). A single triangle is its own; a merged face gives its three
     /// lexicographically smallest sites (distinct points on one circle: never collinear).
-    fn canonical_triangle(&self, v: u32) -> [[f64; 2]; 3] {
+    pub(crate) fn canonical_triangle(&self, v: u32) -> [[f64; 2]; 3] {
         if self.degree(v) == 3 {
             return self.vertex_triangle(v);
         }

@@ -146,12 +146,54 @@ impl Magnitudes {
         if lo >= min_e && hi <= max_e {
             return Some(0);
         }
+        self.centring_shift()
+    }
+
+    /// The power of two `2^s` that centres the exponents of every non-zero magnitude in the
+    /// adaptive predicates' range [`ADAPTIVE_EXPONENTS`], whether or not they already lie in
+    /// it: `None` if their spread is wider than the range, `Some(0)` if every coordinate is
+    /// zero. A function of the points up to scale: the points times `2^k` (exactly) get
+    /// `s − k`, so the centred copies are the same numbers. Multiplying by `2^s` is exact,
+    /// as for [`adaptive_shift`](Self::adaptive_shift).
+    pub(crate) fn centring_shift(&self) -> Option<i32> {
+        if self.max == 0.0 || !self.max.is_finite() {
+            return (self.max == 0.0).then_some(0);
+        }
+        let (lo, hi) = (log2_floor(self.min), log2_floor(self.max));
+        let (min_e, max_e) = ADAPTIVE_EXPONENTS;
         if hi - lo > max_e - min_e {
             return None;
         }
         // Centre [lo, hi] in [min_e, max_e]; the floor division keeps both ends inside.
         Some((min_e + max_e - lo - hi).div_euclid(2))
     }
+}
+
+/// `x · 2^s` rounded once to the nearest `f64` (ties to even), for any `x` and any `s` in
+/// `-2000..=2000`: exact wherever the product is normal (or zero), infinite beyond the
+/// `f64` range, and subnormal results rounded from the exact product, never twice (a
+/// product by `2^s` in two halves would round in both where the first lands below the
+/// normal range).
+pub(crate) fn scale_rounded(x: f64, s: i32) -> f64 {
+    if x == 0.0 || !x.is_finite() || s >= 0 {
+        // Upwards every step is exact until the result overflows, which it then rounds
+        // to infinity as the exact product does (53 bits beyond `f64::MAX` are at least
+        // `2^1024`).
+        return if s >= 0 { shift_by(x, s) } else { x };
+    }
+    let e = log2_floor(x);
+    if e + s >= -1022 {
+        return shift_by(x, s);
+    }
+    // Exactly down to the smallest normal binade, then one rounding product.
+    let to_normal = -1022 - e;
+    let y = shift_by(x, to_normal);
+    let rest = s - to_normal;
+    if rest < -54 {
+        // Below half the smallest subnormal: rounds to zero.
+        return 0.0f64.copysign(x);
+    }
+    y * pow2(rest)
 }
 
 /// `x · 2^s` for a shift from [`Magnitudes::adaptive_shift`] (exact there).

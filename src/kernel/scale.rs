@@ -2,7 +2,7 @@
 //! differences are huge or tiny back into the range where the filters' bounds hold.
 
 /// `2^k` for `k` in `-1074..=1023` (exactly representable).
-pub(super) fn pow2(k: i32) -> f64 {
+pub(crate) fn pow2(k: i32) -> f64 {
     if k >= -1022 {
         f64::from_bits(((k + 1023) as u64) << 52)
     } else {
@@ -77,7 +77,7 @@ pub(super) fn normalize<const N: usize>(points: [[f64; 2]; N]) -> ([[f64; 2]; N]
 }
 
 /// `floor(log2 |x|)` for a finite non-zero `x`, subnormals included.
-pub(super) fn log2_floor(x: f64) -> i32 {
+pub(crate) fn log2_floor(x: f64) -> i32 {
     let bits = x.to_bits() & !(1u64 << 63);
     let biased = (bits >> 52) as i32;
     if biased == 0 {
@@ -121,6 +121,11 @@ impl Magnitudes {
         if a > self.max {
             self.max = a;
         }
+    }
+
+    /// The largest magnitude.
+    pub(crate) fn max(&self) -> f64 {
+        self.max
     }
 
     /// Of a few points.
@@ -171,9 +176,10 @@ impl Magnitudes {
 
 /// `x · 2^s` rounded once to the nearest `f64` (ties to even), for any `x` and any `s` in
 /// `-2000..=2000`: exact wherever the product is normal (or zero), infinite beyond the
-/// `f64` range, and subnormal results rounded from the exact product, never twice (a
+/// `f64` range, and a subnormal result rounded from the exact product, never twice (a
 /// product by `2^s` in two halves would round in both where the first lands below the
-/// normal range).
+/// normal range). A subnormal result is built from its integer number of units of
+/// `2^-1074`, without arithmetic on subnormal numbers (each costs a microcode assist).
 pub(crate) fn scale_rounded(x: f64, s: i32) -> f64 {
     if x == 0.0 || !x.is_finite() || s >= 0 {
         // Upwards every step is exact until the result overflows, which it then rounds
@@ -185,16 +191,20 @@ pub(crate) fn scale_rounded(x: f64, s: i32) -> f64 {
     if e + s >= -1022 {
         return shift_by(x, s);
     }
-    // Exactly down to the smallest normal binade, then one rounding product.
-    let to_normal = -1022 - e;
-    let y = shift_by(x, to_normal);
-    let rest = s - to_normal;
-    if rest < -54 {
-        // Below half the smallest subnormal: rounds to zero.
+    // The result in units of 2^-1074, `q < 2^52`: below 1/2 it rounds to zero; otherwise
+    // it is normal and exact (every intermediate lies between `x` and `q`, both exact).
+    if e + s + 1074 < -1 {
         return 0.0f64.copysign(x);
     }
-    y * pow2(rest)
+    let q = shift_by(x.abs(), s + 1074);
+    // The nearest integer, ties to even: the sum's unit is 1 (`2^52 ≤ q + 2^52 < 2^53`).
+    let units = (q + TWO_52) - TWO_52;
+    // Up to 2^52 units, which are the bits of the smallest normal number, 2^-1022.
+    f64::from_bits(units as u64).copysign(x)
 }
+
+/// `2^52`.
+pub(crate) const TWO_52: f64 = 4503599627370496.0;
 
 /// `x · 2^s` for a shift from [`Magnitudes::adaptive_shift`] (exact there).
 #[inline(always)]

@@ -26,7 +26,7 @@
 
 use crate::delaunay::{triangulate, Triangulation};
 use crate::error::{scan_points, Error};
-use crate::kernel::scale::{scale_rounded, shift_by};
+use crate::kernel::scale::{log2_floor, pow2, scale_rounded, shift_by, TWO_52};
 use crate::parallel;
 use crate::voronoi::rounded_circumcenter;
 
@@ -34,20 +34,30 @@ use crate::voronoi::rounded_circumcenter;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) struct Frame {
     shift: i32,
+    /// Some coordinate is at least `2^1022`: differences of the caller's coordinates may
+    /// overflow there.
+    reaches_top: bool,
 }
 
 impl Frame {
     /// The caller's coordinates themselves (for the stages' own tests).
     #[cfg(test)]
-    pub(super) const CALLER: Frame = Frame { shift: 0 };
+    pub(super) const CALLER: Frame = Frame {
+        shift: 0,
+        reaches_top: false,
+    };
 
     /// The triangulation of `points` in their frame, and the frame.
     ///
     /// # Errors
     /// As [`triangulate`]: a coordinate that is not finite, or too many points.
     pub(super) fn triangulate(points: &[[f64; 2]]) -> Result<(Triangulation, Frame), Error> {
-        let shift = scan_points(points)?.centring_shift().unwrap_or(0);
-        let frame = Frame { shift };
+        let magnitudes = scan_points(points)?;
+        let shift = magnitudes.centring_shift().unwrap_or(0);
+        let frame = Frame {
+            shift,
+            reaches_top: magnitudes.max() >= pow2(1022),
+        };
         let negative_zero = || {
             points
                 .iter()
@@ -73,12 +83,12 @@ impl Frame {
     }
 
     /// Puts the caller's coordinates back into a triangulation built in this frame,
-    /// exactly (every intermediate of the two halves of the product lies between the
-    /// frame's value and the caller's, both exact); zeros stay `+0.0`.
+    /// exactly (each is the frame's times a power of two, representable); zeros stay
+    /// `+0.0`.
     pub(super) fn restore(self, tri: &mut Triangulation) {
         if self.shift != 0 {
             for x in tri.points.iter_mut().flatten() {
-                *x = shift_by(*x, -self.shift);
+                *x = scale_rounded(*x, -self.shift);
             }
         }
     }
@@ -92,38 +102,101 @@ impl Frame {
         }
     }
 
-    /// The frame's rounded circumcenter `centre` in the caller's coordinates, when that is
-    /// the exact product and its larger coordinate is normal: then it is what the
-    /// circumcenter computed on the caller's coordinates is (the same certified evaluation,
-    /// which the circumcenter rescales per call where it must: the same numbers). `None`
-    /// otherwise (a result in the subnormal range, or beyond the `f64` range), where only
-    /// the computation on the caller's coordinates gives their value
-    /// ([`circumcenter_to_caller`](Self::circumcenter_to_caller)).
-    pub(super) fn exact_to_caller(self, centre: [f64; 2]) -> Option<[f64; 2]> {
-        if self.shift == 0 {
-            return Some(centre);
+    /// Whether [`to_caller`](Self::to_caller) of the frame's rounded circumcenter `centre`
+    /// of the frame triangle `triangle()` is what the circumcenter computed on the caller's
+    /// coordinates is (the value [`Voronoi::vertex_position`](crate::Voronoi::vertex_position)
+    /// gives there), decided without arithmetic on subnormal numbers (each costs a
+    /// microcode assist):
+    ///
+    /// * where both coordinates land in the normal range (or on zero, not both), the
+    ///   product is exact, and the certified evaluation on the caller's coordinates is
+    ///   this one (it rescales the triangle per call where it must: the same numbers),
+    ///   unless the triangle's differences overflow there (coordinates near `f64::MAX`:
+    ///   then it cannot rescale, and rounds the exact value);
+    /// * where both land in the subnormal range, the caller's computation rounds the
+    ///   exact circumcenter correctly (no filter proves a subnormal result), and so does
+    ///   rounding `centre` when no midpoint of the caller's grid (units of `2^-1074`) lies
+    ///   within `centre`'s certified error ([`CIRCUMCENTER_ULPS`] ulps of its larger
+    ///   coordinate) and a coordinate that rounds to zero is farther than that from zero
+    ///   (its sign then is the exact one's).
+    ///
+    /// Elsewhere (a midpoint within the error, a normal coordinate beside a subnormal one,
+    /// both zero, beyond the `f64` range) only the computation on the caller's coordinates
+    /// gives their value: [`circumcenter_to_caller`](Self::circumcenter_to_caller).
+    pub(super) fn rounds_like_the_caller(
+        self,
+        centre: [f64; 2],
+        triangle: impl Fn() -> [[f64; 2]; 3],
+    ) -> bool {
+        let s = self.shift;
+        if s == 0 {
+            return true;
         }
-        let out = self.to_caller(centre);
-        let exact = (0..2).all(|i| scale_rounded(out[i], self.shift) == centre[i]);
-        (exact && out[0].abs().max(out[1].abs()).is_normal()).then_some(out)
+        if !(centre[0].is_finite() && centre[1].is_finite()) || centre == [0.0, 0.0] {
+            return false;
+        }
+        // The caller's normal range, `[2^-1022, 2^1024)`, in frame units.
+        let normal_from = if s >= -52 { pow2(s - 1022) } else { 0.0 };
+        let normal_below = if s < 0 { pow2(1024 + s) } else { f64::INFINITY };
+        let normal = |x: f64| x == 0.0 || (normal_from..normal_below).contains(&x.abs());
+        if centre.iter().all(|&x| normal(x)) {
+            // In the caller's coordinates every difference is below `2^1023` (so finite,
+            // whatever its rounding) where this holds in the frame's, with a binade to spare.
+            // (Near the top the shift is below -800: `2^(1022 + s)` is a normal number.)
+            if !self.reaches_top {
+                return true;
+            }
+            let t = triangle();
+            let near =
+                |i: usize, j: usize| (0..2).all(|c| (t[i][c] - t[j][c]).abs() < pow2(1022 + s));
+            return near(0, 1) && near(1, 2) && near(2, 0);
+        }
+        // The caller's subnormal grid: its unit 2^-1074 is `2^(s - 1074)` in frame units,
+        // normal there (`s ≥ 52`); `per_unit` is its inverse, at most `2^1022`.
+        if s < 52 || !centre.iter().all(|&x| x.abs() < normal_from) {
+            return false;
+        }
+        let per_unit = pow2(1074 - s);
+        let larger = centre[0].abs().max(centre[1].abs());
+        let error = CIRCUMCENTER_ULPS * pow2(log2_floor(larger) - 52);
+        // In grid units: exact products, the nearest integer (ties to even: `units` below
+        // `2^52`) and the exact distance to it (Sterbenz, or `units` itself below 1/2),
+        // and the margin to the midpoint widened for the rounding of the sum.
+        let margin = (2.0 * error * per_unit).max(ROUNDING_SLACK);
+        centre.iter().all(|&x| {
+            let units = x.abs() * per_unit;
+            let nearest = (units + TWO_52) - TWO_52;
+            let off = (units - nearest).abs();
+            off + margin < 0.5 && (nearest != 0.0 || x.abs() > error)
+        })
     }
 
     /// The rounded circumcenter `centre` of the frame triangle `triangle()` (the three
-    /// points it was computed from, [`rounded_circumcenter`]), in the caller's coordinates:
-    /// the value computed on the caller's coordinates of that triangle, which
+    /// points it was computed from by [`rounded_circumcenter`]), in the caller's
+    /// coordinates: the value computed on the caller's coordinates of that triangle, which
     /// [`Voronoi::vertex_position`](crate::Voronoi::vertex_position) of the returned
     /// triangulation gives.
     pub(super) fn circumcenter_to_caller(
         self,
         centre: [f64; 2],
-        triangle: impl FnOnce() -> [[f64; 2]; 3],
+        triangle: impl Fn() -> [[f64; 2]; 3],
     ) -> [f64; 2] {
-        self.exact_to_caller(centre).unwrap_or_else(|| {
+        if self.rounds_like_the_caller(centre, &triangle) {
+            self.to_caller(centre)
+        } else {
             let caller = triangle().map(|p| p.map(|x| shift_by(x, -self.shift)));
             rounded_circumcenter(caller)
-        })
+        }
     }
 }
+
+/// The accuracy of a rounded circumcenter in ulps of its larger coordinate
+/// (`predicates::circumcenter`: 256), with one more for the rounding of the bound.
+const CIRCUMCENTER_ULPS: f64 = 257.0;
+
+/// The smallest margin to a midpoint of the caller's grid, in grid units: above the
+/// rounding error of the margin's own sum with a distance below 1/2 (`2^-54`).
+const ROUNDING_SLACK: f64 = 1.0 / 4503599627370496.0; // 2^-52
 
 #[cfg(test)]
 mod tests {
@@ -159,24 +232,48 @@ mod tests {
         }
     }
 
-    /// A circumcenter comes back as the caller's-coordinates computation gives it: the
-    /// exact product where that is normal, the computation itself where it is subnormal.
+    /// A circumcenter comes back as the caller's-coordinates computation gives it, on
+    /// random triangles at scales from the subnormals to near the top: through the frame's
+    /// value wherever [`Frame::rounds_like_the_caller`] says so (most subnormal results
+    /// included), else computed there.
     #[test]
     fn circumcenters_come_back_as_the_callers() {
-        let unit = f64::from_bits(1);
-        for (triangle, scale) in [
-            ([[0.0, 0.0], [3.0, 1.0], [1.0, 5.0]], 1.0),
-            ([[0.0, 0.0], [3.0, 1.0], [1.0, 5.0]], unit),
-            ([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]], unit),
-            ([[7.0, 2.0], [11.0, 3.0], [5.0, 13.0]], unit * 1024.0),
-            ([[7.0, 2.0], [11.0, 3.0], [5.0, 13.0]], 2f64.powi(1000)),
-        ] {
-            let caller = triangle.map(|p| p.map(|x| x * scale));
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move |below: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state % below
+        };
+        let (mut fast, mut subnormal) = (0, 0);
+        for round in 0..6000 {
+            let bits = 1 + next(40);
+            let k = [-1074, -1060, -1030, -600, 0, 400, 1000][round % 7];
+            let caller: [[f64; 2]; 3] = std::array::from_fn(|_| {
+                std::array::from_fn(|_| {
+                    let m = next(1 << bits) as f64 - (1u64 << (bits - 1)) as f64;
+                    shift_by(m, k - bits.min(20) as i32 + 20)
+                })
+            });
+            let Some(expected) = crate::predicates::circumcenter(caller[0], caller[1], caller[2])
+            else {
+                continue;
+            };
             let (_, frame) = Frame::triangulate(&caller).unwrap();
-            let in_frame = caller.map(|p| p.map(|x| shift_by(x, frame.shift())));
+            let in_frame = caller.map(|p| p.map(|x| shift_by(x, frame.shift()) + 0.0));
             let centre = rounded_circumcenter(in_frame);
             let back = frame.circumcenter_to_caller(centre, || in_frame);
-            assert_eq!(back, rounded_circumcenter(caller), "{caller:?}");
+            let reference = rounded_circumcenter(caller.map(|p| p.map(|x| x + 0.0)));
+            assert_eq!(back, reference, "{caller:?}");
+            let tiny = expected.iter().all(|x| x.abs() < f64::MIN_POSITIVE);
+            subnormal += usize::from(tiny);
+            fast += usize::from(tiny && frame.rounds_like_the_caller(centre, || in_frame));
         }
+        // Coarse lattices put many circumcenters on midpoints of the caller's grid exactly:
+        // those are computed there.
+        assert!(
+            subnormal > 500 && fast * 4 > subnormal * 3,
+            "{fast} of {subnormal}"
+        );
     }
 }

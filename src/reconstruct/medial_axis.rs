@@ -469,8 +469,8 @@ struct Graph {
     /// `[a, b]`, indices into `ball`, `a` the end used first (see `into_medial_axis`).
     edges: Vec<[u32; 2]>,
     /// The frame the balls are in, and the caller's coordinates of the centres that are not
-    /// their frame's value rescaled ([`Frame::exact_to_caller`]: subnormal results), by
-    /// first-use number, sorted. Empty on all but extreme input.
+    /// their frame's value rescaled ([`Frame::rounds_like_the_caller`]), by first-use
+    /// number, sorted. Empty on all but extreme input.
     frame: Frame,
     caller_centres: Vec<(u32, [f64; 2])>,
 }
@@ -611,9 +611,6 @@ impl Graph {
         let caller_centres = parallel::flat_map_chunks(ball.len(), |range, out| {
             for i in range {
                 let centre = ball[i].centre;
-                if frame.exact_to_caller(centre).is_some() {
-                    continue;
-                }
                 let v = used[i];
                 let triangle = || {
                     if v < vertex_count {
@@ -622,6 +619,9 @@ impl Graph {
                         new_triangles[(v - vertex_count) as usize].map(|p| tri.points[p as usize])
                     }
                 };
+                if frame.rounds_like_the_caller(centre, triangle) {
+                    continue;
+                }
                 out.push((i as u32, frame.circumcenter_to_caller(centre, triangle)));
             }
         });
@@ -719,11 +719,13 @@ fn axis_of(
     let mut vertices = vec![[0.0; 2]; number.len()];
     for b in ball {
         if let Some(k) = number.rank(b.first_use() as usize) {
-            let given = caller_centres.binary_search_by_key(&b.first_use(), |&(i, _)| i);
-            vertices[k as usize] = match given {
-                Ok(at) => caller_centres[at].1,
-                Err(_) => frame.to_caller(b.centre),
+            let given = if caller_centres.is_empty() {
+                None
+            } else {
+                let at = caller_centres.binary_search_by_key(&b.first_use(), |&(i, _)| i);
+                at.ok().map(|at| caller_centres[at].1)
             };
+            vertices[k as usize] = given.unwrap_or_else(|| frame.to_caller(b.centre));
         }
     }
     let number_of = |v: u32| number.rank(ball[v as usize].first_use() as usize);

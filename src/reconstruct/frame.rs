@@ -11,14 +11,15 @@
 //! same numbers for the points and for every exact power-of-two scaling of them, far from
 //! both ends of the `f64` range, where the construction also runs at the speed of ordinary
 //! input. The caller's coordinates come back once, at the end: the triangulation's points
-//! exactly ([`Frame::restore`]), each medial-axis vertex as
+//! exactly ([`Frame::restore`], the sign of a zero included), each medial-axis vertex as
 //! [`Voronoi::vertex_position`](crate::Voronoi::vertex_position) gives it on them
 //! ([`Frame::circumcenter_to_caller`]).
 //!
 //! Every zero of the copy is `+0.0`: a duplicate keeps its first occurrence's coordinates,
 //! and `-0.0` and `0.0` order differently where coordinates break ties (`total_cmp`, the
 //! corner a circumcenter is computed from), so the sign of a zero would let the input order
-//! reach the rounded values. The triangulation a reconstruction returns keeps them `+0.0`.
+//! reach the rounded values (the diagram's positions read a zero as `0.0` for the same
+//! reason, [`rounded_circumcenter`]).
 //!
 //! Input whose exponents spread wider than that range (`1e-100` beside `1e100`) has no
 //! centred copy; it runs on the caller's coordinates (zeros made positive), as the
@@ -34,6 +35,8 @@ use crate::voronoi::rounded_circumcenter;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) struct Frame {
     shift: i32,
+    /// Some coordinate is `-0.0` (made `0.0` in the frame, put back by `restore`).
+    negative_zero: bool,
     /// Some coordinate is at least `2^1022`: differences of the caller's coordinates may
     /// overflow there.
     reaches_top: bool,
@@ -44,6 +47,7 @@ impl Frame {
     #[cfg(test)]
     pub(super) const CALLER: Frame = Frame {
         shift: 0,
+        negative_zero: false,
         reaches_top: false,
     };
 
@@ -54,17 +58,16 @@ impl Frame {
     pub(super) fn triangulate(points: &[[f64; 2]]) -> Result<(Triangulation, Frame), Error> {
         let magnitudes = scan_points(points)?;
         let shift = magnitudes.centring_shift().unwrap_or(0);
+        let negative_zero = points
+            .iter()
+            .flatten()
+            .any(|x| x.to_bits() == (-0.0f64).to_bits());
         let frame = Frame {
             shift,
+            negative_zero,
             reaches_top: magnitudes.max() >= pow2(1022),
         };
-        let negative_zero = || {
-            points
-                .iter()
-                .flatten()
-                .any(|x| x.to_bits() == (-0.0f64).to_bits())
-        };
-        if shift == 0 && !negative_zero() {
+        if shift == 0 && !negative_zero {
             return Ok((triangulate(points)?, frame));
         }
         // Exact: the centred copy is normal and finite (or zero) throughout. `+ 0.0` turns
@@ -82,13 +85,26 @@ impl Frame {
         self.shift
     }
 
-    /// Puts the caller's coordinates back into a triangulation built in this frame,
-    /// exactly (each is the frame's times a power of two, representable); zeros stay
-    /// `+0.0`.
-    pub(super) fn restore(self, tri: &mut Triangulation) {
-        if self.shift != 0 {
-            for x in tri.points.iter_mut().flatten() {
-                *x = scale_rounded(*x, -self.shift);
+    /// Puts the caller's coordinates (`points`) back into a triangulation built in this
+    /// frame, exactly: each is the frame's times a power of two, representable, and a zero
+    /// is read back from the caller's point (the first occurrence: the sign of its zero).
+    pub(super) fn restore(self, tri: &mut Triangulation, points: &[[f64; 2]]) {
+        if self.shift == 0 && !self.negative_zero {
+            return;
+        }
+        let Triangulation {
+            points: local,
+            input_of,
+            ..
+        } = tri;
+        for (p, &input) in local.iter_mut().zip(input_of.iter()) {
+            for (x, &caller) in p.iter_mut().zip(&points[input as usize]) {
+                // A zero (rare) is read in the caller's order, a cache miss at most.
+                *x = if *x == 0.0 {
+                    caller
+                } else {
+                    scale_rounded(*x, -self.shift)
+                };
             }
         }
     }
@@ -202,8 +218,9 @@ const ROUNDING_SLACK: f64 = 1.0 / 4503599627370496.0; // 2^-52
 mod tests {
     use super::*;
 
-    /// The frame's triangulation restored is the caller's, point for point (zeros made
-    /// positive); the shift is the same for every exact power-of-two scaling, up to it.
+    /// The frame's triangulation restored is the caller's, point for point, the sign of a
+    /// zero included; the shift is the same for every exact power-of-two scaling, up to
+    /// it.
     #[test]
     fn the_frame_is_exact_and_the_same_up_to_scale() {
         let base: Vec<[f64; 2]> = vec![
@@ -217,14 +234,11 @@ mod tests {
         ];
         let (tri, frame) = Frame::triangulate(&base).unwrap();
         for k in [-1070, -1000, -600, -143, -1, 0, 1, 150, 600, 1000, 1021] {
-            let scaled: Vec<[f64; 2]> = base
-                .iter()
-                .map(|p| p.map(|x| shift_by(x, k) + 0.0))
-                .collect();
+            let scaled: Vec<[f64; 2]> = base.iter().map(|p| p.map(|x| shift_by(x, k))).collect();
             let (mut t, f) = Frame::triangulate(&scaled).unwrap();
             assert_eq!(f.shift(), frame.shift() - k, "2^{k}");
             assert_eq!(t.points, tri.points, "2^{k}: the same frame");
-            f.restore(&mut t);
+            f.restore(&mut t, &scaled);
             for (i, p) in scaled.iter().enumerate() {
                 let got = t.point(i as u32);
                 assert_eq!(got.map(f64::to_bits), p.map(f64::to_bits), "2^{k}");
@@ -263,7 +277,7 @@ mod tests {
             let in_frame = caller.map(|p| p.map(|x| shift_by(x, frame.shift()) + 0.0));
             let centre = rounded_circumcenter(in_frame);
             let back = frame.circumcenter_to_caller(centre, || in_frame);
-            let reference = rounded_circumcenter(caller.map(|p| p.map(|x| x + 0.0)));
+            let reference = rounded_circumcenter(caller);
             assert_eq!(back, reference, "{caller:?}");
             let tiny = expected.iter().all(|x| x.abs() < f64::MIN_POSITIVE);
             subnormal += usize::from(tiny);

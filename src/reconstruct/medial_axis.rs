@@ -160,8 +160,9 @@
 //! The subset's triangles (the cavity's walk and its in-circle tests), its merged faces,
 //! the parity and the "beyond its own edge" test (`orient2d_circumcenter`) are exact, as
 //! everywhere in the crate. The coverage test compares lengths computed from the
-//! circumcenters rounded to `f64`, and the noise slack and the oscillation are `f64`
-//! estimates: the angles, the slack and the clean threshold are tolerances of the *rule*
+//! circumcenters rounded to `f64` in the reconstruction's frame (`super::frame`: the same
+//! numbers under any exact power-of-two scaling of the input, none of them subnormal), and
+//! the noise slack and the oscillation are `f64` estimates: the angles, the slack and the clean threshold are tolerances of the *rule*
 //! (a branch at 59.9999° or 60.0001° is equally a whisker), and the rounding moves the decision only for balls within about `10⁻¹⁵`
 //! (relative) of the threshold. The order of the removals, and every tie, is decided by radius and then by
 //! coordinates, so the result depends on the points, never on their order.

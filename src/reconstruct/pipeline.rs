@@ -108,7 +108,7 @@ pub fn reconstruct_observed(
         let curves = assemble(&triangulation, &edges);
         let edges = triangulation.to_input_edges(edges);
         let unassigned = untouched_points(&triangulation, &edges);
-        frame.restore(&mut triangulation);
+        frame.restore(&mut triangulation, points);
         lap(Phase::Curves);
         return Ok(Reconstruction {
             algorithm: options.algorithm(),
@@ -236,7 +236,7 @@ pub fn reconstruct_observed(
         lap(Phase::MedialAxis);
         (labels, edges, curves, axis, peeling, unassigned)
     };
-    frame.restore(&mut triangulation);
+    frame.restore(&mut triangulation, points);
     Ok(Reconstruction {
         algorithm: options.algorithm(),
         triangulation,

@@ -1,6 +1,8 @@
-//! Phases of the reconstruction pipeline on curve samples, and the exact predicates.
+//! Phases of the reconstruction pipeline on curve samples, the reconstruction of one input at
+//! three exact power-of-two scales, and the exact predicates.
 //!
-//! `cargo bench --bench pipeline` (filter with e.g. `-- pipeline/` or `-- predicates/`).
+//! `cargo bench --bench pipeline` (filter with e.g. `-- pipeline/`, `-- scaled/` or
+//! `-- predicates/`).
 
 mod common;
 
@@ -50,6 +52,41 @@ fn bench_phases(c: &mut Criterion) {
             BenchmarkId::new("reconstruct_closed_only", n),
             &points,
             |b, p| b.iter(|| reconstruct_with(p, &closed_only).expect("valid points")),
+        );
+    }
+    group.finish();
+}
+
+/// One curve sample of 10^5 points reconstructed at three scales: as given (every
+/// coordinate within the adaptive predicates' range) and times `2^-1060` (subnormal) and
+/// `2^1000`, exactly. The two out-of-range inputs run in the same rescaled frame as the one
+/// in range, so the three should take the same time.
+fn bench_scales(c: &mut Criterion) {
+    let mut group = c.benchmark_group("scaled");
+    group.sample_size(10);
+    let n = 100_000;
+    group.throughput(Throughput::Elements(n as u64));
+    // On a grid of 2^-14 at radius about 2^8: 22 bits, so that both scalings are exact.
+    let snap = |x: f64| (x * 256.0 * 16384.0).round() / 16384.0;
+    let points: Vec<[f64; 2]> = curve_points(n, &mut Rng::new(7))
+        .into_iter()
+        .map(|p| p.map(snap))
+        .collect();
+    // `x · 2^k` in two halves (2^k itself may be outside the range), exact here.
+    let times = |x: f64, k: i32| x * 2f64.powi(k / 2) * 2f64.powi(k - k / 2);
+    for k in [0, -1060, 1000] {
+        let scaled: Vec<[f64; 2]> = points.iter().map(|p| p.map(|x| times(x, k))).collect();
+        assert!(
+            scaled
+                .iter()
+                .zip(&points)
+                .all(|(s, p)| s.map(|x| times(x, -k)) == *p),
+            "2^{k} is exact"
+        );
+        group.bench_with_input(
+            BenchmarkId::new("reconstruct", format!("2^{k}")),
+            &scaled,
+            |b, p| b.iter(|| wdm_crust::reconstruct(p).expect("valid points")),
         );
     }
     group.finish();
@@ -218,5 +255,5 @@ fn thin_triangles(rng: &mut Rng, n: usize) -> Vec<[[f64; 2]; 3]> {
         .collect()
 }
 
-criterion_group!(benches, bench_phases, bench_predicates);
+criterion_group!(benches, bench_phases, bench_scales, bench_predicates);
 criterion_main!(benches);

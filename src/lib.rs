@@ -19,7 +19,10 @@
 //! refused ([`Error::NotFinite`], naming the point). Input whose magnitudes fit the adaptive
 //! predicates' range after one power-of-two scaling is triangulated on such an exactly
 //! scaled copy, at full speed; other input takes wide-exponent integer arithmetic where the
-//! floating-point filters cannot decide. Results are always in the caller's coordinates.
+//! floating-point filters cannot decide. A reconstruction runs every stage on such a copy,
+//! centred in that range whether or not the input lies in it, so that its rounded rules
+//! (the pruned medial axis's) take the same decisions on an input and on any exact
+//! power-of-two scaling of it. Results are always in the caller's coordinates.
 //!
 //! Constructed coordinates (Voronoi vertex positions, [`predicates::circumcenter`]) are
 //! computed from the exact circumcenter once: within 256 units in the last place of the

@@ -302,7 +302,7 @@ impl<'a> Voronoi<'a> {
     /// input order where points tie in the Z-order (points much closer together than the
     /// spread of the input). A single triangle is its own; a merged face gives its three
     /// lexicographically smallest sites (distinct points on one circle: never collinear).
-    fn canonical_triangle(&self, v: u32) -> [[f64; 2]; 3] {
+    pub(crate) fn canonical_triangle(&self, v: u32) -> [[f64; 2]; 3] {
         if self.degree(v) == 3 {
             return self.vertex_triangle(v);
         }
@@ -647,11 +647,13 @@ impl<'a> Voronoi<'a> {
     }
 }
 
-/// Orders points by x, then y.
 /// The rounded circumcenter of a Delaunay triangle (never collinear), started from its
 /// corner [`smallest_corner`]: the value [`Voronoi::vertex_position`] gives its face, from
-/// the coordinates alone.
-pub(crate) fn rounded_circumcenter(mut t: [[f64; 2]; 3]) -> [f64; 2] {
+/// the coordinates' values alone. A zero is read as `0.0`: a duplicate keeps its first
+/// occurrence's coordinates, and the sign of a zero would let the input order choose the
+/// corner (and the sign of a zero result).
+pub(crate) fn rounded_circumcenter(t: [[f64; 2]; 3]) -> [f64; 2] {
+    let mut t = t.map(|p| p.map(|x| x + 0.0));
     let first = smallest_corner(t);
     t.rotate_left(first);
     let [a, b, c] = t;
@@ -666,8 +668,12 @@ pub(crate) fn smallest_corner(t: [[f64; 2]; 3]) -> usize {
         .unwrap_or(0)
 }
 
+/// Orders points by x, then y, `-0.0` as `0.0` (see [`rounded_circumcenter`]).
 fn lexicographic(p: [f64; 2], q: [f64; 2]) -> std::cmp::Ordering {
-    p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
+    let key = |x: f64| x + 0.0;
+    key(p[0])
+        .total_cmp(&key(q[0]))
+        .then(key(p[1]).total_cmp(&key(q[1])))
 }
 
 /// Iterator over the vertices of one Voronoi cell, counterclockwise.

@@ -8,7 +8,7 @@
 use num_rational::BigRational;
 use num_traits::Signed;
 use wdm_crust::predicates::circumcenter_exact;
-use wdm_crust::reconstruct::{Algorithm, Options};
+use wdm_crust::reconstruct::{Algorithm, LabelRule, MedialAxisMode, Options, Reconstruction};
 use wdm_crust::{reconstruct_with, triangulate, Triangulation};
 
 type P = [f64; 2];
@@ -75,9 +75,64 @@ fn edges_of(points: &[P], algorithm: Algorithm) -> Vec<[u32; 2]> {
 
 const ALGORITHMS: [Algorithm; 3] = [Algorithm::Wdm, Algorithm::Crust, Algorithm::NnCrust];
 
+/// Every WDM reading the options offer: the three label rules, each with the pruned and the
+/// raw medial axis.
+fn wdm_options() -> Vec<Options> {
+    let rules = [
+        LabelRule::WaterReached,
+        LabelRule::Literal,
+        LabelRule::Complement,
+    ];
+    let modes = [MedialAxisMode::Pruned, MedialAxisMode::Raw];
+    rules
+        .iter()
+        .flat_map(|&rule| {
+            modes
+                .iter()
+                .map(move |&mode| Options::new().with_label_rule(rule).with_medial_axis(mode))
+        })
+        .collect()
+}
+
+/// `scaled` is the reconstruction of `base`'s points times `2^k`: the same labels, edges,
+/// curves, unassigned points and passes, the same medial-axis segments, and its vertices
+/// `base`'s times `2^k`: exactly where that is normal, else rounded once.
+fn assert_same_reconstruction(base: &Reconstruction, scaled: &Reconstruction, k: i32, what: &str) {
+    assert_eq!(scaled.labels(), base.labels(), "2^{k}, {what}: labels");
+    assert_eq!(scaled.edges(), base.edges(), "2^{k}, {what}: edges");
+    assert_eq!(scaled.curves(), base.curves(), "2^{k}, {what}: curves");
+    assert_eq!(scaled.unassigned(), base.unassigned(), "2^{k}, {what}");
+    assert_eq!(scaled.passes(), base.passes(), "2^{k}, {what}: passes");
+    let (axis, base_axis) = (scaled.medial_axis(), base.medial_axis());
+    assert_eq!(axis.edges, base_axis.edges, "2^{k}, {what}: axis");
+    assert_eq!(
+        axis.vertices.len(),
+        base_axis.vertices.len(),
+        "2^{k}, {what}"
+    );
+    for (s, o) in axis.vertices.iter().zip(&base_axis.vertices) {
+        for i in 0..2 {
+            let expected = ldexp(o[i], k);
+            if expected.is_normal() || expected == 0.0 {
+                assert_eq!(s[i], expected, "2^{k}, {what}: axis vertex {o:?}");
+            } else {
+                // Subnormal: within half a unit of 2^-1074 of the exact product (scaling
+                // the result back up is exact).
+                let error = (ldexp(s[i], -k) - o[i]).abs();
+                assert!(
+                    error <= ldexp(f64::from_bits(1), -k) / 2.0,
+                    "2^{k}, {what}: axis vertex {o:?} → {s:?}"
+                );
+            }
+        }
+    }
+}
+
 /// The same triangles, hull, duplicates and reconstructions under every exact scaling by
 /// `2^k`, from subnormal coordinates to coordinates near `2^1023`; Voronoi vertex
-/// positions scale with the input wherever both are normal.
+/// positions scale with the input wherever both are normal. The whole WDM reconstruction
+/// is compared, in every label reading, with the pruned and the raw medial axis: its
+/// rounded rules run in a frame that is the same for every such scaling.
 #[test]
 fn power_of_two_scaling_changes_nothing() {
     let base = dyadic_points(120, 3);
@@ -85,6 +140,15 @@ fn power_of_two_scaling_changes_nothing() {
     tri.validate().expect("Delaunay");
     let positions = tri.voronoi().vertex_positions().to_vec();
     let edges: Vec<Vec<[u32; 2]>> = ALGORITHMS.iter().map(|&a| edges_of(&base, a)).collect();
+    let readings = wdm_options();
+    let whole: Vec<Reconstruction> = readings
+        .iter()
+        .map(|o| reconstruct_with(&base, o).expect("finite input"))
+        .collect();
+    // The test means something: the pruned axis has pruned, and points lie inside the
+    // curve.
+    assert!(whole[0].medial_axis().edges.len() < whole[1].medial_axis().edges.len());
+    assert!(!whole[0].unassigned().is_empty());
     let mut ks: Vec<i32> = (-1054..=1011).step_by(53).collect();
     ks.extend([
         -1054, -1000, -970, -900, -400, -150, -143, 190, 201, 400, 900, 1011,
@@ -114,6 +178,11 @@ fn power_of_two_scaling_changes_nothing() {
         }
         for (a, e) in ALGORITHMS.iter().zip(&edges) {
             assert_eq!(&edges_of(&scaled, *a), e, "2^{k}, {a:?}");
+        }
+        for (options, base_rec) in readings.iter().zip(&whole) {
+            let rec = reconstruct_with(&scaled, options).expect("finite input");
+            let what = format!("{:?}, {:?}", options.label_rule(), options.medial_axis());
+            assert_same_reconstruction(base_rec, &rec, k, &what);
         }
     }
 }

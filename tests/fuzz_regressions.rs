@@ -261,6 +261,70 @@ fn medial_axis_of_noisy_chains_does_not_depend_on_the_input_order() {
     check_everything(&points);
 }
 
+/// Found by `reconstruct` (its permutation check): 223 subnormal points whose distinct
+/// points are the eight points of a 3 × 3 grid without its centre, 1 ulp apart, in two
+/// orders (`tests/data/regressions/subnormal-grid-without-centre*.txt`; the seed
+/// `fuzz/seeds/reconstruct/pruned-axis-order-subnormal.bin`). The curve and the raw axis
+/// agreed; the pruned axis had 1 segment in one order, 2 in the other and 4 on the same
+/// points times 2^1074. Its coverage tests and their ties read circumcenters rounded in the
+/// caller's coordinates, where distinct ones round to one subnormal value. The stages after
+/// the construction run on the points exactly rescaled (`reconstruct::frame`), and the
+/// axis's vertices are rounded once into the caller's coordinates.
+#[test]
+fn pruned_axis_same_in_any_order_at_subnormal_scale() {
+    let read = |name: &str| {
+        let path = format!(
+            "{}/tests/data/regressions/{name}",
+            env!("CARGO_MANIFEST_DIR")
+        );
+        wdm_crust::io::read_points_from_path(std::path::Path::new(&path))
+            .unwrap_or_else(|e| panic!("{path}: {e}"))
+    };
+    let points = read("subnormal-grid-without-centre.txt");
+    let permuted = read("subnormal-grid-without-centre-permuted.txt");
+    assert_eq!((points.len(), permuted.len()), (223, 223));
+    // permuted[i] = points[perm[i]], any occurrence of a duplicate (the checks map every
+    // index to the first occurrence of its coordinates).
+    let index_of: std::collections::HashMap<[u64; 2], usize> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (p.map(f64::to_bits), i))
+        .collect();
+    let perm: Vec<usize> = permuted
+        .iter()
+        .map(|p| index_of[&p.map(f64::to_bits)])
+        .collect();
+    // The same points in units of 2^-1074: the grid {0, 1, 2} × {-45, -44, -43}.
+    let (up, down) = (2f64.powi(537), f64::from_bits(1));
+    let unit: Vec<[f64; 2]> = points.iter().map(|p| p.map(|x| x * up * up)).collect();
+    assert!(unit
+        .iter()
+        .flatten()
+        .all(|x| x.fract() == 0.0 && x.abs() <= 45.0));
+    for mode in [MedialAxisMode::Pruned, MedialAxisMode::Raw] {
+        let options = Options::new().with_medial_axis(mode);
+        let rec = reconstruct_with(&points, &options).unwrap();
+        let other = reconstruct_with(&permuted, &options).unwrap();
+        let at_unit = reconstruct_with(&unit, &options).unwrap();
+        checks::check_permuted(&points, &perm, &rec, &other, true, true)
+            .unwrap_or_else(|e| panic!("{mode:?}: {e}"));
+        assert_eq!(checks::axis_segments(&rec), checks::axis_segments(&other));
+        // The centre's ball and the four corners' balls: nothing is pruned, at any scale.
+        let axis = rec.medial_axis();
+        assert_eq!(axis.edges.len(), 4, "{mode:?}");
+        assert_eq!(axis.edges, at_unit.medial_axis().edges, "{mode:?}");
+        for (v, u) in axis.vertices.iter().zip(&at_unit.medial_axis().vertices) {
+            // One rounding of the unit-scale vertex: a single product by 2^-1074.
+            assert_eq!(*v, u.map(|x| x * down), "{mode:?}");
+        }
+        assert_eq!(rec.edges(), at_unit.edges());
+        assert_eq!(rec.curves(), at_unit.curves());
+        assert_eq!(rec.unassigned(), at_unit.unassigned());
+        assert_eq!(rec.labels(), at_unit.labels());
+    }
+    check_everything(&points);
+}
+
 /// Found by `triangulate` (a bug of the oracle, not of the library): three points near
 /// `f64::MAX`, whose hull edges' coordinate differences overflow. The rays' directions are
 /// halved there (documented on `Voronoi::rays`, finite always); the oracle still asked for

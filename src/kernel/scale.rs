@@ -2,7 +2,7 @@
 //! differences are huge or tiny back into the range where the filters' bounds hold.
 
 /// `2^k` for `k` in `-1074..=1023` (exactly representable).
-pub(super) fn pow2(k: i32) -> f64 {
+pub(crate) fn pow2(k: i32) -> f64 {
     if k >= -1022 {
         f64::from_bits(((k + 1023) as u64) << 52)
     } else {
@@ -77,7 +77,7 @@ pub(super) fn normalize<const N: usize>(points: [[f64; 2]; N]) -> ([[f64; 2]; N]
 }
 
 /// `floor(log2 |x|)` for a finite non-zero `x`, subnormals included.
-pub(super) fn log2_floor(x: f64) -> i32 {
+pub(crate) fn log2_floor(x: f64) -> i32 {
     let bits = x.to_bits() & !(1u64 << 63);
     let biased = (bits >> 52) as i32;
     if biased == 0 {
@@ -123,6 +123,11 @@ impl Magnitudes {
         }
     }
 
+    /// The largest magnitude.
+    pub(crate) fn max(&self) -> f64 {
+        self.max
+    }
+
     /// Of a few points.
     pub(super) fn of<const N: usize>(points: &[[f64; 2]; N]) -> Magnitudes {
         let mut m = Magnitudes::NONE;
@@ -146,6 +151,21 @@ impl Magnitudes {
         if lo >= min_e && hi <= max_e {
             return Some(0);
         }
+        self.centring_shift()
+    }
+
+    /// The power of two `2^s` that centres the exponents of every non-zero magnitude in the
+    /// adaptive predicates' range [`ADAPTIVE_EXPONENTS`], whether or not they already lie in
+    /// it: `None` if their spread is wider than the range, `Some(0)` if every coordinate is
+    /// zero. A function of the points up to scale: the points times `2^k` (exactly) get
+    /// `s − k`, so the centred copies are the same numbers. Multiplying by `2^s` is exact,
+    /// as for [`adaptive_shift`](Self::adaptive_shift).
+    pub(crate) fn centring_shift(&self) -> Option<i32> {
+        if self.max == 0.0 || !self.max.is_finite() {
+            return (self.max == 0.0).then_some(0);
+        }
+        let (lo, hi) = (log2_floor(self.min), log2_floor(self.max));
+        let (min_e, max_e) = ADAPTIVE_EXPONENTS;
         if hi - lo > max_e - min_e {
             return None;
         }
@@ -153,6 +173,38 @@ impl Magnitudes {
         Some((min_e + max_e - lo - hi).div_euclid(2))
     }
 }
+
+/// `x · 2^s` rounded once to the nearest `f64` (ties to even), for any `x` and any `s` in
+/// `-2000..=2000`: exact wherever the product is normal (or zero), infinite beyond the
+/// `f64` range, and a subnormal result rounded from the exact product, never twice (a
+/// product by `2^s` in two halves would round in both where the first lands below the
+/// normal range). A subnormal result is built from its integer number of units of
+/// `2^-1074`, without arithmetic on subnormal numbers (each costs a microcode assist).
+pub(crate) fn scale_rounded(x: f64, s: i32) -> f64 {
+    if x == 0.0 || !x.is_finite() || s >= 0 {
+        // Upwards every step is exact until the result overflows, which it then rounds
+        // to infinity as the exact product does (53 bits beyond `f64::MAX` are at least
+        // `2^1024`).
+        return if s >= 0 { shift_by(x, s) } else { x };
+    }
+    let e = log2_floor(x);
+    if e + s >= -1022 {
+        return shift_by(x, s);
+    }
+    // The result in units of 2^-1074, `q < 2^52`: below 1/2 it rounds to zero; otherwise
+    // it is normal and exact (every intermediate lies between `x` and `q`, both exact).
+    if e + s + 1074 < -1 {
+        return 0.0f64.copysign(x);
+    }
+    let q = shift_by(x.abs(), s + 1074);
+    // The nearest integer, ties to even: the sum's unit is 1 (`2^52 ≤ q + 2^52 < 2^53`).
+    let units = (q + TWO_52) - TWO_52;
+    // Up to 2^52 units, which are the bits of the smallest normal number, 2^-1022.
+    f64::from_bits(units as u64).copysign(x)
+}
+
+/// `2^52`.
+pub(crate) const TWO_52: f64 = 4503599627370496.0;
 
 /// `x · 2^s` for a shift from [`Magnitudes::adaptive_shift`] (exact there).
 #[inline(always)]

@@ -16,7 +16,7 @@ use super::poly::{
     circ, distance_terms, dot_points_terms, dot_terms, dot_terms_at_vertex, orient_terms,
     radius_terms,
 };
-use super::scale::{normalize, pow2, rescale, scale};
+use super::scale::{normalize, pow2, rescale, scale, scale_rounded, Magnitudes};
 use super::Sign;
 use crate::predicates::{orient2d, Orientation};
 use num_bigint::BigInt;
@@ -509,6 +509,66 @@ fn normalize_is_exact_and_leaves_ordinary_input_alone() {
     // Subnormal coordinates that would not survive the scaling are left alone.
     let mixed = [[pow2(100), f64::from_bits(3)], [1.0, 1.0]];
     assert_eq!(normalize(mixed), (mixed, 0));
+}
+
+/// `scale_rounded` is the exact product `x · 2^s` correctly rounded, for every kind of
+/// `x` (subnormal, normal, near the top) and shifts that land anywhere: normal, subnormal
+/// (where two half products would round twice), below half the smallest subnormal,
+/// beyond the range.
+#[test]
+fn scale_rounded_rounds_the_exact_product_once() {
+    let mut rng = Xorshift(0x9e37_79b9_7f4a_7c15);
+    let two = BigRational::from_integer(BigInt::from(2));
+    let exact = |x: f64, s: i32| -> f64 {
+        let r = rat(x) * Pow::pow(&two, s);
+        let limit = rat(f64::MAX) + rat(pow2(970));
+        if r.abs() >= limit {
+            f64::INFINITY.copysign(x)
+        } else {
+            rational_to_f64(&r).copysign(x)
+        }
+    };
+    let mut cases = 0;
+    for i in 0..20000 {
+        let bits = match i % 4 {
+            0 => rng.next() & 0x000f_ffff_ffff_ffff, // subnormal
+            1 => rng.next() & 0x7fff_ffff_ffff_ffff, // anything
+            2 => (rng.next() & 0x000f_ffff_ffff_ffff) | (1 << 62), // near 2
+            _ => (rng.next() & 0x800f_ffff_ffff_ffff) | (1020 << 52),
+        };
+        let x = f64::from_bits(bits);
+        if !x.is_finite() {
+            continue;
+        }
+        let s = (rng.next() % 4001) as i32 - 2000;
+        let got = scale_rounded(x, s);
+        assert_eq!(got.to_bits(), exact(x, s).to_bits(), "{x:e} · 2^{s}");
+        cases += 1;
+    }
+    assert!(cases > 15000);
+    // Ties to even at the bottom of the range: 1.5 and 2.5 units of 2^-1074.
+    assert_eq!(scale_rounded(1.5, -1074), f64::from_bits(2));
+    assert_eq!(scale_rounded(2.5, -1074), f64::from_bits(2));
+    assert_eq!(scale_rounded(-0.5, -1074), -0.0);
+    assert_eq!(scale_rounded(0.75, -1074), f64::from_bits(1));
+    assert_eq!(scale_rounded(1.0, 1024), f64::INFINITY);
+}
+
+/// The centring shift of points times `2^k` is theirs minus `k`, so both centre to the
+/// same numbers; inside the adaptive range it centres too, where `adaptive_shift` leaves
+/// the points alone.
+#[test]
+fn the_centring_shift_follows_the_scale() {
+    let of = |pts: &[[f64; 2]; 2]| Magnitudes::of(pts);
+    let base = [[3.0, -0.75], [1.0e-5, 0.0]];
+    let s = of(&base).centring_shift().unwrap();
+    assert_eq!(of(&base).adaptive_shift(), Some(0));
+    for k in [-1050, -500, -142, 0, 1, 77, 900, 1006] {
+        let scaled = base.map(|p| p.map(|x| x * pow2(k / 2) * pow2(k - k / 2)));
+        assert_eq!(of(&scaled).centring_shift(), Some(s - k), "2^{k}");
+    }
+    assert_eq!(of(&[[0.0, -0.0], [0.0, 0.0]]).centring_shift(), Some(0));
+    assert_eq!(of(&[[1e-200, 1.0], [1e200, 0.0]]).centring_shift(), None);
 }
 
 /// The slower stages of the construction: the double-word one is accepted on almost all

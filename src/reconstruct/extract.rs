@@ -1,6 +1,7 @@
 //! Reading the WDM result off the labelled Voronoi diagram: the crust (Delaunay edges dual
 //! to inner–outer Voronoi edges) and the medial axis (inner–inner Voronoi edges).
 
+use super::frame::Frame;
 use super::result::MedialAxis;
 use super::wdm::Label;
 use crate::delaunay::{Triangulation, NO_TWIN};
@@ -87,7 +88,8 @@ fn crust_edges_of_triangles(tri: &Triangulation, labels: &[Label]) -> Vec<[u32; 
     })
 }
 
-/// Finite Voronoi edges with both ends inner, with the used vertices renumbered.
+/// Finite Voronoi edges with both ends inner, with the used vertices renumbered; `vor` is
+/// in `frame`, the vertices come out in the caller's coordinates.
 ///
 /// A Voronoi edge whose dual is in `later_pass_crust` (sorted, local indices) is left out:
 /// the axis never crosses a curve. (First-pass crust edges are inner–outer, never on the
@@ -97,6 +99,7 @@ pub(super) fn medial_axis(
     vor: &Voronoi<'_>,
     labels: &[Label],
     later_pass_crust: &[[u32; 2]],
+    frame: Frame,
 ) -> MedialAxis {
     let tri = vor.triangulation();
     let mut index = vec![u32::MAX; vor.vertex_count()];
@@ -104,7 +107,9 @@ pub(super) fn medial_axis(
     let mut renumber = |v: u32, axis: &mut MedialAxis| {
         if index[v as usize] == u32::MAX {
             index[v as usize] = axis.vertices.len() as u32;
-            axis.vertices.push(vor.vertex_position(v));
+            let centre = vor.vertex_position(v);
+            let centre = frame.circumcenter_to_caller(centre, || vor.canonical_triangle(v));
+            axis.vertices.push(centre);
         }
         index[v as usize]
     };

@@ -160,8 +160,9 @@
 //! The subset's triangles (the cavity's walk and its in-circle tests), its merged faces,
 //! the parity and the "beyond its own edge" test (`orient2d_circumcenter`) are exact, as
 //! everywhere in the crate. The coverage test compares lengths computed from the
-//! circumcenters rounded to `f64`, and the noise slack and the oscillation are `f64`
-//! estimates: the angles, the slack and the clean threshold are tolerances of the *rule*
+//! circumcenters rounded to `f64` in the reconstruction's frame (`super::frame`: the same
+//! numbers under any exact power-of-two scaling of the input, none of them subnormal), and
+//! the noise slack and the oscillation are `f64` estimates: the angles, the slack and the clean threshold are tolerances of the *rule*
 //! (a branch at 59.9999° or 60.0001° is equally a whisker), and the rounding moves the decision only for balls within about `10⁻¹⁵`
 //! (relative) of the threshold. The order of the removals, and every tie, is decided by radius and then by
 //! coordinates, so the result depends on the points, never on their order.
@@ -176,6 +177,7 @@ use self::cavity::Cavity;
 pub(super) use self::parity::parity_from_infinity;
 use super::bits::{Bits, RankedBits};
 use super::curves::Curve;
+use super::frame::Frame;
 use super::lengths::distance;
 use super::result::MedialAxis;
 use super::segment_walk::faces_across;
@@ -217,12 +219,17 @@ const NOISE_TOLERANCE: f64 = 8.0;
 const NOISE_RADIUS_RATIO: f64 = 2.0;
 
 /// The pruned medial axis of the closed curves among `curves` (local indices of the
-/// points of `vor`); empty when there are none. See the module docs.
+/// points of `vor`); empty when there are none. See the module docs. `vor` is in `frame`;
+/// the vertices come out in the caller's coordinates.
 ///
 /// Read off `vor` itself, with the triangles around points off the loops inside the region
 /// replaced ([`cavity`]); where that cannot be decided on `vor` (exactly cocircular points
 /// there), the loops' points are triangulated on their own.
-pub(super) fn pruned_medial_axis(mut vor: Voronoi<'_>, curves: &[Curve]) -> MedialAxis {
+pub(super) fn pruned_medial_axis(
+    mut vor: Voronoi<'_>,
+    curves: &[Curve],
+    frame: Frame,
+) -> MedialAxis {
     let tri = vor.triangulation();
     let loops: Vec<&Curve> = curves.iter().filter(|c| c.closed).collect();
     if loops.is_empty() || tri.is_degenerate() {
@@ -232,7 +239,7 @@ pub(super) fn pruned_medial_axis(mut vor: Voronoi<'_>, curves: &[Curve]) -> Medi
     let mut marks = LoopMarks::new(&vor, &edges, false);
     if marks.unresolved {
         drop((marks, edges));
-        return subset_axis(vor, &loops);
+        return subset_axis(vor, &loops, frame);
     }
     let mut inside = marks.inside_faces(&vor);
     // Points off the loops change the region's triangles only where they lie inside it
@@ -252,14 +259,14 @@ pub(super) fn pruned_medial_axis(mut vor: Voronoi<'_>, curves: &[Curve]) -> Medi
         Some(cavity)
     } else {
         drop((marks, inside));
-        return subset_axis(vor, &loops);
+        return subset_axis(vor, &loops, frame);
     };
     let noise = noise_at_points(&loops, &tri.points);
     // The positions of all vertices (16 bytes each, 32 a point) are not held through the
     // graph's balls, the memory peak: the balls' centres are computed again, the same way
     // (a few per cent of the axis phase).
     vor.forget_positions();
-    let axis = Graph::inside_edges(&vor, inside, &marks, &noise, cavity.as_ref());
+    let axis = Graph::inside_edges(&vor, inside, &marks, &noise, cavity.as_ref(), frame);
     // Nothing below reads the diagram (4 bytes a point).
     drop((vor, marks, noise, cavity));
     axis.pruned()
@@ -268,7 +275,7 @@ pub(super) fn pruned_medial_axis(mut vor: Voronoi<'_>, curves: &[Curve]) -> Medi
 /// [`pruned_medial_axis`] on a triangulation of the points of `loops` alone. `vor` is
 /// freed first (the caller has no more use for it), so that the two diagrams' vertex
 /// positions never coexist at the memory peak.
-fn subset_axis(vor: Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
+fn subset_axis(vor: Voronoi<'_>, loops: &[&Curve], frame: Frame) -> MedialAxis {
     let tri = vor.triangulation();
     drop(vor);
     let points: Vec<[f64; 2]> = loops
@@ -309,7 +316,7 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&Curve]) -> MedialAxis {
         }
         let inside = marks.inside_faces(&vor);
         drop(edges);
-        Graph::inside_edges(&vor, inside, &marks, &noise, None)
+        Graph::inside_edges(&vor, inside, &marks, &noise, None, frame)
     };
     axis.pruned()
 }
@@ -462,6 +469,11 @@ struct Graph {
     ball: Vec<Ball>,
     /// `[a, b]`, indices into `ball`, `a` the end used first (see `into_medial_axis`).
     edges: Vec<[u32; 2]>,
+    /// The frame the balls are in, and the caller's coordinates of the centres that are not
+    /// their frame's value rescaled ([`Frame::rounds_like_the_caller`]), by first-use
+    /// number, sorted. Empty on all but extreme input.
+    frame: Frame,
+    caller_centres: Vec<(u32, [f64; 2])>,
 }
 
 /// What the pruning reads of a vertex, in one record (half a cache line).
@@ -511,6 +523,7 @@ impl Graph {
         loops: &LoopMarks,
         noise: &[f32],
         cavity: Option<&Cavity>,
+        frame: Frame,
     ) -> Graph {
         let tri = vor.triangulation();
         let vertex_count = vor.vertex_count() as u32;
@@ -593,6 +606,26 @@ impl Graph {
                 }
             }
         });
+        // The centres whose value in the caller's coordinates is not the frame's rescaled
+        // are computed on the caller's coordinates of their triangle, as the diagram's
+        // positions are (in first-use order).
+        let caller_centres = parallel::flat_map_chunks(ball.len(), |range, out| {
+            for i in range {
+                let centre = ball[i].centre;
+                let v = used[i];
+                let triangle = || {
+                    if v < vertex_count {
+                        vor.canonical_triangle(v)
+                    } else {
+                        new_triangles[(v - vertex_count) as usize].map(|p| tri.points[p as usize])
+                    }
+                };
+                if frame.rounds_like_the_caller(centre, triangle) {
+                    continue;
+                }
+                out.push((i as u32, frame.circumcenter_to_caller(centre, triangle)));
+            }
+        });
         // Then numbered in the order the pruning tests leaves (see `Ball`): sorted in place
         // on the radius as an integer key (its `total_cmp` order), the rare runs of equal
         // radii then by centre and first use. In place and by whole records: sorting
@@ -617,7 +650,12 @@ impl Graph {
         for [a, b] in &mut edges {
             (*a, *b) = (rank[*a as usize], rank[*b as usize]);
         }
-        Graph { ball, edges }
+        Graph {
+            ball,
+            edges,
+            frame,
+            caller_centres,
+        }
     }
 
     /// Removes leaves by the rule of the module docs: the axis that remains.
@@ -626,7 +664,12 @@ impl Graph {
             1.0 / (PRUNE_ANGLE_DEGREES.to_radians() / 2.0).cos(),
             1.0 / (CLEAN_PRUNE_ANGLE_DEGREES.to_radians() / 2.0).cos(),
         ];
-        let Graph { ball, edges } = self;
+        let Graph {
+            ball,
+            edges,
+            frame,
+            caller_centres,
+        } = self;
         let tree = pruning::prune(
             ball.len(),
             edges,
@@ -636,7 +679,7 @@ impl Graph {
         );
         let edges: Vec<[u32; 2]> = tree.edges().collect();
         drop(tree);
-        axis_of(&ball, edges)
+        axis_of(&ball, edges, frame, &caller_centres)
     }
 }
 
@@ -660,8 +703,14 @@ fn covers(w: &Ball, u: &Ball, scale: [f64; 2]) -> bool {
 /// set with counts): on clean samples nearly every ball stays, and the axis' vertices are
 /// allocated beside all the balls at the end of the phase, the memory peak, where a number
 /// per ball was 4 bytes a point more. The centres are read in the balls' order and written
-/// to their numbers.
-fn axis_of(ball: &[Ball], mut edges: Vec<[u32; 2]>) -> MedialAxis {
+/// to their numbers, in the caller's coordinates (`caller_centres`, else the frame's
+/// rescaled).
+fn axis_of(
+    ball: &[Ball],
+    mut edges: Vec<[u32; 2]>,
+    frame: Frame,
+    caller_centres: &[(u32, [f64; 2])],
+) -> MedialAxis {
     let mut kept = Bits::new(ball.len());
     for &[a, b] in &edges {
         kept.set(ball[a as usize].first_use() as usize);
@@ -671,7 +720,13 @@ fn axis_of(ball: &[Ball], mut edges: Vec<[u32; 2]>) -> MedialAxis {
     let mut vertices = vec![[0.0; 2]; number.len()];
     for b in ball {
         if let Some(k) = number.rank(b.first_use() as usize) {
-            vertices[k as usize] = b.centre;
+            let given = if caller_centres.is_empty() {
+                None
+            } else {
+                let at = caller_centres.binary_search_by_key(&b.first_use(), |&(i, _)| i);
+                at.ok().map(|at| caller_centres[at].1)
+            };
+            vertices[k as usize] = given.unwrap_or_else(|| frame.to_caller(b.centre));
         }
     }
     let number_of = |v: u32| number.rank(ball[v as usize].first_use() as usize);
@@ -806,16 +861,17 @@ mod tests {
         for round in 0..20 {
             let (points, curves) = two_shapes(&mut rng, 60 + 10 * round);
             let tri = triangulate(&points).unwrap();
-            let direct = pruned_medial_axis(tri.voronoi(), &local_curves(&tri, &curves));
+            let direct =
+                pruned_medial_axis(tri.voronoi(), &local_curves(&tri, &curves), Frame::CALLER);
             assert!(direct.edges.len() > 20, "round {round}");
 
             let mut noisy = points.clone();
             noisy.extend((0..5 + round).map(|_| [rng.range(-2.0, 6.0), rng.range(-1.5, 1.5)]));
             let tri = triangulate(&noisy).unwrap();
             let curves = local_curves(&tri, &curves);
-            let with_cavity = pruned_medial_axis(tri.voronoi(), &curves);
+            let with_cavity = pruned_medial_axis(tri.voronoi(), &curves, Frame::CALLER);
             let loops: Vec<&Curve> = curves.iter().collect();
-            let via_subset = subset_axis(tri.voronoi(), &loops);
+            let via_subset = subset_axis(tri.voronoi(), &loops, Frame::CALLER);
             assert_eq!(segments(&direct), segments(&with_cavity), "round {round}");
             assert_eq!(segments(&direct), segments(&via_subset), "round {round}");
 
@@ -846,13 +902,14 @@ mod tests {
             points: (0..points.len() as u32).collect(),
         }];
         let tri = triangulate(&points).unwrap();
-        let direct = pruned_medial_axis(tri.voronoi(), &local_curves(&tri, &curves));
+        let direct = pruned_medial_axis(tri.voronoi(), &local_curves(&tri, &curves), Frame::CALLER);
         assert!(!direct.edges.is_empty());
         for inside in [vec![[3.0, 3.0]], vec![[2.0, 2.0], [5.0, 3.0], [7.5, 4.0]]] {
             let mut with_inside = points.clone();
             with_inside.extend(inside);
             let tri = triangulate(&with_inside).unwrap();
-            let axis = pruned_medial_axis(tri.voronoi(), &local_curves(&tri, &curves));
+            let axis =
+                pruned_medial_axis(tri.voronoi(), &local_curves(&tri, &curves), Frame::CALLER);
             assert_eq!(segments(&direct), segments(&axis));
         }
     }

@@ -7,7 +7,7 @@
 //! ([`Curve`]). Shapes with holes are handled by peeling (see [`Options::with_peeling`]).
 //!
 //! One module per job, in pipeline order: [`options`](Options) (what is asked), `pipeline`
-//! (the orchestration, top to bottom), [`wdm`] (the water flow), `extract` (crust and medial
+//! (the orchestration, top to bottom), `frame` (the exactly rescaled coordinates it runs in), [`wdm`] (the water flow), `extract` (crust and medial
 //! axis off the labels), `corridors` (water that leaked through a gap of a noisy curve),
 //! `ears` (small loops hanging off a curve at one point), `peel` (holes), `detours` (outliers
 //! the crust ran through), `spikes` (outliers woven into a curve), `curves` (assembly),
@@ -21,6 +21,7 @@ mod curves;
 mod detours;
 mod ears;
 mod extract;
+mod frame;
 mod lengths;
 mod medial_axis;
 pub mod nn_crust;

@@ -5,6 +5,7 @@ use super::curves;
 use super::detours::{repair_detours, Repair};
 use super::ears::{drop_islets, repair_ears, Ears};
 use super::extract::{chain_edges, medial_axis, wdm_crust_edges};
+use super::frame::Frame;
 use super::medial_axis::pruned_medial_axis;
 use super::open_curves;
 use super::options::{Algorithm, MedialAxisMode, Options};
@@ -12,7 +13,7 @@ use super::peel::{hole_edges, parity_inside, peel, Peeling};
 use super::result::{untouched_local_points, untouched_points, MedialAxis, Reconstruction};
 use super::wdm::{self, Label, LabelRule};
 use super::{crust, nn_crust};
-use crate::delaunay::{triangulate, Triangulation};
+use crate::delaunay::Triangulation;
 use crate::error::Error;
 
 /// WDM_CRUST and WDM_MAT of `points` with the default [`Options`].
@@ -95,10 +96,11 @@ pub fn reconstruct_observed(
         on_phase(phase, clock.elapsed());
         clock = std::time::Instant::now();
     };
-    let triangulation = triangulate(points)?;
+    // Everything runs in the frame (the points exactly rescaled, see `frame`) and on the
+    // triangulation's local indices (its locality order); the coordinates, curves and
+    // edges come out in the caller's.
+    let (mut triangulation, frame) = Frame::triangulate(points)?;
     lap(Phase::Triangulate);
-    // Everything runs on the triangulation's local indices (its locality order); the
-    // curves and edges come out in the caller's indices.
     if options.algorithm() != Algorithm::Wdm {
         let edges = if triangulation.is_degenerate() {
             chain_edges(&triangulation)
@@ -111,6 +113,7 @@ pub fn reconstruct_observed(
         let curves = assemble(&triangulation, &edges);
         let edges = triangulation.to_input_edges(edges);
         let unassigned = untouched_points(&triangulation, &edges);
+        frame.restore(&mut triangulation, points);
         lap(Phase::Curves);
         return Ok(Reconstruction {
             algorithm: options.algorithm(),
@@ -214,8 +217,10 @@ pub fn reconstruct_observed(
         lap(Phase::Curves);
         let axis = match options.medial_axis() {
             MedialAxisMode::Omitted => MedialAxis::default(),
-            MedialAxisMode::Pruned => pruned_medial_axis(vor, &curves),
-            MedialAxisMode::Raw if holes.is_empty() => medial_axis(&vor, &labels, &later_pass),
+            MedialAxisMode::Pruned => pruned_medial_axis(vor, &curves, frame),
+            MedialAxisMode::Raw if holes.is_empty() => {
+                medial_axis(&vor, &labels, &later_pass, frame)
+            }
             MedialAxisMode::Raw => {
                 // A vertex is inside the shape when it is inner in the first pass and not
                 // inside a hole: an even number of hole loops separate it from infinity.
@@ -231,7 +236,7 @@ pub fn reconstruct_observed(
                         }
                     })
                     .collect();
-                medial_axis(&vor, &combined, &later_pass)
+                medial_axis(&vor, &combined, &later_pass, frame)
             }
         };
         for p in curves.iter_mut().flat_map(|c| c.points.iter_mut()) {
@@ -241,6 +246,7 @@ pub fn reconstruct_observed(
         lap(Phase::MedialAxis);
         (labels, edges, curves, axis, peeling, unassigned)
     };
+    frame.restore(&mut triangulation, points);
     Ok(Reconstruction {
         algorithm: options.algorithm(),
         triangulation,
@@ -264,6 +270,7 @@ fn assemble(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<curves::Curve> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::delaunay::triangulate;
     use crate::reconstruct::extract::EdgeClass;
     use crate::reconstruct::MedialAxisMode;
     use crate::voronoi::{EdgeEnd, Voronoi};
@@ -406,7 +413,7 @@ mod tests {
                 assert_eq!(rec.untouched_points(), untouched, "round {round}");
                 assert_eq!(rec.unassigned(), untouched, "round {round}");
                 if !grew {
-                    let axis = medial_axis(&vor, &labels, &[]);
+                    let axis = medial_axis(&vor, &labels, &[], Frame::CALLER);
                     assert_eq!(rec.medial_axis(), &axis, "round {round}");
                 }
             }

@@ -10,7 +10,9 @@ use crate::delaunay::Triangulation;
 #[non_exhaustive]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MedialAxis {
-    /// Circumcenters (rounded to f64) of the vertices that have a medial-axis edge.
+    /// Circumcenters (rounded to f64) of the vertices that have a medial-axis edge, in the
+    /// caller's coordinates, rounded as
+    /// [`Voronoi::vertex_position`](crate::Voronoi::vertex_position) rounds them.
     pub vertices: Vec<[f64; 2]>,
     /// Segments as index pairs into `vertices`, `[a, b]` with `a < b`, sorted.
     pub edges: Vec<[u32; 2]>,

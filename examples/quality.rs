@@ -1142,8 +1142,11 @@ fn parametric_curve(f: impl Fn(f64) -> [f64; 2], n: usize) -> DenseCurve {
     DenseCurve::from_points(&samples, false, &[])
 }
 
+/// One trial's pieces of an open-curve family.
+type Pieces = Box<dyn Fn(&mut Rng) -> Vec<DenseCurve>>;
+
 /// The open-curve families: (label, generator of one trial's pieces).
-fn open_families() -> Vec<(&'static str, Box<dyn Fn(&mut Rng) -> Vec<DenseCurve>>)> {
+fn open_families() -> Vec<(&'static str, Pieces)> {
     use std::f64::consts::{PI, TAU};
     vec![
         (

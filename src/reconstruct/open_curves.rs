@@ -53,6 +53,7 @@ use std::cmp::Ordering;
 use super::proximity::{closer, DelaunayGraph, Proposal};
 use crate::delaunay::Triangulation;
 use crate::kernel::metric::{length_order, scaled_length_order};
+use crate::voronoi::Voronoi;
 
 /// A loop edge longer than `2^CHORD_DOUBLINGS` times the two loop edges on each side of it
 /// is a chord across an open curve, not a step along a closed one.
@@ -84,7 +85,7 @@ const NONE: u32 = u32::MAX;
 /// The edges of `edges` (local, distinct, `[a, b]` with `a < b`) settled into sure loops
 /// and proximity chains, every point on at most two edges; in no particular order (the
 /// curves are assembled from them).
-pub(super) fn settle(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<[u32; 2]> {
+pub(super) fn settle(tri: &Triangulation, vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<[u32; 2]> {
     let points = &tri.points;
     let n = points.len();
     let mut loops = sure_loops(points, edges);
@@ -102,7 +103,8 @@ pub(super) fn settle(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<[u32; 2]> {
     let chain_edges = loop {
         let free = |p: u32| loops.of[p as usize] == NONE;
         // The Delaunay neighbours of the free points only: few on closed curves.
-        let graph = DelaunayGraph::of_rows(tri, free);
+        let listed: Vec<u32> = (0..n as u32).filter(|&p| free(p)).collect();
+        let graph = DelaunayGraph::of_points(vor, &listed);
         let chain_edges = chains(&graph, points, &free);
         let beside = loops_beside_chains(&graph, points, &chain_edges, &loops);
         if beside.is_empty() {

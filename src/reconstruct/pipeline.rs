@@ -188,7 +188,7 @@ pub fn reconstruct_observed(
         }
         // Sure loops kept, every other point joined into chains by proximity.
         if options.open_curves() && !triangulation.is_degenerate() {
-            edges = open_curves::settle(&triangulation, &edges);
+            edges = open_curves::settle(&triangulation, &vor, &edges);
         }
         lap(Phase::OpenCurves);
         // In local indices until the axis has read them (see `assemble_unnamed`).

@@ -22,11 +22,17 @@ use crate::delaunay::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN
 use crate::kernel::metric::{distance_order, dot_sign};
 use crate::kernel::Sign;
 use crate::predicates::{incircle, CirclePosition};
+use crate::voronoi::Voronoi;
 
 /// Adjacency lists of the Delaunay graph (local indices) in compressed rows.
 pub(super) struct DelaunayGraph {
+    /// Where each point's row starts in `targets`; with `row_of`, where the `p`-th listed
+    /// point's row starts.
     start: Vec<usize>,
     targets: Vec<u32>,
+    /// For a graph of some points' rows only (`of_points`), each point's row, `u32::MAX`
+    /// when not listed; empty when every point has its row.
+    row_of: Vec<u32>,
 }
 
 /// A point's nearest neighbour and half neighbour among the admitted candidates.
@@ -56,9 +62,8 @@ impl DelaunayGraph {
         Self::of_rows(tri, |_| true)
     }
 
-    /// [`of`](Self::of) with the neighbours listed only for the points `p` with `row(p)`
-    /// (the other rows are empty).
-    pub fn of_rows(tri: &Triangulation, row: impl Fn(u32) -> bool) -> DelaunayGraph {
+    /// [`of`](Self::of).
+    fn of_rows(tri: &Triangulation, row: impl Fn(u32) -> bool) -> DelaunayGraph {
         let points = &tri.points;
         let halfedges = tri.halfedges();
         let mut pairs: Vec<(u32, u32)> = Vec::new();
@@ -99,12 +104,41 @@ impl DelaunayGraph {
         DelaunayGraph {
             start,
             targets: pairs.into_iter().map(|(_, b)| b).collect(),
+            row_of: Vec::new(),
         }
     }
 
-    /// The Delaunay neighbours of `p`.
+    /// The rows of the points `listed` alone, read off the dual around each of them: work in
+    /// the number of listed points and their degrees, not in the size of the triangulation.
+    pub fn of_points(vor: &Voronoi<'_>, listed: &[u32]) -> DelaunayGraph {
+        let n = vor.triangulation().points.len();
+        let mut row_of = vec![u32::MAX; n];
+        let mut start = Vec::with_capacity(listed.len() + 1);
+        let mut targets = Vec::new();
+        for (r, &p) in listed.iter().enumerate() {
+            row_of[p as usize] = r as u32;
+            start.push(targets.len());
+            targets.extend(vor.dual_neighbours_local(p));
+        }
+        start.push(targets.len());
+        DelaunayGraph {
+            start,
+            targets,
+            row_of,
+        }
+    }
+
+    /// The Delaunay neighbours of `p` (none when its row was not built).
     pub fn neighbours(&self, p: u32) -> &[u32] {
-        &self.targets[self.start[p as usize]..self.start[p as usize + 1]]
+        let r = if self.row_of.is_empty() {
+            p as usize
+        } else {
+            match self.row_of[p as usize] {
+                u32::MAX => return &[],
+                r => r as usize,
+            }
+        };
+        &self.targets[self.start[r]..self.start[r + 1]]
     }
 
     /// The nearest and the half neighbour of `p` among its Delaunay neighbours `s` with

@@ -151,10 +151,13 @@ impl Frame {
         if !(centre[0].is_finite() && centre[1].is_finite()) || centre == [0.0, 0.0] {
             return false;
         }
-        // The caller's normal range, `[2^-1022, 2^1024)`, in frame units.
+        // The caller's normal range, `[2^-1022, 2^1024)`, in frame units, where the frame's
+        // value is normal too.
         let normal_from = if s >= -52 { pow2(s - 1022) } else { 0.0 };
         let normal_below = if s < 0 { pow2(1024 + s) } else { f64::INFINITY };
-        let normal = |x: f64| x == 0.0 || (normal_from..normal_below).contains(&x.abs());
+        let normal = |x: f64| {
+            x == 0.0 || (normal_from.max(f64::MIN_POSITIVE)..normal_below).contains(&x.abs())
+        };
         if centre.iter().all(|&x| normal(x)) {
             // In the caller's coordinates every difference is below `2^1023` (so finite,
             // whatever its rounding) where this holds in the frame's, with a binade to spare.

@@ -325,6 +325,47 @@ fn pruned_axis_same_in_any_order_at_subnormal_scale() {
     check_everything(&points);
 }
 
+/// Found by `reconstruct` (the default options under permutation, 481 points: a curve of
+/// order 1e-41 beside points up to 2.5e260, with pairs of points 1 ulp apart;
+/// `tests/data/regressions/near-duplicates-in-a-fine-cluster.txt`, the seed
+/// `fuzz/seeds/reconstruct/near-duplicates-in-a-fine-cluster-order.bin`). The detour repair
+/// drew `130–131–132` in one order and `130–461–132` in the other (131 and 461 are such a
+/// pair). Its steps visit points in local order, which follows the coordinates; but the
+/// construction re-keys a cluster finer than its grid, and sorted points of one new key by
+/// input index, and a leaf of two or three points keeps the order it is given: the pair's
+/// local order followed the input order. Points of one new key are now sorted by their
+/// coordinates.
+#[test]
+fn near_duplicates_in_a_fine_cluster_reconstruct_alike_in_any_order() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/regressions/near-duplicates-in-a-fine-cluster.txt"
+    );
+    let points = wdm_crust::io::read_points_from_path(std::path::Path::new(path)).unwrap();
+    let text = std::fs::read_to_string(path).unwrap();
+    let perm: Vec<usize> = text
+        .lines()
+        .find_map(|l| l.strip_prefix("# permutation "))
+        .unwrap()
+        .split_whitespace()
+        .map(|k| k.parse().unwrap())
+        .collect();
+    assert_eq!((points.len(), perm.len()), (481, 481));
+    let shuffled = checks::permute(&points, &perm);
+    for options in [
+        Options::default(),
+        Options::new().with_peeling(false),
+        Options::new().with_medial_axis(MedialAxisMode::Raw),
+    ] {
+        let rec = reconstruct_with(&points, &options).unwrap();
+        let other = reconstruct_with(&shuffled, &options).unwrap();
+        checks::check_permuted(&points, &perm, &rec, &other, true, true)
+            .unwrap_or_else(|e| panic!("{options:?}: {e}"));
+        assert_eq!(checks::axis_segments(&rec), checks::axis_segments(&other));
+    }
+    check_everything(&points);
+}
+
 /// Found by `triangulate` (a bug of the oracle, not of the library): three points near
 /// `f64::MAX`, whose hull edges' coordinate differences overflow. The rays' directions are
 /// halved there (documented on `Voronoi::rays`, finite always); the oracle still asked for

@@ -413,8 +413,10 @@ impl<'a, const IN_RANGE: bool, const SHIFTED: bool> DivideConquer<'a, IN_RANGE, 
     }
 
     /// Re-sorts a range (not yet triangulated) of equal keys along the Z curve of its own
-    /// bounding box; the items get the new keys. True when the range now splits, which the
-    /// distinct points guarantee (extremes in cells 0 and 2^32 − 1 on an axis with extent).
+    /// bounding box, points of one new key lexicographically (not by input index: a leaf of
+    /// two or three points keeps its order, which then is the local order); the items get
+    /// the new keys. True when the range now splits, which the distinct points guarantee
+    /// (extremes in cells 0 and 2^32 − 1 on an axis with extent).
     fn rekey(&mut self, lo: usize, hi: usize) -> bool {
         let range = self.local(lo, hi);
         let (pts, items) = (&mut self.pts[range.clone()], &mut self.items[range]);
@@ -427,7 +429,11 @@ impl<'a, const IN_RANGE: bool, const SHIFTED: bool> DivideConquer<'a, IN_RANGE, 
                 .zip(items.iter())
                 .map(|(&p, &item)| (p, local.key(p) | (item & index_mask))),
         );
-        self.scratch.sort_unstable_by_key(|&(_, item)| item);
+        self.scratch.sort_unstable_by(|a, b| {
+            (a.1 >> bits)
+                .cmp(&(b.1 >> bits))
+                .then_with(|| lexicographic(a.0, b.0))
+        });
         for (k, &(p, item)) in self.scratch.iter().enumerate() {
             pts[k] = p;
             items[k] = item;
@@ -698,7 +704,8 @@ mod tests {
         all
     }
 
-    /// Valid, and the same triangles (up to relabelling) for a reversed and a shuffled input.
+    /// Valid, and the same arrays for a reversed and a shuffled input: the same points in
+    /// the same local order (what every later stage's order follows), the same triangles.
     fn check(points: &[[f64; 2]]) -> Triangulation {
         let tri = build(points, Some(0));
         if let Err(e) = tri.validate() {
@@ -713,6 +720,9 @@ mod tests {
         for other in [shuffled, reversed] {
             let t = build(&other, Some(0));
             assert_eq!(by_coordinates(&t), by_coordinates(&tri));
+            assert_eq!(t.points, tri.points, "the same local order");
+            assert_eq!(t.triangles, tri.triangles);
+            assert_eq!(t.halfedges, tri.halfedges);
             let hull = |t: &Triangulation| -> Vec<[f64; 2]> {
                 t.hull.iter().map(|&v| t.points[v as usize]).collect()
             };
@@ -750,6 +760,25 @@ mod tests {
             .collect();
         pts.push([1.5, -0.75]);
         pts.push([-3.0, 2.0]);
+        check(&pts);
+    }
+
+    /// Pairs of points 1 ulp apart in a cluster far finer than the grid (one far point
+    /// beside it): the re-keyed cluster's keys cannot tell a pair apart, and the pair's
+    /// order, hence the local order, is the coordinates', not the input's.
+    #[test]
+    fn points_sharing_a_requantized_key_keep_their_order() {
+        let mut next = rng(5);
+        let mut pts: Vec<[f64; 2]> = Vec::new();
+        for k in 0..60 {
+            let t = k as f64 / 60.0 * std::f64::consts::TAU;
+            let p = [4e-41 * t.cos() * (1.0 + 0.1 * next()), 4e-41 * t.sin()];
+            pts.push(p);
+            if k % 3 == 0 {
+                pts.push(p.map(|x| f64::from_bits(x.to_bits() + 1)));
+            }
+        }
+        pts.push([2.5e260, 1.0]);
         check(&pts);
     }
 

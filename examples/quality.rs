@@ -22,11 +22,14 @@
 //!
 //! Every random choice comes from fixed seeds: the output is deterministic.
 
+use std::collections::BTreeMap;
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 use std::time::Instant;
 
 use wdm_crust::reconstruct::{reconstruct_with, Algorithm, LabelRule, Options};
+use wdm_crust::Reconstruction;
 use wdm_crust_testkit::{
     bbox, segment_distance, ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Sample,
     SampleConfig, Similarity, Star, Superellipse,
@@ -184,7 +187,15 @@ fn run_row(label: &str, cases: &[Case], methods: &[Method], distances: bool) -> 
         for (tally, method) in tallies.iter_mut().zip(methods) {
             let start = Instant::now();
             let edges = match reconstruct_with(&case.points, &method.options) {
-                Ok(rec) => rec.edges().to_vec(),
+                Ok(rec) => {
+                    let exact = rec.edges().len() == case.truth.len()
+                        && rec
+                            .edges()
+                            .iter()
+                            .all(|&[a, b]| case.truth.contains(&(a, b)));
+                    record_warnings(label, method, exact, &rec);
+                    rec.edges().to_vec()
+                }
                 Err(e) => {
                     eprintln!("{label}: {} failed: {e}", method.name);
                     Vec::new()
@@ -953,7 +964,72 @@ fn main() {
         }
         println!("{line}");
     }
+    print_warnings_table();
     println!("\nTotal time: {:.1} s", started.elapsed().as_secs_f64());
+}
+
+// ---------------------------------------------------------------------------------------
+// Warnings: how often the default's warnings speak on right and on wrong results.
+
+/// Per row (in order of first appearance): trials, right, right and warned, wrong and
+/// warned, and how often each code spoke.
+type WarningRow = (usize, usize, usize, usize, BTreeMap<&'static str, usize>);
+
+static WARNINGS: Mutex<Vec<(String, WarningRow)>> = Mutex::new(Vec::new());
+
+/// Notes the warnings of the default WDM on one trial of row `label` (right or not by the
+/// row's own measure: exact edges for the edge tables, the right curve count for the
+/// survey and the open-curve tables).
+fn record_warnings(label: &str, method: &Method, right: bool, rec: &Reconstruction) {
+    if method.name != "wdm" {
+        return;
+    }
+    let mut rows = WARNINGS.lock().unwrap_or_else(|e| e.into_inner());
+    let at = match rows.iter().position(|(l, _)| l == label) {
+        Some(at) => at,
+        None => {
+            rows.push((label.to_string(), Default::default()));
+            rows.len() - 1
+        }
+    };
+    let row = &mut rows[at].1;
+    let warned = !rec.warnings().is_empty();
+    row.0 += 1;
+    row.1 += usize::from(right);
+    row.2 += usize::from(right && warned);
+    row.3 += usize::from(!right && warned);
+    for w in rec.warnings() {
+        *row.4.entry(w.code.name()).or_default() += 1;
+    }
+}
+
+fn print_warnings_table() {
+    println!(
+        "\n### Warnings of the default (wdm)\n\nright = trials whose result is right by the row's \
+         measure (exact edges, or the right number of curves); warned = trials with at least \
+         one warning, among the right and among the wrong ones; codes = trials each code \
+         spoke in.\n"
+    );
+    println!("| row | trials | right | right, warned | wrong | wrong, warned | codes |");
+    println!("|---|---:|---:|---:|---:|---:|---|");
+    let rows = WARNINGS.lock().unwrap_or_else(|e| e.into_inner());
+    let (mut right_total, mut right_warned, mut wrong_total, mut wrong_warned) = (0, 0, 0, 0);
+    for (label, (trials, right, rw, ww, codes)) in rows.iter() {
+        let codes: Vec<String> = codes.iter().map(|(c, n)| format!("{c} {n}")).collect();
+        println!(
+            "| {label} | {trials} | {right} | {rw} | {} | {ww} | {} |",
+            trials - right,
+            codes.join(", ")
+        );
+        right_total += right;
+        right_warned += rw;
+        wrong_total += trials - right;
+        wrong_warned += ww;
+    }
+    println!(
+        "| **all** | {} | {right_total} | {right_warned} | {wrong_total} | {wrong_warned} | |",
+        right_total + wrong_total
+    );
 }
 
 // ---------------------------------------------------------------------------------------
@@ -1023,6 +1099,7 @@ fn survey_row(label: &str, cases: &[Case], methods: &[Method]) -> SurveyRow {
             tally.true_closed += true_closed;
             tally.junk += open + closed.saturating_sub(true_closed);
             tally.right += usize::from(open == 0 && closed == true_closed);
+            record_warnings(label, method, open == 0 && closed == true_closed, &rec);
             let touched: HashSet<u32> = rec.edges().iter().flatten().copied().collect();
             tally.on_curves += samples.intersection(&touched).count();
             tally.samples += samples.len();
@@ -1288,6 +1365,12 @@ fn open_curves_table(methods: &[Method]) {
                     let true_closed = case.curves.iter().filter(|c| c.closed).count();
                     let true_open = case.curves.len() - true_closed;
                     right += usize::from(closed == true_closed && open == true_open);
+                    record_warnings(
+                        &format!("{label}, noise {noise}"),
+                        method,
+                        closed == true_closed && open == true_open,
+                        &rec,
+                    );
                     junk += (closed + open).saturating_sub(case.curves.len());
                     let mut at = vec![0usize; case.points.len()];
                     for &[a, b] in rec.edges() {

@@ -56,7 +56,9 @@ pub mod voronoi;
 
 pub use delaunay::{triangulate, Triangulation};
 pub use error::Error;
-pub use reconstruct::{reconstruct, reconstruct_observed, reconstruct_with, Reconstruction};
+pub use reconstruct::{
+    reconstruct, reconstruct_observed, reconstruct_with, Reconstruction, Warning, WarningCode,
+};
 pub use voronoi::Voronoi;
 pub use voronoi::{BoundingBox, BoxError};
 

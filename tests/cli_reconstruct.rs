@@ -100,12 +100,13 @@ fn check_json(json: &str, points: &[[f64; 2]], options: &Options) {
         .keys()
         .map(String::as_str)
         .collect();
-    assert_eq!(keys.len(), 6, "{keys:?}");
+    assert_eq!(keys.len(), 8, "{keys:?}");
     // The contract's key order (serde_json's map sorts them, so look at the text).
     let at = |key: &str| json.find(&format!("\"{key}\":")).unwrap();
     assert!(json.starts_with("{\"algorithm\":"));
     assert!(at("points") < at("edges") && at("edges") < at("curves"));
     assert!(at("curves") < at("medial_axis") && at("medial_axis") < at("unassigned"));
+    assert!(at("unassigned") < at("duplicates") && at("duplicates") < at("warnings"));
     let rec = wdm_crust::reconstruct_with(points, options).unwrap();
     assert_eq!(value["algorithm"], options.algorithm().name());
     assert_eq!(value["points"].as_u64().unwrap() as usize, points.len());
@@ -114,10 +115,25 @@ fn check_json(json: &str, points: &[[f64; 2]], options: &Options) {
     let curves = value["curves"].as_array().unwrap();
     assert_eq!(curves.len(), rec.curves().len());
     for (json, curve) in curves.iter().zip(rec.curves()) {
-        assert_eq!(json.as_object().unwrap().len(), 2);
+        assert_eq!(json.as_object().unwrap().len(), 3);
         assert_eq!(json["closed"].as_bool().unwrap(), curve.closed);
         let curve_points: Vec<u32> = serde_json::from_value(json["points"].clone()).unwrap();
         assert_eq!(curve_points, curve.points);
+        // The coordinates of the points, bit for bit.
+        let coords: Vec<[f64; 2]> = serde_json::from_value(json["coords"].clone()).unwrap();
+        assert_eq!(coords.len(), curve.points.len());
+        for (c, &i) in coords.iter().zip(&curve.points) {
+            let p = points[i as usize];
+            assert_eq!(c.map(f64::to_bits), p.map(f64::to_bits));
+        }
+    }
+    let duplicates: Vec<[u32; 2]> = serde_json::from_value(value["duplicates"].clone()).unwrap();
+    assert_eq!(duplicates, rec.duplicates());
+    let warnings = value["warnings"].as_array().unwrap();
+    assert_eq!(warnings.len(), rec.warnings().len());
+    for (json, warning) in warnings.iter().zip(rec.warnings()) {
+        assert_eq!(json["code"], warning.code.name());
+        assert_eq!(json["message"], warning.message.as_str());
     }
     let unassigned: Vec<u32> = serde_json::from_value(value["unassigned"].clone()).unwrap();
     assert_eq!(unassigned, rec.unassigned());
@@ -467,7 +483,7 @@ fn degenerate_inputs_succeed_in_every_format() {
     let run = run_in(d, &["reconstruct"], b"");
     assert_eq!(
         run.stdout,
-        "{\"algorithm\":\"wdm\",\"points\":0,\"edges\":[],\"curves\":[],\"medial_axis\":{\"vertices\":[],\"edges\":[]},\"unassigned\":[]}\n"
+        "{\"algorithm\":\"wdm\",\"points\":0,\"edges\":[],\"curves\":[],\"medial_axis\":{\"vertices\":[],\"edges\":[]},\"unassigned\":[],\"duplicates\":[],\"warnings\":[]}\n"
     );
 }
 
@@ -688,7 +704,7 @@ fn bundled_examples_round_trip() {
 // ----- the peeling budget -----
 
 #[test]
-fn nested_rings_stop_peeling_at_the_budget_with_a_note() {
+fn nested_rings_stop_peeling_at_the_budget_with_a_warning() {
     let dir = tempfile::tempdir().unwrap();
     // Twenty concentric rings: twenty passes, each on everything inside.
     let rings: Vec<[f64; 2]> = (1..=20)
@@ -709,8 +725,9 @@ fn nested_rings_stop_peeling_at_the_budget_with_a_note() {
     let lines: Vec<&str> = run.stderr.lines().collect();
     assert_eq!(lines.len(), 1, "{}", run.stderr);
     assert!(
-        lines[0].starts_with("wdm-crust: note: rings.txt: peeling stopped after ")
-            && lines[0].contains("(--peeling-budget 4)"),
+        lines[0].starts_with("warning: rings.txt: peeling stopped after ")
+            && lines[0].contains("--peeling-budget")
+            && lines[0].ends_with("[peeling-budget]"),
         "{}",
         lines[0]
     );

@@ -15,6 +15,10 @@ pub struct Input {
     path: Option<PathBuf>,
 }
 
+/// The note for an input without points.
+const EMPTY_NOTE: &str = "no points (the input is empty, or only comments, blank lines or a \
+                          header); the result is empty";
+
 impl Input {
     /// The input named on the command line.
     pub fn new(arg: Option<&Path>) -> Self {
@@ -67,20 +71,11 @@ impl Input {
         let points = self.read_points()?;
         if points.is_empty() {
             // Not an error (an empty set is a valid point set), but rarely what was meant.
-            eprintln!("{}", self.empty_note());
+            super::report::note(&self.name(), EMPTY_NOTE);
         }
         timings.phase("parse", || format!("{} points", points.len()));
         timings.progress_if(points.len() > PROGRESS_POINTS);
         Ok(points)
-    }
-
-    /// The one-line note for an input without points.
-    fn empty_note(&self) -> String {
-        format!(
-            "wdm-crust: note: {}: no points (the input is empty, or only comments, blank lines \
-             or a header); the result is empty",
-            self.name()
-        )
     }
 
     /// `<file>:<line>: <problem>`; exit 2, except for a failing read (exit 1).

@@ -6,6 +6,7 @@ mod error;
 mod input;
 mod output;
 mod reconstruct;
+mod report;
 mod threads;
 mod timings;
 mod triangulate;
@@ -65,6 +66,15 @@ enum Command {
 }
 
 impl Command {
+    /// The subcommand's `--quiet`.
+    fn quiet(&self) -> bool {
+        match self {
+            Command::Triangulate(args) => args.quiet,
+            Command::Voronoi(args) => args.quiet,
+            Command::Reconstruct(args) => args.quiet,
+        }
+    }
+
     /// The subcommand's `--threads`.
     fn threads(&self) -> threads::ThreadsArg {
         match self {
@@ -83,6 +93,7 @@ pub fn run() -> ExitCode {
         Err(e) => return clap_exit(&e),
     };
     let command = &cli.command;
+    report::set_quiet(command.quiet());
     let result = command
         .threads()
         .run(|| match command {
@@ -118,25 +129,33 @@ fn triangulate_timed(
 /// library returns as infinities and JSON can only write as `null`.
 fn note_infinite_vertices(input: &input::Input, count: usize, what: &str) {
     if count > 0 {
-        eprintln!(
-            "wdm-crust: note: {}: {what} beyond the f64 range (their exact position overflows): {count}; \
-             written as null in JSON, inf in text",
-            input.name()
+        report::note(
+            &input.name(),
+            &format!(
+                "{what} beyond the f64 range (their exact position overflows): {count}; \
+                 written as null in JSON, inf in text"
+            ),
         );
     }
 }
 
-/// The last step of every subcommand: write the result as a timed phase, then report the
-/// timings.
+/// The last step of every subcommand: write the result as a timed phase, report the
+/// timings, and when the result went to a file, say what it holds (`what`, one summary
+/// line; see [`report::summary`]).
 fn write_timed(
     output: &output::Output,
     timings: &mut timings::Timings,
+    points: usize,
+    what: impl FnOnce() -> String,
     write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
 ) -> Result<(), CliError> {
     timings.begin(|| "writing".to_string());
     output.write(write)?;
     timings.phase("write", String::new);
     timings.report();
+    if let Some(file) = output.file_name() {
+        report::summary(file, &what(), points, timings.elapsed());
+    }
     Ok(())
 }
 

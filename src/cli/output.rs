@@ -64,6 +64,14 @@ impl Output {
         }
     }
 
+    /// The file's name as given, `None` for standard output.
+    pub fn file_name(&self) -> Option<&str> {
+        match self {
+            Output::Stdout => None,
+            Output::File { shown, .. } => Some(shown),
+        }
+    }
+
     /// Runs `write` on the output. For a file, nothing appears under the file's name unless
     /// `write` and the final rename succeed; a failure leaves an existing file untouched.
     pub fn write(

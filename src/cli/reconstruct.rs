@@ -12,6 +12,7 @@ use wdm_crust::reconstruct::{Algorithm, MedialAxisMode, Options, Phase};
 
 use super::input::Input;
 use super::output::Output;
+use super::report::{self, counted};
 use super::threads::ThreadsArg;
 use super::timings::Timings;
 use super::{write_timed, CliError};
@@ -150,6 +151,11 @@ pub struct ReconstructArgs {
     #[command(flatten)]
     pub threads: ThreadsArg,
 
+    /// Nothing on standard error but errors: no summary line, no warnings, no notes, no
+    /// progress.
+    #[arg(short, long, conflicts_with = "timings")]
+    pub quiet: bool,
+
     /// WDM: one pass only, as in the paper (curves nested inside others are then lost).
     /// By default WDM reruns on the points no curve reached, to find holes.
     #[arg(long)]
@@ -236,30 +242,27 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
     })
     .map_err(|e| input.library_error(&e))?;
     timings.phase("extract", || {
-        let closed = rec.curves().iter().filter(|c| c.closed).count();
         let split: Vec<String> = extract_parts
             .iter()
             .map(|(phase, time)| format!("{} {:.1}", phase.name(), time.as_secs_f64() * 1e3))
             .collect();
         format!(
-            "{} edges, {} closed curves, {} open chains, {} medial-axis edges, {} passes (ms: {})",
-            rec.edges().len(),
-            closed,
-            rec.curves().len() - closed,
-            rec.medial_axis().edges.len(),
-            rec.passes(),
+            "{}, {}, {}, {} (ms: {})",
+            counted(rec.edges().len(), "edge", "edges"),
+            curve_counts(&rec),
+            counted(
+                rec.medial_axis().edges.len(),
+                "medial-axis edge",
+                "medial-axis edges"
+            ),
+            counted(rec.passes(), "pass", "passes"),
             split.join(", ")
         )
     });
 
-    if rec.peeling_budget_exhausted() {
-        eprintln!(
-            "wdm-crust: note: {}: peeling stopped after {} passes (--peeling-budget {}); {} points are on no curve",
-            input.name(),
-            rec.passes(),
-            options.peeling_budget(),
-            rec.untouched_points().len()
-        );
+    let name = input.name();
+    for warning in rec.warnings() {
+        report::warning(&name, warning);
     }
     let infinite = rec
         .medial_axis()
@@ -273,12 +276,34 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
     svg.voronoi = args.show.contains(&Layer::Voronoi);
     svg.labels = args.show.contains(&Layer::Labels);
     svg.y_down = args.y_down;
-    write_timed(&output, &mut timings, |out| match format {
+    let what = || {
+        format!(
+            "{}, {}, {}",
+            curve_counts(&rec),
+            counted(
+                rec.unassigned().len(),
+                "point on no curve",
+                "points on no curve"
+            ),
+            counted(rec.duplicates().len(), "duplicate", "duplicates")
+        )
+    };
+    write_timed(&output, &mut timings, n, what, |out| match format {
         ReconstructFormat::Json => write_reconstruction_json(&rec, out),
         ReconstructFormat::Text => write_reconstruction_text(&rec, out),
         ReconstructFormat::Svg => write_reconstruction_svg(&rec, &svg, out),
         ReconstructFormat::Geojson => write_reconstruction_geojson(&rec, out),
     })
+}
+
+/// `1 closed curve, 2 open chains`.
+fn curve_counts(rec: &wdm_crust::Reconstruction) -> String {
+    let closed = rec.curves().iter().filter(|c| c.closed).count();
+    format!(
+        "{}, {}",
+        counted(closed, "closed curve", "closed curves"),
+        counted(rec.curves().len() - closed, "open chain", "open chains")
+    )
 }
 
 /// The phase after `phase` in the pipeline of `algorithm`.

@@ -44,7 +44,12 @@ impl Timings {
     /// Turns progress lines on when `large` is true and standard error is a terminal, off
     /// otherwise.
     pub fn progress_if(&mut self, large: bool) {
-        self.progress = large && std::io::stderr().is_terminal();
+        self.progress = large && !super::report::quiet() && std::io::stderr().is_terminal();
+    }
+
+    /// The wall time since the clock started.
+    pub fn elapsed(&self) -> Duration {
+        self.start.elapsed()
     }
 
     /// Announces the phase that starts now (a progress line, if they are on): `what` is a

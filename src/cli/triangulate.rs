@@ -7,6 +7,7 @@ use wdm_crust::io::{write_triangulation_json, write_triangulation_text};
 
 use super::input::Input;
 use super::output::Output;
+use super::report::counted;
 use super::threads::ThreadsArg;
 use super::timings::Timings;
 use super::{triangulate_timed, write_timed, CliError};
@@ -56,6 +57,11 @@ pub struct TriangulateArgs {
 
     #[command(flatten)]
     pub threads: ThreadsArg,
+
+    /// Nothing on standard error but errors: no summary line, no warnings, no notes, no
+    /// progress.
+    #[arg(short, long, conflicts_with = "timings")]
+    pub quiet: bool,
 }
 
 /// Reads, triangulates, writes.
@@ -73,8 +79,22 @@ pub fn run(args: &TriangulateArgs) -> Result<(), CliError> {
             tri.duplicates().len()
         )
     })?;
-    write_timed(&output, &mut timings, |out| match args.format {
-        TriangulateFormat::Json => write_triangulation_json(&tri, out),
-        TriangulateFormat::Text => write_triangulation_text(&tri, out),
-    })
+    let what = || {
+        format!(
+            "{}, {}, {}",
+            counted(tri.triangle_count(), "triangle", "triangles"),
+            counted(tri.hull().len(), "hull point", "hull points"),
+            counted(tri.duplicates().len(), "duplicate", "duplicates")
+        )
+    };
+    write_timed(
+        &output,
+        &mut timings,
+        points.len(),
+        what,
+        |out| match args.format {
+            TriangulateFormat::Json => write_triangulation_json(&tri, out),
+            TriangulateFormat::Text => write_triangulation_text(&tri, out),
+        },
+    )
 }

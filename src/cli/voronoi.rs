@@ -9,6 +9,7 @@ use wdm_crust::BoundingBox;
 
 use super::input::Input;
 use super::output::Output;
+use super::report::counted;
 use super::threads::ThreadsArg;
 use super::timings::Timings;
 use super::{triangulate_timed, write_timed, CliError};
@@ -89,6 +90,11 @@ pub struct VoronoiArgs {
 
     #[command(flatten)]
     pub threads: ThreadsArg,
+
+    /// Nothing on standard error but errors: no summary line, no warnings, no notes, no
+    /// progress.
+    #[arg(short, long, conflicts_with = "timings")]
+    pub quiet: bool,
 }
 
 impl VoronoiArgs {
@@ -164,13 +170,31 @@ pub fn run(args: &VoronoiArgs) -> Result<(), CliError> {
         super::note_infinite_vertices(&input, infinite, "Voronoi vertices");
     }
     let bbox = args.clip.or_else(|| BoundingBox::around(&points));
-    write_timed(&output, &mut timings, |out| match (format, bbox) {
-        (VoronoiFormat::Json, _) => write_voronoi_json(&vor, out),
-        (VoronoiFormat::Text, _) => write_voronoi_text(&vor, out),
-        (VoronoiFormat::Geojson, Some(bbox)) => write_voronoi_geojson(&vor, &bbox, out),
-        // No points: no cells.
-        (VoronoiFormat::Geojson, None) => {
-            out.write_all(b"{\"type\":\"FeatureCollection\",\"features\":[]}\n")
+    let what = || {
+        format!(
+            "{}, {}, {}{}",
+            counted(vor.vertex_count(), "vertex", "vertices"),
+            counted(vor.finite_edges().count(), "edge", "edges"),
+            counted(vor.rays().count(), "ray", "rays"),
+            if format == VoronoiFormat::Geojson {
+                format!(
+                    ", {}",
+                    counted(tri.distinct_point_count(), "clipped cell", "clipped cells")
+                )
+            } else {
+                String::new()
+            }
+        )
+    };
+    write_timed(&output, &mut timings, points.len(), what, |out| {
+        match (format, bbox) {
+            (VoronoiFormat::Json, _) => write_voronoi_json(&vor, out),
+            (VoronoiFormat::Text, _) => write_voronoi_text(&vor, out),
+            (VoronoiFormat::Geojson, Some(bbox)) => write_voronoi_geojson(&vor, &bbox, out),
+            // No points: no cells.
+            (VoronoiFormat::Geojson, None) => {
+                out.write_all(b"{\"type\":\"FeatureCollection\",\"features\":[]}\n")
+            }
         }
     })
 }

@@ -17,6 +17,10 @@
 //! * one `MultiPoint` of the unassigned points, properties `{"kind":"unassigned","points":[...]}`,
 //!   left out when there are none.
 //!
+//! The collection's own `properties` (after the features) carry `"duplicates"` (pairs
+//! `[duplicate, kept]`) and `"warnings"` (`[{"code","message","points"}, ...]`, as in the
+//! JSON).
+//!
 //! Rings are closed (the first position repeated last). Coordinates are the input's, not
 //! reprojected, written in the shortest form that reads back to the same `f64`; medial-axis
 //! vertices are circumcenters rounded to `f64` (a segment whose rounded end overflowed to an
@@ -27,13 +31,14 @@
 //! {"type":"FeatureCollection","features":[
 //! {"type":"Feature","geometry":{"type":"Polygon","coordinates":[[[0.0,0.0],[2.0,0.0],...,[0.0,0.0]],...]},"properties":{"kind":"curve","points":[0,1,...],"holes":[[...]]}},
 //! ...
-//! ]}
+//! ],"properties":{"duplicates":[],"warnings":[]}}
 //! ```
 
 use std::io::{self, BufWriter, Write};
 
 use serde::Serialize;
 
+use super::output::WarningsJson;
 use crate::Reconstruction;
 
 /// Size of the buffer a writer puts in front of its output.
@@ -71,7 +76,7 @@ pub(crate) fn closed_ring(mut ring: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
 }
 
 /// Writes a `FeatureCollection` one feature per line: [`begin`](Self::begin), then
-/// [`feature`](Self::feature) for each, then [`finish`](Self::finish).
+/// [`feature`](Self::feature) for each, then [`finish_with`](Self::finish_with).
 pub(crate) struct FeatureCollectionWriter<W: Write> {
     out: BufWriter<W>,
     features: usize,
@@ -103,9 +108,12 @@ impl<W: Write> FeatureCollectionWriter<W> {
         Ok(())
     }
 
-    /// Ends the collection and flushes.
-    pub(crate) fn finish(mut self) -> io::Result<()> {
-        self.out.write_all(b"\n]}\n")?;
+    /// Ends the collection with `properties` of its own (a foreign member, RFC 7946 § 6.1)
+    /// and flushes.
+    pub(crate) fn finish_with(mut self, properties: &impl Serialize) -> io::Result<()> {
+        self.out.write_all(b"\n],\"properties\":")?;
+        serde_json::to_writer(&mut self.out, properties)?;
+        self.out.write_all(b"}\n")?;
         self.out.flush()
     }
 }
@@ -207,7 +215,15 @@ pub fn write_reconstruction_geojson<W: Write>(rec: &Reconstruction, out: W) -> i
             .collect();
         collection.feature(&Geometry::MultiPoint(coords), &properties)?;
     }
-    collection.finish()
+    #[derive(Serialize)]
+    struct CollectionProperties<'a> {
+        duplicates: &'a [[u32; 2]],
+        warnings: WarningsJson<'a>,
+    }
+    collection.finish_with(&CollectionProperties {
+        duplicates: rec.duplicates(),
+        warnings: WarningsJson(rec.warnings()),
+    })
 }
 
 #[cfg(test)]
@@ -239,7 +255,8 @@ mod tests {
                 &KindProperties { kind: "test" },
             )
             .unwrap();
-            w.finish().unwrap();
+            w.finish_with(&KindProperties { kind: "collection" })
+                .unwrap();
             (out, coords)
         };
         let (out, coords) = collection;

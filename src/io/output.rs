@@ -57,11 +57,14 @@
 //!
 //! # Reconstruction, JSON
 //!
-//! `{"algorithm":"wdm","points":N,"edges":[[i,j],...],"curves":[{"closed":true,"points":[...]},...],
-//! "medial_axis":{"vertices":[[x,y],...],"edges":[[a,b],...]},"unassigned":[i,...]}` on one
-//! line: the fields of [`Reconstruction`] (`edges` with `i < j`, sorted; `curves` as in
-//! [`Curve`]; the medial axis as in [`MedialAxis`], empty for the baseline algorithms;
-//! `unassigned` as in [`Reconstruction::unassigned`]).
+//! `{"algorithm":"wdm","points":N,"edges":[[i,j],...],"curves":[{"closed":true,"points":[...],"coords":[[x,y],...]},...],
+//! "medial_axis":{"vertices":[[x,y],...],"edges":[[a,b],...]},"unassigned":[i,...],
+//! "duplicates":[[dup,kept],...],"warnings":[{"code":"...","message":"...","points":[...]},...]}`
+//! on one line: the fields of [`Reconstruction`] (`edges` with `i < j`, sorted; `curves` as
+//! in [`Curve`], each with the coordinates of its points; the medial axis as in
+//! [`MedialAxis`], empty for the baseline algorithms; `unassigned` as in
+//! [`Reconstruction::unassigned`]; `duplicates` as for the triangulation; `warnings` as in
+//! [`Reconstruction::warnings`], empty when there is nothing to say).
 //!
 //! # Reconstruction, text
 //!
@@ -74,7 +77,7 @@ use std::io::{self, BufWriter, Write};
 use serde::ser::{SerializeSeq, Serializer};
 use serde::Serialize;
 
-use crate::reconstruct::{Curve, MedialAxis};
+use crate::reconstruct::{Curve, MedialAxis, Warning};
 use crate::{Reconstruction, Triangulation, Voronoi};
 
 /// Size of the buffer every writer puts in front of its output.
@@ -314,9 +317,64 @@ struct ReconstructionJson<'a> {
     algorithm: &'static str,
     points: usize,
     edges: &'a [[u32; 2]],
-    curves: &'a [Curve],
+    curves: CurvesJson<'a>,
     medial_axis: &'a MedialAxis,
     unassigned: &'a [u32],
+    duplicates: &'a [[u32; 2]],
+    warnings: WarningsJson<'a>,
+}
+
+/// The curves, each with the coordinates of its points.
+struct CurvesJson<'a>(&'a Reconstruction);
+
+impl Serialize for CurvesJson<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let rec = self.0;
+        serializer.collect_seq(rec.curves().iter().map(|curve| CurveJson { rec, curve }))
+    }
+}
+
+/// One curve: `{"closed", "points", "coords"}`.
+struct CurveJson<'a> {
+    rec: &'a Reconstruction,
+    curve: &'a Curve,
+}
+
+impl Serialize for CurveJson<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        struct Coords<'a>(&'a Reconstruction, &'a [u32]);
+        impl Serialize for Coords<'_> {
+            fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+                let tri = self.0.triangulation();
+                serializer.collect_seq(self.1.iter().map(|&i| tri.point(i)))
+            }
+        }
+        let mut curve = serializer.serialize_struct("Curve", 3)?;
+        curve.serialize_field("closed", &self.curve.closed)?;
+        curve.serialize_field("points", &self.curve.points)?;
+        curve.serialize_field("coords", &Coords(self.rec, &self.curve.points))?;
+        curve.end()
+    }
+}
+
+/// The warnings as `[{"code", "message", "points"}, ...]`.
+pub(crate) struct WarningsJson<'a>(pub(crate) &'a [Warning]);
+
+impl Serialize for WarningsJson<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        #[derive(Serialize)]
+        struct One<'a> {
+            code: &'static str,
+            message: &'a str,
+            points: &'a [u32],
+        }
+        serializer.collect_seq(self.0.iter().map(|w| One {
+            code: w.code.name(),
+            message: &w.message,
+            points: &w.points,
+        }))
+    }
 }
 
 /// Writes `rec` as the contract's JSON object, followed by a newline (see the
@@ -345,9 +403,11 @@ pub fn write_reconstruction_json<W: Write>(rec: &Reconstruction, out: W) -> io::
         algorithm: rec.algorithm().name(),
         points: rec.triangulation().point_count(),
         edges: rec.edges(),
-        curves: rec.curves(),
+        curves: CurvesJson(rec),
         medial_axis: rec.medial_axis(),
         unassigned: rec.unassigned(),
+        duplicates: rec.duplicates(),
+        warnings: WarningsJson(rec.warnings()),
     };
     serde_json::to_writer(&mut out, &json)?;
     out.write_all(b"\n")?;

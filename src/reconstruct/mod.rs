@@ -11,7 +11,7 @@
 //! axis off the labels), `corridors` (water that leaked through a gap of a noisy curve),
 //! `ears` (small loops hanging off a curve at one point), `peel` (holes), `detours` (outliers
 //! the crust ran through), `spikes` (outliers woven into a curve), `curves` (assembly),
-//! `result` (what is returned);
+//! `result` (what is returned), `diagnose` (the warnings on a result);
 //! [`crust`] and [`nn_crust`] are the classical baselines on the same exact engine.
 
 mod bits;
@@ -19,6 +19,7 @@ mod corridors;
 pub mod crust;
 mod curves;
 mod detours;
+mod diagnose;
 mod ears;
 mod extract;
 mod frame;
@@ -37,6 +38,7 @@ mod spikes;
 pub mod wdm;
 
 pub use curves::Curve;
+pub use diagnose::{Warning, WarningCode};
 pub use extract::EdgeClass;
 pub use options::{Algorithm, MedialAxisMode, Options};
 pub use pipeline::{reconstruct, reconstruct_observed, reconstruct_with, Phase};

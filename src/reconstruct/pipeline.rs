@@ -126,6 +126,7 @@ pub fn reconstruct_observed(
             unassigned,
             passes: 1,
             budget_exhausted: false,
+            warnings: Default::default(),
         });
     }
     let (labels, edges, curves, medial_axis, peeling, unassigned) = {
@@ -258,6 +259,7 @@ pub fn reconstruct_observed(
         unassigned,
         passes: 1 + peeling.extra_passes,
         budget_exhausted: peeling.budget_exhausted,
+        warnings: Default::default(),
     })
 }
 

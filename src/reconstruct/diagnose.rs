@@ -1,0 +1,519 @@
+//! Warnings: the signs that a reconstruction is probably not what its user wanted, each with
+//! what to try.
+//!
+//! A reconstruction is always exactly what its rules say, but samples that are too noisy,
+//! too sparse, curves closer together than the spacing, or points that are no curve at all
+//! give a result that is *valid* and yet not the curves the user had in mind. The checks
+//! here look at the result beside its Delaunay graph and say so:
+//!
+//! | code | fires when |
+//! |---|---|
+//! | `most-unassigned` | more than half of the distinct points are on no curve (or no curve was found) |
+//! | `scatter` | most curve points have a point that is not their curve neighbour as close as their curve edges, and over a third of the points are on no curve: a uniform scatter, a filled area or a wide band of noise |
+//! | `long-edge` | a curve edge is more than 8 × each curve edge within two steps of it (at a chain's end: the end's nearest-neighbour distance) |
+//! | `loop-across-gap` | a closed loop's longest edge is more than 4 × its next longest: the loop may close across the gap of an open curve |
+//! | `curves-too-close` | two curve points as close as their curve edges lie on different curves, or more than 32 steps apart on one: the sampling cannot tell the curves apart there |
+//! | `peeling-budget` | peeling stopped at its budget: curves may remain among the points on no curve |
+//!
+//! Every comparison of lengths is exact (the kernel's metric predicates; a ratio is a power
+//! of two, exact in every stage), so the warnings do not depend on the input order or on
+//! the scale; only the numbers quoted in the messages are rounded. The thresholds are listed
+//! with their measurements in `docs/design/thresholds.md`.
+
+use std::cmp::Ordering;
+use std::fmt;
+
+use super::lengths::distance;
+use super::proximity::{closer, DelaunayGraph};
+use super::result::Reconstruction;
+use crate::kernel::metric::{length_order, scaled_length_order};
+
+/// An edge is *long* when it is more than `2^LONG_EDGE_DOUBLINGS` times each of the (up to
+/// four) curve edges within two steps of it. The open-curve stage already opens a loop at such a chord, and its
+/// chains never take an edge that long; what remains is a chord of the baselines, or of a
+/// loop whose neighbours are as sparse as the gap.
+pub const LONG_EDGE_DOUBLINGS: u32 = 3;
+
+/// A closed loop whose longest edge is more than `2^GAP_EDGE_DOUBLINGS` times its next
+/// longest (and not long already) may close across the gap of an open curve. Noise and
+/// uneven sampling vary the edges of a right loop, but its two longest edges stay within
+/// a small factor of each other; a chord joining the ends of an open curve is alone.
+pub const GAP_EDGE_DOUBLINGS: u32 = 2;
+
+/// Two curve points closer than their curve edges are *too close* when they lie on
+/// different curves or more than this many steps apart along one curve. A sharp corner of
+/// angle θ brings the points of its two sides within one step of each other up to about
+/// `1 / sin(θ/2)` steps apart along the curve (11 at 10°, 23 at 5°): well inside the bound.
+pub const CLOSE_CURVE_STEPS: usize = 32;
+
+/// What a warning is about; [`name`](Self::name) is its stable code.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[non_exhaustive]
+pub enum WarningCode {
+    /// Most points are on no curve, or no curve was found.
+    MostUnassigned,
+    /// The points look like a scatter, a filled area or a wide band of noise.
+    Scatter,
+    /// A curve edge far longer than the curve edges beside it.
+    LongEdge,
+    /// A closed loop may close across the gap of an open curve.
+    LoopAcrossGap,
+    /// Curves come within the sample spacing of each other.
+    CurvesTooClose,
+    /// Peeling stopped at its budget.
+    PeelingBudget,
+}
+
+impl WarningCode {
+    /// Every code, in the order the warnings are listed.
+    pub const ALL: [WarningCode; 6] = [
+        WarningCode::MostUnassigned,
+        WarningCode::Scatter,
+        WarningCode::LongEdge,
+        WarningCode::LoopAcrossGap,
+        WarningCode::CurvesTooClose,
+        WarningCode::PeelingBudget,
+    ];
+
+    /// The stable code: what the JSON, the GeoJSON and Python carry.
+    pub fn name(self) -> &'static str {
+        match self {
+            WarningCode::MostUnassigned => "most-unassigned",
+            WarningCode::Scatter => "scatter",
+            WarningCode::LongEdge => "long-edge",
+            WarningCode::LoopAcrossGap => "loop-across-gap",
+            WarningCode::CurvesTooClose => "curves-too-close",
+            WarningCode::PeelingBudget => "peeling-budget",
+        }
+    }
+}
+
+impl fmt::Display for WarningCode {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A sign that the result is probably not what was wanted, with what to try.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct Warning {
+    /// What it is about.
+    pub code: WarningCode,
+    /// One sentence for a person: what was seen, where, and what to try.
+    pub message: String,
+    /// The points it is about (caller indices; for an edge its two ends), at most a few.
+    pub points: Vec<u32>,
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} [{}]", self.message, self.code)
+    }
+}
+
+/// The warnings of `rec`, in the order of [`WarningCode::ALL`], at most one per code.
+pub(super) fn warnings(rec: &Reconstruction) -> Vec<Warning> {
+    let tri = &rec.triangulation;
+    let distinct = tri.distinct_point_count();
+    let mut found = Vec::new();
+    if rec.budget_exhausted {
+        found.push(peeling_budget(rec));
+    }
+    if distinct < 3 {
+        return found;
+    }
+    let view = CurveView::new(rec);
+    let graph = DelaunayGraph::of(tri);
+    let unassigned = rec.unassigned.len();
+    if view.curve_points == 0 {
+        found.push(Warning {
+            code: WarningCode::MostUnassigned,
+            message: format!(
+                "no curve passes through any of the {distinct} points: they may be too sparse, \
+                 or a scatter rather than samples along curves; try --algorithm nn-crust"
+            ),
+            points: Vec::new(),
+        });
+    } else if 2 * unassigned > distinct {
+        found.push(Warning {
+            code: WarningCode::MostUnassigned,
+            message: format!(
+                "{unassigned} of {distinct} points ({}) are on no curve: if they are outliers the \
+                 curves may be right; if they are samples of curves, those are too noisy or too \
+                 sparse here (look at the picture; try --algorithm nn-crust)",
+                percent(unassigned, distinct)
+            ),
+            points: Vec::new(),
+        });
+    }
+    // In a scatter every curve is one path among many: its edges and near misses say
+    // nothing more.
+    if let Some(w) = scatter(rec, &view, &graph, unassigned, distinct) {
+        found.push(w);
+        found.sort_by_key(|w| WarningCode::ALL.iter().position(|&c| c == w.code));
+        return found;
+    }
+    found.extend(edge_warnings(rec, &view, &graph));
+    if let Some(w) = curves_too_close(rec, &view, &graph) {
+        found.push(w);
+    }
+    found.sort_by_key(|w| WarningCode::ALL.iter().position(|&c| c == w.code));
+    found
+}
+
+fn peeling_budget(rec: &Reconstruction) -> Warning {
+    let untouched = rec.untouched_points().len();
+    Warning {
+        code: WarningCode::PeelingBudget,
+        message: format!(
+            "peeling stopped after {} passes at its budget; {untouched} points are on no curve \
+             and may still hold curves: raise --peeling-budget",
+            rec.passes
+        ),
+        points: Vec::new(),
+    }
+}
+
+/// The curves in local indices: each point's curve, position and curve neighbours.
+struct CurveView {
+    /// For every local point: its curve (`u32::MAX` when on none) and position in it.
+    place: Vec<(u32, u32)>,
+    /// Each curve's local points in order, and whether it is closed.
+    curves: Vec<(Vec<u32>, bool)>,
+    curve_points: usize,
+}
+
+const NO_CURVE: u32 = u32::MAX;
+
+impl CurveView {
+    fn new(rec: &Reconstruction) -> Self {
+        let tri = &rec.triangulation;
+        let mut place = vec![(NO_CURVE, 0); tri.distinct_point_count()];
+        let mut curves = Vec::with_capacity(rec.curves.len());
+        let mut curve_points = 0;
+        for (c, curve) in rec.curves.iter().enumerate() {
+            let local: Vec<u32> = curve.points.iter().map(|&i| tri.local_index(i)).collect();
+            for (k, &p) in local.iter().enumerate() {
+                if place[p as usize].0 == NO_CURVE {
+                    curve_points += 1;
+                }
+                place[p as usize] = (c as u32, k as u32);
+            }
+            curves.push((local, curve.closed));
+        }
+        CurveView {
+            place,
+            curves,
+            curve_points,
+        }
+    }
+
+    fn on_curve(&self, p: u32) -> bool {
+        self.place[p as usize].0 != NO_CURVE
+    }
+
+    /// The curve neighbours of `p` (at most two: the curves are 1-manifold by default; at a
+    /// junction of a baseline, those of one of its curves).
+    fn neighbours(&self, p: u32) -> impl Iterator<Item = u32> + '_ {
+        let (c, k) = self.place[p as usize];
+        let mut out = [None, None];
+        if c != NO_CURVE {
+            let (points, closed) = &self.curves[c as usize];
+            let (k, n) = (k as usize, points.len());
+            if n > 1 {
+                if k > 0 {
+                    out[0] = Some(points[k - 1]);
+                } else if *closed {
+                    out[0] = Some(points[n - 1]);
+                }
+                if k + 1 < n {
+                    out[1] = Some(points[k + 1]);
+                } else if *closed {
+                    out[1] = Some(points[0]);
+                }
+            }
+        }
+        if out[0] == out[1] {
+            out[1] = None;
+        }
+        out.into_iter().flatten()
+    }
+
+    /// The steps along one curve between `p` and `q`, `None` on different curves.
+    fn steps_apart(&self, p: u32, q: u32) -> Option<usize> {
+        let ((cp, kp), (cq, kq)) = (self.place[p as usize], self.place[q as usize]);
+        if cp != cq {
+            return None;
+        }
+        let (points, closed) = &self.curves[cp as usize];
+        let apart = kp.abs_diff(kq) as usize;
+        Some(if *closed {
+            apart.min(points.len() - apart)
+        } else {
+            apart
+        })
+    }
+}
+
+/// `p`'s nearest Delaunay neighbour (exact; ties by coordinates).
+fn nearest(points: &[[f64; 2]], graph: &DelaunayGraph, p: u32) -> Option<u32> {
+    let at = |i: u32| points[i as usize];
+    graph
+        .neighbours(p)
+        .iter()
+        .copied()
+        .min_by(|&a, &b| closer(at(p), at(a), at(b)))
+}
+
+/// `p`'s longer curve edge's other end.
+fn longer_step(points: &[[f64; 2]], view: &CurveView, p: u32) -> Option<u32> {
+    let at = |i: u32| points[i as usize];
+    view.neighbours(p)
+        .max_by(|&a, &b| closer(at(p), at(a), at(b)))
+}
+
+/// `scatter`: most curve points have another point that is not their curve neighbour as
+/// close as their longer curve edge, and over a third of the points are on no curve. A
+/// curve sample's points have their curve neighbours nearest; in a scatter, a lattice or a
+/// band of noise the curves drawn are one path among many equally short.
+fn scatter(
+    rec: &Reconstruction,
+    view: &CurveView,
+    graph: &DelaunayGraph,
+    unassigned: usize,
+    distinct: usize,
+) -> Option<Warning> {
+    if 3 * unassigned <= distinct {
+        return None;
+    }
+    let points = &rec.triangulation.points;
+    let at = |i: u32| points[i as usize];
+    let crowded = (0..points.len() as u32)
+        .filter(|&p| view.on_curve(p))
+        .filter(|&p| {
+            let Some(far) = longer_step(points, view, p) else {
+                return false;
+            };
+            graph.neighbours(p).iter().any(|&q| {
+                !view.neighbours(p).any(|n| n == q)
+                    && length_order(at(p), at(q), at(p), at(far)) != Ordering::Greater
+            })
+        })
+        .count();
+    (2 * crowded > view.curve_points).then(|| Warning {
+        code: WarningCode::Scatter,
+        message: format!(
+            "the points look like a scatter, a filled area or a band of noise wider than the \
+             spacing rather than samples along curves: {} of the {} curve points have another \
+             point as close as their curve neighbours, and {} of all points are on no curve; \
+             the curves drawn are one path among many (thin the points, or sample the outline only)",
+            percent(crowded, view.curve_points),
+            view.curve_points,
+            percent(unassigned, distinct)
+        ),
+        points: Vec::new(),
+    })
+}
+
+/// `long-edge` and `loop-across-gap`: curve edges far longer than the curve edges near
+/// them.
+fn edge_warnings(rec: &Reconstruction, view: &CurveView, graph: &DelaunayGraph) -> Vec<Warning> {
+    let tri = &rec.triangulation;
+    let points = &tri.points;
+    let at = |i: u32| points[i as usize];
+    let length = |[a, b]: [u32; 2]| distance(at(a), at(b));
+    let longer = |e: [u32; 2], f: [u32; 2], doublings| {
+        scaled_length_order(at(e[0]), at(e[1]), at(f[0]), at(f[1]), doublings) == Ordering::Greater
+    };
+    // The worst edge of each kind (ratio, ends), and how many there are.
+    let mut long: (usize, f64, [u32; 2]) = (0, 0.0, [0, 0]);
+    let mut gap: (usize, f64, [u32; 2]) = (0, 0.0, [0, 0]);
+    for (curve, &closed) in view.curves.iter().map(|(c, closed)| (c, closed)) {
+        let n = curve.len();
+        if n < 2 {
+            continue;
+        }
+        let edge = |k: usize| [curve[k % n], curve[(k + 1) % n]];
+        let edges = if closed { n } else { n - 1 };
+        let mut long_here = vec![false; edges];
+        for (k, flagged) in long_here.iter_mut().enumerate() {
+            let ab = edge(k);
+            // Up to two curve edges on each side; at a chain's end, the end's
+            // nearest-neighbour pair stands for the missing side.
+            let mut beside: Vec<[u32; 2]> = Vec::with_capacity(4);
+            for side in [-1i64, -2, 1, 2] {
+                let j = k as i64 + side;
+                if closed || (0..edges as i64).contains(&j) {
+                    let j = j.rem_euclid(n as i64) as usize;
+                    if j != k {
+                        beside.push(edge(j));
+                    }
+                }
+            }
+            if !closed && k == 0 {
+                beside.extend(nearest(points, graph, ab[0]).map(|q| [ab[0], q]));
+            }
+            if !closed && k + 1 == edges {
+                beside.extend(nearest(points, graph, ab[1]).map(|q| [ab[1], q]));
+            }
+            if beside.is_empty() || !beside.iter().all(|&f| longer(ab, f, LONG_EDGE_DOUBLINGS)) {
+                continue;
+            }
+            *flagged = true;
+            let side = beside.iter().map(|&f| length(f)).fold(0.0, f64::max);
+            note(&mut long, length(ab) / side, ab.map(|p| tri.input_index(p)));
+        }
+        // A loop whose longest edge is far longer than every other one: an open curve whose
+        // ends were joined.
+        if closed && n >= 4 {
+            let order = |i: usize, j: usize| {
+                length_order(
+                    at(edge(i)[0]),
+                    at(edge(i)[1]),
+                    at(edge(j)[0]),
+                    at(edge(j)[1]),
+                )
+            };
+            let longest = (0..n).max_by(|&i, &j| order(i, j)).unwrap_or(0);
+            let second = (0..n)
+                .filter(|&j| j != longest)
+                .max_by(|&i, &j| order(i, j))
+                .unwrap_or(0);
+            if !long_here[longest] && longer(edge(longest), edge(second), GAP_EDGE_DOUBLINGS) {
+                note(
+                    &mut gap,
+                    length(edge(longest)) / length(edge(second)),
+                    edge(longest).map(|p| tri.input_index(p)),
+                );
+            }
+        }
+    }
+    let mut out = Vec::new();
+    if long.0 > 0 {
+        let [i, j] = long.2;
+        out.push(Warning {
+            code: WarningCode::LongEdge,
+            message: format!(
+                "{} ({}× the curve edges beside it, between points {i} and {j} at {}): it may \
+                 bridge a gap between two curves or close an open one; if so, sample the gap \
+                 more densely or try --algorithm crust",
+                count(
+                    long.0,
+                    "curve edge is far longer",
+                    "curve edges are far longer"
+                ),
+                round_ratio(long.1),
+                position(at(tri.local_index(i)))
+            ),
+            points: vec![i, j],
+        });
+    }
+    if gap.0 > 0 {
+        let [i, j] = gap.2;
+        out.push(Warning {
+            code: WarningCode::LoopAcrossGap,
+            message: format!(
+                "{} across a gap: the edge between points {i} and {j} at {} is {}× the loop's \
+                 next longest; if the curve is open there, try --algorithm crust",
+                count(gap.0, "closed loop closes", "closed loops close"),
+                position(at(tri.local_index(i))),
+                round_ratio(gap.1)
+            ),
+            points: vec![i, j],
+        });
+    }
+    out
+}
+
+/// Counts one more flagged edge, keeping the worst.
+fn note(worst: &mut (usize, f64, [u32; 2]), ratio: f64, ends: [u32; 2]) {
+    worst.0 += 1;
+    if ratio > worst.1 || worst.0 == 1 {
+        worst.1 = ratio;
+        worst.2 = ends;
+    }
+}
+
+/// `curves-too-close`: Delaunay neighbours on curves, not neighbours along them, as close as
+/// both their longer curve edges, on different curves or far apart along one.
+fn curves_too_close(
+    rec: &Reconstruction,
+    view: &CurveView,
+    graph: &DelaunayGraph,
+) -> Option<Warning> {
+    let tri = &rec.triangulation;
+    let points = &tri.points;
+    let at = |i: u32| points[i as usize];
+    let mut pairs = 0usize;
+    let mut first: Option<[u32; 2]> = None;
+    for p in 0..points.len() as u32 {
+        if !view.on_curve(p) {
+            continue;
+        }
+        let Some(p_far) = longer_step(points, view, p) else {
+            continue;
+        };
+        for &q in graph.neighbours(p) {
+            if q < p || !view.on_curve(q) || view.neighbours(p).any(|n| n == q) {
+                continue;
+            }
+            let Some(q_far) = longer_step(points, view, q) else {
+                continue;
+            };
+            let within =
+                |r: u32, far: u32| length_order(at(p), at(q), at(r), at(far)) != Ordering::Greater;
+            if !(within(p, p_far) && within(q, q_far)) {
+                continue;
+            }
+            if view
+                .steps_apart(p, q)
+                .is_some_and(|steps| steps <= CLOSE_CURVE_STEPS)
+            {
+                continue;
+            }
+            pairs += 1;
+            let named = [tri.input_index(p), tri.input_index(q)];
+            let named = [named[0].min(named[1]), named[0].max(named[1])];
+            if first.is_none_or(|f| named < f) {
+                first = Some(named);
+            }
+        }
+    }
+    let [i, j] = first?;
+    Some(Warning {
+        code: WarningCode::CurvesTooClose,
+        message: format!(
+            "curves pass within the sample spacing of each other at {} (e.g. points {i} and {j} \
+             at {}): the samples cannot tell them apart there, so they may be merged or split \
+             wrongly; sample more densely where curves nearly touch",
+            count(pairs, "place", "places"),
+            position(at(tri.local_index(i)))
+        ),
+        points: vec![i, j],
+    })
+}
+
+fn percent(part: usize, whole: usize) -> String {
+    format!("{:.0} %", 100.0 * part as f64 / whole.max(1) as f64)
+}
+
+fn count(n: usize, one: &str, many: &str) -> String {
+    if n == 1 {
+        format!("1 {one}")
+    } else {
+        format!("{n} {many}")
+    }
+}
+
+fn round_ratio(r: f64) -> String {
+    if r.is_finite() && r < 1e6 {
+        format!("{:.1}", r)
+    } else {
+        format!("{r:e}")
+    }
+}
+
+fn position(p: [f64; 2]) -> String {
+    format!("({}, {})", p[0], p[1])
+}

@@ -1,0 +1,296 @@
+//! The warnings on a reconstruction: each one speaks on the input that shows its problem,
+//! and none speaks on clean samples, the bundled examples and the real sets whose result is
+//! right; warnings depend neither on the input order nor on an exact power-of-two scale.
+
+use std::f64::consts::TAU;
+use std::path::PathBuf;
+
+use wdm_crust::reconstruct::{reconstruct_with, Options};
+use wdm_crust::{reconstruct, Reconstruction, WarningCode};
+use wdm_crust_testkit::{ClosedCurve, CurveSet, DenseCurve, Ellipse, Peanut, Rng, Star};
+
+fn codes(rec: &Reconstruction) -> Vec<WarningCode> {
+    rec.warnings().iter().map(|w| w.code).collect()
+}
+
+fn circle(centre: [f64; 2], r: f64, n: usize) -> Vec<[f64; 2]> {
+    (0..n)
+        .map(|k| {
+            let t = k as f64 * TAU / n as f64;
+            [centre[0] + r * t.cos(), centre[1] + r * t.sin()]
+        })
+        .collect()
+}
+
+fn uniform(n: usize, seed: u64) -> Vec<[f64; 2]> {
+    let mut rng = Rng::new(seed);
+    (0..n).map(|_| [rng.f64(), rng.f64()]).collect()
+}
+
+fn data(path: &str) -> Vec<[f64; 2]> {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(path);
+    wdm_crust::io::read_points_from_path(&path).unwrap()
+}
+
+#[test]
+fn clean_samples_give_no_warning() {
+    let shapes: Vec<DenseCurve> = vec![
+        Ellipse { a: 2.0, b: 1.0 }.dense(4000),
+        Peanut { a: 0.3, b: 0.15 }.dense(4000),
+        Star { a: 0.25, k: 5 }.dense(4000),
+    ];
+    for (s, shape) in shapes.into_iter().enumerate() {
+        for (e, &eps) in [0.2, 0.5, 1.0].iter().enumerate() {
+            let mut rng = Rng::new(40 + 10 * s as u64 + e as u64);
+            let sample = CurveSet::new(vec![shape.clone()]).eps_sample(eps, &mut rng);
+            let rec = reconstruct(&sample.points).unwrap();
+            assert!(
+                rec.warnings().is_empty(),
+                "shape {s}, ε = {eps}: {:?}",
+                rec.warnings()
+            );
+        }
+    }
+    // Open arcs, a polyline with corners, two circles three spacings apart.
+    let arc: Vec<[f64; 2]> = (0..120)
+        .map(|k| {
+            let t = k as f64 / 119.0 * 4.0;
+            [t.cos(), t.sin()]
+        })
+        .collect();
+    let polyline = DenseCurve::polyline(
+        &[[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [7.0, 1.0]],
+        false,
+        160,
+    )
+    .points;
+    let step = TAU / 200.0;
+    let mut two = circle([0.0, 0.0], 1.0, 200);
+    two.extend(circle([2.0 + 3.0 * step, 0.0], 1.0, 200));
+    for (name, points) in [("arc", arc), ("polyline", polyline), ("two circles", two)] {
+        let rec = reconstruct(&points).unwrap();
+        assert!(rec.warnings().is_empty(), "{name}: {:?}", rec.warnings());
+    }
+}
+
+#[test]
+fn bundled_examples_and_well_sampled_real_sets_give_no_warning() {
+    for path in [
+        "examples/data/bean.txt",
+        "examples/data/mushroom.p2d",
+        "examples/data/crocodile-conf.p2d",
+        "examples/data/Circle0.txt",
+        "examples/data/apple_2percent_noise.txt",
+        "tests/data/stretchdenoise/data/drill.txt",
+        "tests/data/stretchdenoise/data/vase.txt",
+        "tests/data/stretchdenoise/data/thing.txt",
+        "tests/data/fitconnect/data/butterfly_2percent_noise.txt",
+        "tests/data/fitconnect/data/Mouse0.txt",
+    ] {
+        let rec = reconstruct(&data(path)).unwrap();
+        assert!(rec.warnings().is_empty(), "{path}: {:?}", rec.warnings());
+    }
+}
+
+#[test]
+fn a_uniform_scatter_and_a_lattice_are_called_a_scatter() {
+    let rec = reconstruct(&uniform(1000, 7)).unwrap();
+    let found = codes(&rec);
+    assert!(found.contains(&WarningCode::MostUnassigned), "{found:?}");
+    assert!(found.contains(&WarningCode::Scatter), "{found:?}");
+    let grid: Vec<[f64; 2]> = (0..30)
+        .flat_map(|i| (0..30).map(move |j| [i as f64, j as f64]))
+        .collect();
+    let rec = reconstruct(&grid).unwrap();
+    assert!(
+        codes(&rec).contains(&WarningCode::Scatter),
+        "{:?}",
+        rec.warnings()
+    );
+    // In a scatter the edge warnings say nothing more and stay quiet.
+    for rec in [reconstruct(&uniform(1000, 7)).unwrap(), rec] {
+        assert!(codes(&rec).iter().all(|c| matches!(
+            c,
+            WarningCode::MostUnassigned | WarningCode::Scatter | WarningCode::PeelingBudget
+        )));
+    }
+}
+
+#[test]
+fn a_wide_band_of_noise_leaves_most_points_unassigned_and_says_so() {
+    let mut rng = Rng::new(3);
+    let band: Vec<[f64; 2]> = (0..6000)
+        .map(|_| {
+            let t = rng.f64() * TAU;
+            let r = 1.0 + 0.1 * rng.normal();
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect();
+    let rec = reconstruct(&band).unwrap();
+    assert!(2 * rec.unassigned().len() > band.len());
+    let found = codes(&rec);
+    assert_eq!(
+        found.first(),
+        Some(&WarningCode::MostUnassigned),
+        "{found:?}"
+    );
+    let message = &rec.warnings()[0].message;
+    assert!(
+        message.contains(&format!("{} of 6000 points", rec.unassigned().len())),
+        "{message}"
+    );
+}
+
+#[test]
+fn no_curve_at_all_is_said() {
+    // Three points of a triangle: too few for a loop, no chain between them.
+    let points = [[0.0, 0.5], [1.0, 0.33], [2.0, 1.45]];
+    let rec = reconstruct(&points).unwrap();
+    assert!(rec.curves().is_empty(), "{:?}", rec.curves());
+    assert_eq!(codes(&rec), [WarningCode::MostUnassigned]);
+    assert!(rec.warnings()[0].message.starts_with("no curve"));
+    // Fewer than three distinct points: nothing to say.
+    let rec = reconstruct(&[[0.0, 0.0], [1.0, 0.0], [1.0, 0.0]]).unwrap();
+    assert!(rec.warnings().is_empty());
+}
+
+#[test]
+fn two_circles_one_spacing_apart_are_too_close() {
+    let n = 200;
+    let step = TAU / n as f64;
+    let mut points = circle([0.0, 0.0], 1.0, n);
+    points.extend(circle([2.0 + step, 0.0], 1.0, n));
+    let rec = reconstruct(&points).unwrap();
+    let warning = rec
+        .warnings()
+        .iter()
+        .find(|w| w.code == WarningCode::CurvesTooClose)
+        .unwrap_or_else(|| panic!("{:?}", rec.warnings()));
+    // The points named are a pair of Delaunay neighbours from the two sides of the pinch:
+    // within one spacing of each other, near the gap at x = 1.
+    let [i, j] = [warning.points[0] as usize, warning.points[1] as usize];
+    let d = ((points[i][0] - points[j][0]).powi(2) + (points[i][1] - points[j][1]).powi(2)).sqrt();
+    assert!(d <= 1.01 * step, "{d}");
+    assert!((points[i][0] - 1.0).abs() < 4.0 * step, "{:?}", points[i]);
+}
+
+#[test]
+fn a_chord_across_an_open_curve_is_a_long_edge() {
+    // A parabola without the open-curve stage: the water flow closes it by a chord.
+    let parabola: Vec<[f64; 2]> = (-100..100)
+        .map(|k| {
+            let x = k as f64 / 100.0;
+            [x, x * x]
+        })
+        .collect();
+    let flow_only = Options::new().with_open_curves(false);
+    let rec = reconstruct_with(&parabola, &flow_only).unwrap();
+    assert!(
+        rec.curves().iter().any(|c| c.closed),
+        "the flow closes the parabola"
+    );
+    let found = codes(&rec);
+    assert!(
+        found.contains(&WarningCode::LongEdge) || found.contains(&WarningCode::LoopAcrossGap),
+        "{found:?}"
+    );
+    // The default opens it: one chain, nothing to say.
+    let rec = reconstruct(&parabola).unwrap();
+    assert_eq!(rec.curves().len(), 1);
+    assert!(!rec.curves()[0].closed);
+    assert!(rec.warnings().is_empty(), "{:?}", rec.warnings());
+}
+
+#[test]
+fn a_loop_closed_across_a_short_gap_is_named() {
+    // A 355° arc of 300 points: its two ends about 4 steps apart, within the open-curve
+    // stage's chord bound, so the loop stays closed; its closing edge is alone in its length.
+    let n = 300;
+    let arc: Vec<[f64; 2]> = (0..n)
+        .map(|k| {
+            let t = k as f64 / (n - 1) as f64 * 355f64.to_radians();
+            [t.cos(), t.sin()]
+        })
+        .collect();
+    let rec = reconstruct(&arc).unwrap();
+    assert!(
+        rec.curves().len() == 1 && rec.curves()[0].closed,
+        "{:?}",
+        rec.curves()
+    );
+    {
+        let warning = rec
+            .warnings()
+            .iter()
+            .find(|w| w.code == WarningCode::LoopAcrossGap)
+            .unwrap_or_else(|| panic!("{:?}", rec.warnings()));
+        // It names the arc's two ends.
+        let mut ends = warning.points.clone();
+        ends.sort_unstable();
+        assert_eq!(ends, [0, n as u32 - 1]);
+    }
+}
+
+#[test]
+fn a_spent_peeling_budget_is_a_warning() {
+    let rings: Vec<[f64; 2]> = (1..=12)
+        .flat_map(|r| circle([0.0, 0.0], r as f64, 200))
+        .collect();
+    let rec = reconstruct_with(&rings, &Options::new().with_peeling_budget(1)).unwrap();
+    assert!(rec.peeling_budget_exhausted());
+    assert!(
+        codes(&rec).contains(&WarningCode::PeelingBudget),
+        "{:?}",
+        rec.warnings()
+    );
+    let rec = reconstruct_with(&rings, &Options::new().with_peeling_budget(100)).unwrap();
+    assert!(!codes(&rec).contains(&WarningCode::PeelingBudget));
+}
+
+#[test]
+fn warnings_do_not_depend_on_order_or_scale() {
+    let mut rng = Rng::new(11);
+    let n = 200;
+    let step = TAU / n as f64;
+    let mut inputs = vec![uniform(500, 5)];
+    let mut pinch = circle([0.0, 0.0], 1.0, n);
+    pinch.extend(circle([2.0 + step, 0.0], 1.0, n));
+    inputs.push(pinch);
+    for points in inputs {
+        let rec = reconstruct(&points).unwrap();
+        let order = rng.permutation(points.len());
+        let permuted: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
+        let other = reconstruct(&permuted).unwrap();
+        assert_eq!(codes(&rec), codes(&other));
+        for scale in [2f64.powi(-600), 2f64.powi(600)] {
+            let scaled: Vec<[f64; 2]> = points
+                .iter()
+                .map(|p| [p[0] * scale, p[1] * scale])
+                .collect();
+            let other = reconstruct(&scaled).unwrap();
+            assert_eq!(codes(&rec), codes(&other), "scale {scale:e}");
+            let same_points = rec
+                .warnings()
+                .iter()
+                .zip(other.warnings())
+                .all(|(a, b)| a.points == b.points);
+            assert!(same_points);
+        }
+    }
+}
+
+#[test]
+fn codes_are_stable_names() {
+    let names: Vec<&str> = WarningCode::ALL.iter().map(|c| c.name()).collect();
+    assert_eq!(
+        names,
+        [
+            "most-unassigned",
+            "scatter",
+            "long-edge",
+            "loop-across-gap",
+            "curves-too-close",
+            "peeling-budget"
+        ]
+    );
+}

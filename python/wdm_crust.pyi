@@ -88,6 +88,13 @@ class Reconstruction:
     def unassigned(self) -> _IndexArray:
         """(u,) int64: the distinct points on no curve, sorted."""
     @property
+    def duplicates(self) -> _IndexArray:
+        """(k, 2) int64 rows [duplicate, kept], as the triangulation's."""
+    @property
+    def warnings(self) -> List[Tuple[str, str]]:
+        """(code, message) pairs: the signs that the result is probably not what was
+        wanted, as the command line's JSON "warnings"; empty when there is nothing to say."""
+    @property
     def passes(self) -> int:
         """How many passes ran (more than one when peeling found nested curves)."""
     @property

@@ -256,6 +256,27 @@ impl Reconstruction {
         self.unassigned.clone_ref(py)
     }
 
+    /// (k, 2) int64 rows [duplicate, kept]: a point with the same coordinates as an
+    /// earlier one, and that first occurrence (as the triangulation's).
+    #[getter]
+    fn duplicates<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<i64>>> {
+        rows_array(py, index_rows(self.inner.duplicates()))
+    }
+
+    /// list of (code, message): the signs that the result is probably not what was wanted
+    /// (most points on no curve, a scatter rather than curves, an edge far longer than its
+    /// neighbours, a loop closed across a gap, curves closer than the spacing, peeling
+    /// stopped at its budget), each message saying what to try; the same as the command
+    /// line's JSON "warnings", empty when there is nothing to say. Computed on first use.
+    #[getter]
+    fn warnings(&self) -> Vec<(&'static str, String)> {
+        self.inner
+            .warnings()
+            .iter()
+            .map(|w| (w.code.name(), w.message.clone()))
+            .collect()
+    }
+
     /// How many passes ran.
     #[getter]
     fn passes(&self) -> usize {

@@ -57,7 +57,10 @@ def test_reconstruct_matches_the_cli(cli, name, options, flags):
     assert rec.point_count == expected["points"]
     assert rec.edges.dtype == np.int64 and rec.edges.shape == (len(expected["edges"]), 2)
     assert rec.edges.tolist() == expected["edges"]
-    curves = [{"closed": c.closed, "points": c.points.tolist()} for c in rec.curves]
+    curves = [
+        {"closed": c.closed, "points": c.points.tolist(), "coords": c.coords.tolist()}
+        for c in rec.curves
+    ]
     assert curves == expected["curves"]
     vertices, edges = rec.medial_axis
     assert vertices.shape == (len(expected["medial_axis"]["vertices"]), 2)
@@ -66,6 +69,10 @@ def test_reconstruct_matches_the_cli(cli, name, options, flags):
     assert edges.tolist() == expected["medial_axis"]["edges"]
     assert rec.unassigned.dtype == np.int64
     assert rec.unassigned.tolist() == expected["unassigned"]
+    assert rec.duplicates.dtype == np.int64
+    assert rec.duplicates.shape == (len(expected["duplicates"]), 2)
+    assert rec.duplicates.tolist() == expected["duplicates"]
+    assert rec.warnings == [(w["code"], w["message"]) for w in expected["warnings"]]
 
 
 @pytest.mark.parametrize("name", list(SAMPLES))

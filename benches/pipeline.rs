@@ -53,6 +53,16 @@ fn bench_phases(c: &mut Criterion) {
             &points,
             |b, p| b.iter(|| reconstruct_with(p, &closed_only).expect("valid points")),
         );
+        // The warnings on a result (computed on the first call, so on a fresh copy each
+        // time; the copy is the setup, not measured).
+        let rec = wdm_crust::reconstruct(&points).expect("valid points");
+        group.bench_with_input(BenchmarkId::new("warnings", n), &rec, |b, rec| {
+            b.iter_batched(
+                || rec.clone(),
+                |fresh| fresh.warnings().len(),
+                criterion::BatchSize::LargeInput,
+            )
+        });
     }
     group.finish();
 }

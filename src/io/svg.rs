@@ -32,10 +32,10 @@
 //! Large inputs give files that viewers open: a vertex of a curve whose written coordinates
 //! are those of the vertex written before it is left out (never a curve's first or last
 //! vertex), and a dot at the written position of a dot already drawn in its layer is not
-//! drawn again; neither changes a pixel. A path's `d` attribute holds at most
-//! [`MAX_PATH_DATA`] bytes: a longer curve goes on in further `<path>` elements, each from
-//! the last vertex of the one before, so that its stroke is unbroken. Every element ends its
-//! line, so no line but a long title's is longer than that.
+//! drawn again; neither changes a pixel. A path's `d` attribute holds at most 64 KiB: a
+//! longer curve goes on in further `<path>` elements, each from the last vertex of the one
+//! before, so that its stroke is unbroken. Every element ends its line, so no line but a
+//! long title's is longer than that.
 
 mod canvas;
 mod legend;
@@ -412,7 +412,11 @@ fn hundredths(written: &str) -> Option<i64> {
             _ => return None,
         }
     }
-    Some(if written.starts_with('-') { -value } else { value })
+    Some(if written.starts_with('-') {
+        -value
+    } else {
+        value
+    })
 }
 
 /// Writes SVG elements through a reusable text buffer, numbers in pixels with two decimals.
@@ -553,10 +557,7 @@ impl<W: Write> SvgWriter<'_, W> {
                     continue;
                 }
             }
-            let _ = writeln!(
-                self.buf,
-                "<circle cx=\"{x}\" cy=\"{y}\" r=\"{radius}\"/>"
-            );
+            let _ = writeln!(self.buf, "<circle cx=\"{x}\" cy=\"{y}\" r=\"{radius}\"/>");
             self.maybe_flush()?;
         }
         Ok(())

@@ -6,8 +6,8 @@ use std::io::{self, Write};
 
 use super::canvas::MARGIN_PX;
 use super::{
-    escape_into, Dots, Style, SvgOptions, SvgWriter, CLOSED, DELAUNAY, INNER, MEDIAL, OPEN, OUTER, POINT,
-    UNASSIGNED, VORONOI,
+    escape_into, Dots, Style, SvgOptions, SvgWriter, CLOSED, DELAUNAY, INNER, MEDIAL, OPEN, OUTER,
+    POINT, UNASSIGNED, VORONOI,
 };
 use crate::reconstruct::{Algorithm, Label, MedialAxisMode};
 use crate::Reconstruction;

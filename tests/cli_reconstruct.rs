@@ -406,6 +406,30 @@ fn svg_by_output_extension_and_underlays() {
 }
 
 #[test]
+fn no_points_draws_the_curves_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "bean.txt", points_text(&bean()).as_bytes());
+    let plain = run_in(d, &["reconstruct", "bean.txt", "--format", "svg"], b"");
+    let bare = run_in(
+        d,
+        &["reconstruct", "bean.txt", "--format", "svg", "--no-points"],
+        b"",
+    );
+    assert_eq!((plain.code, bare.code), (0, 0), "{}", bare.stderr);
+    check_balanced(&bare.stdout);
+    assert!(!bare.stdout.contains("<circle"), "a dot drawn");
+    assert!(bare.stdout.contains(" points (not drawn)</text>"));
+    // Everything else as without it.
+    let curves = |svg: &str| {
+        let start = svg.find("<g id=\"closed-curves\"").expect("the curves");
+        svg[start..start + svg[start..].find("</g>").unwrap()].to_string()
+    };
+    assert_eq!(curves(&bare.stdout), curves(&plain.stdout));
+    assert_eq!(view_box(&bare.stdout), view_box(&plain.stdout));
+}
+
+#[test]
 fn standard_input_output_file_and_timings() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
@@ -619,6 +643,8 @@ fn usage_errors_are_one_line_with_exit_2() {
             "-o",
             "out.json",
         ],
+        &["reconstruct", "in.txt", "--no-points"],
+        &["reconstruct", "in.txt", "--no-points", "-o", "out.geojson"],
         &["reconstruct", "a", "b"],
         &["reconstruct", "--peeling"],
     ] {
@@ -656,6 +682,7 @@ fn help_documents_the_formats() {
         "--show",
         "--y-down",
         "image coordinates",
+        "--no-points",
         "\"medial_axis\"",
         "Text output: one reconstructed edge",
         "SVG output",

@@ -24,6 +24,7 @@ Examples:
   wdm-crust reconstruct points.txt --format svg -o picture.svg
   wdm-crust reconstruct points.txt -o picture.svg --show delaunay,labels
   wdm-crust reconstruct scan-pixels.txt -o picture.svg --y-down
+  wdm-crust reconstruct big-scan.txt -o curves.svg --no-points
   wdm-crust reconstruct points.txt --algorithm nn-crust --format text
   wdm-crust reconstruct points.txt -o shapes.geojson
   wdm-crust reconstruct big-scan.txt --medial-axis none -o curves.json
@@ -55,8 +56,13 @@ read back exactly.
 SVG output: the points, the curves (closed red, open purple), the medial axis (green), the
 unassigned points (grey rings) and a legend, y axis up (--y-down: down, for image
 coordinates); --show adds faint underlays. The picture is in pixels whatever the data's
-units, so it renders at any extent. Without --format, an OUTPUT ending in .svg gets SVG,
-one ending in .geojson GeoJSON, and anything else JSON.";
+units, so it renders at any extent. Line widths and dots follow the samples' spacing;
+samples under 2.4 px apart get no dots (the legend says so), and --no-points leaves out
+every point, dots and rings. A curve vertex at the position (to 1/100 px) of the one
+before it and a dot on a dot already drawn are left out, and long curves are split into
+paths of at most 64 KiB, so that a million points make a file of a few megabytes that
+viewers open. Without --format, an OUTPUT ending in .svg gets SVG, one ending in .geojson
+GeoJSON, and anything else JSON.";
 
 /// Output formats of `reconstruct`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -183,6 +189,13 @@ pub struct ReconstructArgs {
     /// stay the input's).
     #[arg(long)]
     y_down: bool,
+
+    /// SVG: leave out the input points, the dots and the unassigned points' rings alike, so
+    /// that only the curves and the medial axis are drawn; the legend still counts them.
+    /// Without it, samples under 2.4 px apart get no dots either, but the unassigned points
+    /// keep their rings.
+    #[arg(long)]
+    no_points: bool,
 }
 
 impl ReconstructArgs {
@@ -208,6 +221,11 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
     if !args.show.is_empty() && format != ReconstructFormat::Svg {
         return Err(CliError::bad_input(
             "--show draws underlays in a picture: it needs --format svg (or an OUTPUT ending in .svg); see 'wdm-crust reconstruct --help'",
+        ));
+    }
+    if args.no_points && format != ReconstructFormat::Svg {
+        return Err(CliError::bad_input(
+            "--no-points leaves the points out of a picture: it needs --format svg (or an OUTPUT ending in .svg); see 'wdm-crust reconstruct --help'",
         ));
     }
     let mut timings = Timings::new(args.timings);
@@ -276,6 +294,7 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
     svg.voronoi = args.show.contains(&Layer::Voronoi);
     svg.labels = args.show.contains(&Layer::Labels);
     svg.y_down = args.y_down;
+    svg.points = !args.no_points;
     let what = || {
         format!(
             "{}, {}, {}",

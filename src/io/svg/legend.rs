@@ -6,8 +6,8 @@ use std::io::{self, Write};
 
 use super::canvas::MARGIN_PX;
 use super::{
-    escape_into, Style, SvgOptions, SvgWriter, CLOSED, DELAUNAY, INNER, MEDIAL, OPEN, OUTER, POINT,
-    UNASSIGNED, VORONOI,
+    escape_into, Dots, Style, SvgOptions, SvgWriter, CLOSED, DELAUNAY, INNER, MEDIAL, OPEN, OUTER,
+    POINT, UNASSIGNED, VORONOI,
 };
 use crate::reconstruct::{Algorithm, Label, MedialAxisMode};
 use crate::Reconstruction;
@@ -95,12 +95,19 @@ pub(super) fn legend_items(rec: &Reconstruction, options: &SvgOptions, style: &S
     let open = rec.curves().len() - closed;
     let plural =
         |k: usize, one: &str, many: &str| format!("{k} {}", if k == 1 { one } else { many });
-    let mut items = vec![(
-        Swatch::Dot(POINT, style.point_radius.max(2.0)),
-        plural(n, "point", "points"),
-    )];
+    let points = plural(n, "point", "points");
+    let mut items = vec![match style.dots {
+        Dots::Drawn => (Swatch::Dot(POINT, style.point_radius.max(2.0)), points),
+        Dots::TooDense => (Swatch::Note, format!("{points} (too dense for dots)")),
+        Dots::Off => (Swatch::Note, format!("{points} (not drawn)")),
+    }];
     if unassigned > 0 {
-        items.push((Swatch::Ring(UNASSIGNED), format!("{unassigned} unassigned")));
+        items.push(match style.dots {
+            Dots::Drawn | Dots::TooDense => {
+                (Swatch::Ring(UNASSIGNED), format!("{unassigned} unassigned"))
+            }
+            Dots::Off => (Swatch::Note, format!("{unassigned} unassigned (not drawn)")),
+        });
     }
     if closed > 0 || open == 0 {
         items.push((

@@ -464,3 +464,357 @@ fn numbers_are_pixels_to_the_hundredth_without_negative_zero() {
     w.nums(&[1.0, -0.001, 2.346, -3.5]);
     assert_eq!(w.buf, "1.00 0.00 2.35 -3.50");
 }
+
+/// What `f` writes through an [`SvgWriter`].
+fn written(f: impl FnOnce(&mut SvgWriter<'_, Vec<u8>>) -> io::Result<()>) -> String {
+    let mut out = Vec::new();
+    let mut w = SvgWriter {
+        out: &mut out,
+        buf: String::new(),
+    };
+    f(&mut w).unwrap();
+    w.flush().unwrap();
+    String::from_utf8(out).unwrap()
+}
+
+/// Well-formed XML as this writer makes it: one root element; every tag a name and
+/// `name="value"` attributes, closed by `/>` or by its end tag, properly nested; no `<` in a
+/// value, no `&` but the four entities it writes, nothing but white space outside the root.
+fn assert_well_formed(svg: &str) {
+    let entities_ok = |text: &str| {
+        text.match_indices('&').all(|(i, _)| {
+            ["&amp;", "&lt;", "&gt;", "&quot;"]
+                .iter()
+                .any(|e| text[i..].starts_with(e))
+        })
+    };
+    let name_ok = |name: &str| {
+        !name.is_empty()
+            && name
+                .bytes()
+                .all(|b| b.is_ascii_alphanumeric() || b == b'-' || b == b':')
+    };
+    let mut stack: Vec<&str> = Vec::new();
+    let mut roots = 0;
+    let mut rest = svg;
+    while let Some(open) = rest.find('<') {
+        let text = &rest[..open];
+        assert!(entities_ok(text) && !text.contains('>'), "text {text:?}");
+        assert!(
+            !stack.is_empty() || text.trim().is_empty(),
+            "text outside the root"
+        );
+        let close = rest[open..].find('>').expect("unterminated tag") + open;
+        let tag = &rest[open + 1..close];
+        if let Some(name) = tag.strip_prefix('/') {
+            assert_eq!(stack.pop(), Some(name), "mismatched </{name}>");
+        } else {
+            let empty = tag.ends_with('/');
+            let body = tag.trim_end_matches('/');
+            let name_end = body.find(' ').unwrap_or(body.len());
+            let name = &body[..name_end];
+            assert!(name_ok(name), "tag name {name:?}");
+            let mut attributes = &body[name_end..];
+            while !attributes.is_empty() {
+                let a = attributes
+                    .strip_prefix(' ')
+                    .expect("a space before an attribute");
+                let eq = a.find("=\"").expect("name=\"value\"");
+                assert!(name_ok(&a[..eq]), "attribute name {:?}", &a[..eq]);
+                let value_end = a[eq + 2..].find('"').expect("an unterminated value") + eq + 2;
+                let value = &a[eq + 2..value_end];
+                assert!(
+                    !value.contains('<') && entities_ok(value),
+                    "value {value:?}"
+                );
+                attributes = &a[value_end + 1..];
+            }
+            if stack.is_empty() {
+                roots += 1;
+            }
+            if !empty {
+                stack.push(name);
+            }
+        }
+        rest = &rest[close + 1..];
+    }
+    assert!(stack.is_empty(), "unclosed {stack:?}");
+    assert!(rest.trim().is_empty(), "text after the root");
+    assert_eq!(roots, 1, "one root element");
+}
+
+/// The `d` attributes of the paths in the group `id`.
+fn group_paths<'a>(svg: &'a str, id: &str) -> Vec<&'a str> {
+    let Some(start) = svg.find(&format!("<g id=\"{id}\"")) else {
+        return Vec::new();
+    };
+    attributes(&svg[start..start + svg[start..].find("</g>").unwrap()], "d")
+}
+
+/// The vertices of a path's data `M x y L x y ... [Z]`, as written, and whether it ends in `Z`.
+fn path_vertices(d: &str) -> (Vec<&str>, bool) {
+    let closed = d.ends_with('Z');
+    let d = d.strip_prefix('M').unwrap().trim_end_matches('Z');
+    (d.split('L').collect(), closed)
+}
+
+/// `n` samples of a star-shaped closed curve in scrambled order, jittered along it by half
+/// their spacing and across it by a tenth.
+fn noisy_star(n: usize) -> Vec<[f64; 2]> {
+    let mut state = 0x2545_f491_4f6c_dd1d_u64;
+    let mut uniform = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let spacing = std::f64::consts::TAU / n as f64;
+    let mut points: Vec<[f64; 2]> = (0..n)
+        .map(|i| {
+            let t = (i as f64 + 0.5 * uniform()) * spacing;
+            let r = 1.0 + 0.3 * (5.0 * t).cos() + 0.1 * spacing * (uniform() - 0.5);
+            [r * t.cos(), 0.7 * r * t.sin()]
+        })
+        .collect();
+    for i in (1..n).rev() {
+        points.swap(i, (uniform() * (i + 1) as f64) as usize);
+    }
+    points
+}
+
+/// `n` points of the star `r = 1 + 0.2 cos 3t`, in the order `k · 11 mod n` (`n` not a
+/// multiple of 11).
+fn star(n: usize) -> Vec<[f64; 2]> {
+    (0..n)
+        .map(|k| {
+            let t = (k * 11 % n) as f64 * std::f64::consts::TAU / n as f64;
+            let r = 1.0 + 0.2 * (3.0 * t).cos();
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect()
+}
+
+#[test]
+fn a_vertex_on_the_pixel_of_the_one_before_is_left_out_but_the_ends_stay() {
+    // Positions written as 0.00 0.00 (twice more, -0.00 included), 5.00 5.00 (three times).
+    let run = [
+        [0.0, 0.0],
+        [0.001, -0.004],
+        [-0.004, 0.002],
+        [5.0, 5.0],
+        [5.001, 4.996],
+        [5.002, 5.004],
+    ];
+    let open = written(|w| w.polyline(run.into_iter(), false));
+    assert_eq!(open, "<path d=\"M0.00 0.00L5.00 5.00L5.00 5.00\"/>\n");
+    let closed = written(|w| w.polyline(run.into_iter(), true));
+    assert_eq!(closed, "<path d=\"M0.00 0.00L5.00 5.00L5.00 5.00Z\"/>\n");
+    // A curve on one pixel keeps its two ends (a dot of the stroke's width), closed or not.
+    let one_pixel = [[1.0, 1.0], [1.004, 1.0], [0.996, 1.002], [1.0, 0.999]];
+    let dot = written(|w| w.polyline(one_pixel.into_iter(), true));
+    assert_eq!(dot, "<path d=\"M1.00 1.00L1.00 1.00Z\"/>\n");
+    // Only a repeat of the vertex just before is dropped: going back to a pixel is a line.
+    let back = written(|w| w.polyline([[0.0, 0.0], [1.0, 0.0], [0.0, 0.0]].into_iter(), false));
+    assert_eq!(back, "<path d=\"M0.00 0.00L1.00 0.00L0.00 0.00\"/>\n");
+    assert_eq!(written(|w| w.polyline([].into_iter(), true)), "");
+}
+
+#[test]
+fn a_long_curve_is_split_into_paths_that_continue_one_another() {
+    // 20,000 distinct vertices, about 14 bytes each: some five pieces.
+    let vertices: Vec<[f64; 2]> = (0..20_000)
+        .map(|i| [0.01 * i as f64, 100.0 + (i % 7) as f64])
+        .collect();
+    for closed in [false, true] {
+        let text = written(|w| w.polyline(vertices.iter().copied(), closed));
+        let d = attributes(&text, "d");
+        assert!(d.len() >= 4, "{} pieces", d.len());
+        assert_eq!(text.lines().count(), d.len(), "one path per line");
+        let mut all: Vec<&str> = Vec::new();
+        for (k, piece) in d.iter().enumerate() {
+            assert!(piece.len() <= MAX_PATH_DATA, "{} bytes", piece.len());
+            let (v, z) = path_vertices(piece);
+            assert!(!z, "a split curve closes with a line to its start");
+            if k > 0 {
+                assert_eq!(v[0], *all.last().unwrap(), "piece {k} starts elsewhere");
+                all.extend(&v[1..]);
+            } else {
+                all.extend(&v);
+            }
+        }
+        let mut expected: Vec<String> = vertices
+            .iter()
+            .map(|&p| {
+                let mut s = String::new();
+                push_position(&mut s, p);
+                s
+            })
+            .collect();
+        if closed {
+            expected.push(expected[0].clone());
+        }
+        assert_eq!(all, expected);
+    }
+    // A curve that fits is one path, closed by `Z`.
+    let short = written(|w| w.polyline(vertices[..100].iter().copied(), true));
+    assert_eq!(attributes(&short, "d").len(), 1);
+    assert!(short.ends_with("Z\"/>\n"));
+}
+
+#[test]
+fn a_dot_on_a_dot_already_drawn_is_left_out() {
+    let positions = [
+        [1.0, 1.0],
+        [1.006, 1.0],
+        [1.004, 0.999],
+        [-0.001, 2.0],
+        [1.01, 1.0],
+        [0.0, 2.0],
+    ];
+    let text = written(|w| w.dots(positions.into_iter(), 2.0));
+    assert_eq!(
+        text,
+        "<circle cx=\"1.00\" cy=\"1.00\" r=\"2.00\"/>\n\
+         <circle cx=\"1.01\" cy=\"1.00\" r=\"2.00\"/>\n\
+         <circle cx=\"0.00\" cy=\"2.00\" r=\"2.00\"/>\n"
+    );
+    assert_eq!(hundredths("-12.34"), Some(-1234));
+    assert_eq!(hundredths("0.05"), Some(5));
+    assert_eq!(hundredths(&format!("{:.2}", 1e300)), None);
+}
+
+#[test]
+fn a_large_picture_is_split_deduplicated_and_well_formed() {
+    let points = noisy_star(200_000);
+    let rec = crate::reconstruct(&points).unwrap();
+    assert_eq!(rec.curves().len(), 1, "one curve");
+    assert!(rec.curves()[0].closed);
+    let svg = svg_with(&rec, &SvgOptions::default());
+    assert_well_formed(&svg);
+    // No data longer than the bound, no line longer than a path element around it.
+    for d in attributes(&svg, "d") {
+        assert!(d.len() <= MAX_PATH_DATA, "a d of {} bytes", d.len());
+    }
+    let longest = svg.lines().map(str::len).max().unwrap();
+    assert!(longest <= MAX_PATH_DATA + 12, "a line of {longest} bytes");
+    // The curve's pieces, joined, are its points' written positions with every repeat of
+    // the position before left out, and a line back to the start.
+    let pieces = group_paths(&svg, "closed-curves");
+    assert!(pieces.len() > 10, "{} pieces", pieces.len());
+    let mut drawn: Vec<&str> = Vec::new();
+    for piece in &pieces {
+        let (v, z) = path_vertices(piece);
+        assert!(!z);
+        if let Some(&last) = drawn.last() {
+            assert_eq!(v[0], last, "a piece starts where the one before ends");
+            drawn.extend(&v[1..]);
+        } else {
+            drawn.extend(&v);
+        }
+    }
+    let canvas = Canvas::new(&points, false);
+    let curve = &rec.curves()[0].points;
+    let mut expected: Vec<String> = Vec::new();
+    for (k, &i) in curve.iter().enumerate() {
+        let mut s = String::new();
+        push_position(&mut s, canvas.to_px(points[i as usize]));
+        if k + 1 == curve.len() || expected.last() != Some(&s) {
+            expected.push(s);
+        }
+    }
+    expected.push(expected[0].clone());
+    assert_eq!(drawn, expected);
+    assert!(
+        drawn.len() < curve.len(),
+        "{} vertices of {} points: none on a pixel already drawn",
+        drawn.len(),
+        curve.len()
+    );
+    // Far too dense for dots: the legend says so, and the file is small.
+    assert!(!svg.contains("<g id=\"points\""));
+    assert!(svg.contains(">200000 points (too dense for dots)</text>"));
+    assert!(svg.len() < 4 << 20, "{} bytes", svg.len());
+}
+
+#[test]
+fn no_points_leaves_out_the_dots_and_the_rings() {
+    let mut points = circle(24, 1.0, [0.0, 0.0]);
+    points.push([0.0, 0.0]);
+    let rec = crate::reconstruct(&points).unwrap();
+    assert_eq!(rec.unassigned(), [24]);
+    let options = SvgOptions {
+        points: false,
+        ..SvgOptions::default()
+    };
+    let svg = svg_with(&rec, &options);
+    assert_well_formed(&svg);
+    assert!(!svg.contains("<circle"), "a dot or a ring drawn");
+    assert!(!svg.contains("<g id=\"points\"") && !svg.contains("<g id=\"unassigned-points\""));
+    assert!(svg.contains("<g id=\"closed-curves\""));
+    assert!(svg.contains(">25 points (not drawn)</text>"));
+    assert!(svg.contains(">1 unassigned (not drawn)</text>"));
+    // The same picture but for the points.
+    let with_points = svg_with(&rec, &SvgOptions::default());
+    assert_eq!(
+        group_paths(&svg, "closed-curves"),
+        group_paths(&with_points, "closed-curves")
+    );
+    assert_eq!(circles(&with_points, "unassigned-points").len(), 1);
+}
+
+#[test]
+fn dots_shrink_with_density_and_give_way_to_dense_curves() {
+    let mut previous = f64::INFINITY;
+    // Samples some 190, 23, 5.7 and 3.2 px apart.
+    for n in [12, 100, 400, 701] {
+        let points = star(n);
+        let svg = svg_of(&points, &SvgOptions::default());
+        assert_renderable(&svg, &points, false);
+        let start = svg.find("<g id=\"points\"").expect("dots");
+        let group = &svg[start..start + svg[start..].find("</g>").unwrap()];
+        let radii: Vec<f64> = attributes(group, "r")
+            .iter()
+            .map(|r| r.parse().unwrap())
+            .collect();
+        assert_eq!(radii.len(), n);
+        let r = radii[0];
+        assert!(radii.iter().all(|&q| q == r));
+        assert!(r <= previous, "{n} points: radius {r} after {previous}");
+        previous = r;
+        // The dots leave most of the curve between them in sight.
+        let (ring, _) = path_vertices(group_paths(&svg, "closed-curves")[0]);
+        let ring: Vec<[f64; 2]> = ring
+            .iter()
+            .map(|v| {
+                let (x, y) = v.split_once(' ').unwrap();
+                [x.parse().unwrap(), y.parse().unwrap()]
+            })
+            .collect();
+        let mut gaps: Vec<f64> = ring
+            .windows(2)
+            .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
+            .collect();
+        gaps.sort_by(f64::total_cmp);
+        let spacing = gaps[gaps.len() / 2];
+        assert!(
+            2.0 * r <= 0.6 * spacing + 0.02,
+            "{n}: radius {r}, spacing {spacing}"
+        );
+    }
+    assert!(previous < 0.9, "the densest dots are {previous} px");
+    // Samples 0.75 px apart: no dots, a note, and the unassigned centre as a hollow ring.
+    let mut points = star(3001);
+    points.push([0.0, 0.0]);
+    let rec = crate::reconstruct(&points).unwrap();
+    assert!(rec.unassigned().contains(&3001), "{:?}", rec.unassigned());
+    let svg = svg_with(&rec, &SvgOptions::default());
+    assert_balanced(&svg);
+    assert!(!svg.contains("<g id=\"points\""));
+    assert!(svg.contains(">3002 points (too dense for dots)</text>"));
+    assert!(svg.contains("<g id=\"closed-curves\""));
+    assert!(svg.contains("<g id=\"unassigned-points\" fill=\"none\""));
+    assert_eq!(
+        circles(&svg, "unassigned-points").len(),
+        rec.unassigned().len()
+    );
+}

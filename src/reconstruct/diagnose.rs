@@ -24,9 +24,11 @@ use std::cmp::Ordering;
 use std::fmt;
 
 use super::lengths::distance;
-use super::proximity::{closer, DelaunayGraph};
+use super::proximity::closer;
 use super::result::Reconstruction;
+use crate::delaunay::{prev_in_triangle, NO_TWIN};
 use crate::kernel::metric::{length_order, scaled_length_order};
+use crate::predicates::{incircle, CirclePosition};
 
 /// An edge is *long* when it is more than `2^LONG_EDGE_DOUBLINGS` times each of the (up to
 /// four) curve edges within two steps of it. The open-curve stage already opens a loop at such a chord, and its
@@ -124,7 +126,7 @@ pub(super) fn warnings(rec: &Reconstruction) -> Vec<Warning> {
         return found;
     }
     let view = CurveView::new(rec);
-    let graph = DelaunayGraph::of(tri);
+    let survey = Survey::of(rec, &view);
     let unassigned = rec.unassigned.len();
     if view.curve_points == 0 {
         found.push(Warning {
@@ -149,13 +151,13 @@ pub(super) fn warnings(rec: &Reconstruction) -> Vec<Warning> {
     }
     // In a scatter every curve is one path among many: its edges and near misses say
     // nothing more.
-    if let Some(w) = scatter(rec, &view, &graph, unassigned, distinct) {
+    if let Some(w) = scatter(&view, &survey, unassigned, distinct) {
         found.push(w);
         found.sort_by_key(|w| WarningCode::ALL.iter().position(|&c| c == w.code));
         return found;
     }
-    found.extend(edge_warnings(rec, &view, &graph));
-    if let Some(w) = curves_too_close(rec, &view, &graph) {
+    found.extend(edge_warnings(rec, &view, &survey));
+    if let Some(w) = curves_too_close(rec, &survey) {
         found.push(w);
     }
     found.sort_by_key(|w| WarningCode::ALL.iter().position(|&c| c == w.code));
@@ -209,10 +211,6 @@ impl CurveView {
         }
     }
 
-    fn on_curve(&self, p: u32) -> bool {
-        self.place[p as usize].0 != NO_CURVE
-    }
-
     /// The curve neighbours of `p` (at most two: the curves are 1-manifold by default; at a
     /// junction of a baseline, those of one of its curves).
     fn neighbours(&self, p: u32) -> impl Iterator<Item = u32> + '_ {
@@ -256,21 +254,99 @@ impl CurveView {
     }
 }
 
-/// `p`'s nearest Delaunay neighbour (exact; ties by coordinates).
-fn nearest(points: &[[f64; 2]], graph: &DelaunayGraph, p: u32) -> Option<u32> {
-    let at = |i: u32| points[i as usize];
-    graph
-        .neighbours(p)
-        .iter()
-        .copied()
-        .min_by(|&a, &b| closer(at(p), at(a), at(b)))
+/// What one pass over the Delaunay edges finds, for the warnings that compare a curve
+/// point with the points around it. An edge is looked at from both ends; the diagonals of
+/// cocircular groups are left out where they matter (the triangulation's split of such a
+/// group is arbitrary, and no warning may depend on it).
+struct Survey {
+    /// Curve points with a Delaunay neighbour, not a curve neighbour, as close as their
+    /// longer curve edge.
+    crowded: usize,
+    /// For each open chain's end, its nearest Delaunay neighbour (`NO_CURVE` elsewhere).
+    nearest_of_end: Vec<u32>,
+    /// Pairs of curve points closer than both their longer curve edges, on different curves
+    /// or far apart along one, and the smallest such pair in caller indices.
+    close_pairs: usize,
+    first_close: Option<[u32; 2]>,
 }
 
-/// `p`'s longer curve edge's other end.
-fn longer_step(points: &[[f64; 2]], view: &CurveView, p: u32) -> Option<u32> {
-    let at = |i: u32| points[i as usize];
-    view.neighbours(p)
-        .max_by(|&a, &b| closer(at(p), at(a), at(b)))
+impl Survey {
+    fn of(rec: &Reconstruction, view: &CurveView) -> Survey {
+        let tri = &rec.triangulation;
+        let points = &tri.points;
+        let at = |i: u32| points[i as usize];
+        let n = points.len();
+        // Each curve point's longer curve edge, by its far end.
+        let mut far = vec![NO_CURVE; n];
+        let mut nearest_of_end = vec![NO_CURVE; n];
+        let mut end = vec![false; n];
+        for (curve, closed) in &view.curves {
+            for &p in curve {
+                far[p as usize] = view
+                    .neighbours(p)
+                    .max_by(|&a, &b| closer(at(p), at(a), at(b)))
+                    .unwrap_or(NO_CURVE);
+            }
+            if !closed {
+                if let (Some(&first), Some(&last)) = (curve.first(), curve.last()) {
+                    end[first as usize] = true;
+                    end[last as usize] = true;
+                }
+            }
+        }
+        let mut crowded = vec![false; n];
+        let (mut close_pairs, mut first_close) = (0usize, None::<[u32; 2]>);
+        let halfedges = tri.halfedges();
+        for (e, &twin) in halfedges.iter().enumerate() {
+            if twin != NO_TWIN && (twin as usize) < e {
+                continue;
+            }
+            let (a, b) = (tri.org(e), tri.dest(e));
+            for (p, q) in [(a, b), (b, a)] {
+                if end[p as usize] {
+                    let best = &mut nearest_of_end[p as usize];
+                    if *best == NO_CURVE || closer(at(p), at(q), at(*best)) == Ordering::Less {
+                        *best = q;
+                    }
+                }
+            }
+            // Within the longer curve edge of `p`.
+            let within = |p: u32| {
+                let f = far[p as usize];
+                f != NO_CURVE && length_order(at(a), at(b), at(p), at(f)) != Ordering::Greater
+            };
+            let (a_within, b_within) = (within(a), within(b));
+            if !(a_within || b_within) || view.neighbours(a).any(|x| x == b) {
+                continue;
+            }
+            if twin != NO_TWIN {
+                let c = tri.org(prev_in_triangle(e));
+                let d = tri.org(prev_in_triangle(twin as usize));
+                if incircle(at(a), at(b), at(c), at(d)) == CirclePosition::On {
+                    continue;
+                }
+            }
+            crowded[a as usize] |= a_within;
+            crowded[b as usize] |= b_within;
+            let far_apart = view
+                .steps_apart(a, b)
+                .is_none_or(|steps| steps > CLOSE_CURVE_STEPS);
+            if a_within && b_within && far_apart {
+                close_pairs += 1;
+                let (i, j) = (tri.input_index(a), tri.input_index(b));
+                let named = [i.min(j), i.max(j)];
+                if first_close.is_none_or(|f| named < f) {
+                    first_close = Some(named);
+                }
+            }
+        }
+        Survey {
+            crowded: crowded.iter().filter(|&&c| c).count(),
+            nearest_of_end,
+            close_pairs,
+            first_close,
+        }
+    }
 }
 
 /// `scatter`: most curve points have another point that is not their curve neighbour as
@@ -278,37 +354,22 @@ fn longer_step(points: &[[f64; 2]], view: &CurveView, p: u32) -> Option<u32> {
 /// curve sample's points have their curve neighbours nearest; in a scatter, a lattice or a
 /// band of noise the curves drawn are one path among many equally short.
 fn scatter(
-    rec: &Reconstruction,
     view: &CurveView,
-    graph: &DelaunayGraph,
+    survey: &Survey,
     unassigned: usize,
     distinct: usize,
 ) -> Option<Warning> {
-    if 3 * unassigned <= distinct {
+    if 3 * unassigned <= distinct || 2 * survey.crowded <= view.curve_points {
         return None;
     }
-    let points = &rec.triangulation.points;
-    let at = |i: u32| points[i as usize];
-    let crowded = (0..points.len() as u32)
-        .filter(|&p| view.on_curve(p))
-        .filter(|&p| {
-            let Some(far) = longer_step(points, view, p) else {
-                return false;
-            };
-            graph.neighbours(p).iter().any(|&q| {
-                !view.neighbours(p).any(|n| n == q)
-                    && length_order(at(p), at(q), at(p), at(far)) != Ordering::Greater
-            })
-        })
-        .count();
-    (2 * crowded > view.curve_points).then(|| Warning {
+    Some(Warning {
         code: WarningCode::Scatter,
         message: format!(
             "the points look like a scatter, a filled area or a band of noise wider than the \
              spacing rather than samples along curves: {} of the {} curve points have another \
              point as close as their curve neighbours, and {} of all points are on no curve; \
              the curves drawn are one path among many (thin the points, or sample the outline only)",
-            percent(crowded, view.curve_points),
+            percent(survey.crowded, view.curve_points),
             view.curve_points,
             percent(unassigned, distinct)
         ),
@@ -318,7 +379,7 @@ fn scatter(
 
 /// `long-edge` and `loop-across-gap`: curve edges far longer than the curve edges near
 /// them.
-fn edge_warnings(rec: &Reconstruction, view: &CurveView, graph: &DelaunayGraph) -> Vec<Warning> {
+fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec<Warning> {
     let tri = &rec.triangulation;
     let points = &tri.points;
     let at = |i: u32| points[i as usize];
@@ -351,11 +412,15 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, graph: &DelaunayGraph) 
                     }
                 }
             }
+            let nearest = |p: u32| match survey.nearest_of_end[p as usize] {
+                NO_CURVE => None,
+                q => Some([p, q]),
+            };
             if !closed && k == 0 {
-                beside.extend(nearest(points, graph, ab[0]).map(|q| [ab[0], q]));
+                beside.extend(nearest(ab[0]));
             }
             if !closed && k + 1 == edges {
-                beside.extend(nearest(points, graph, ab[1]).map(|q| [ab[1], q]));
+                beside.extend(nearest(ab[1]));
             }
             if beside.is_empty() || !beside.iter().all(|&f| longer(ab, f, LONG_EDGE_DOUBLINGS)) {
                 continue;
@@ -437,58 +502,17 @@ fn note(worst: &mut (usize, f64, [u32; 2]), ratio: f64, ends: [u32; 2]) {
 
 /// `curves-too-close`: Delaunay neighbours on curves, not neighbours along them, as close as
 /// both their longer curve edges, on different curves or far apart along one.
-fn curves_too_close(
-    rec: &Reconstruction,
-    view: &CurveView,
-    graph: &DelaunayGraph,
-) -> Option<Warning> {
+fn curves_too_close(rec: &Reconstruction, survey: &Survey) -> Option<Warning> {
     let tri = &rec.triangulation;
-    let points = &tri.points;
-    let at = |i: u32| points[i as usize];
-    let mut pairs = 0usize;
-    let mut first: Option<[u32; 2]> = None;
-    for p in 0..points.len() as u32 {
-        if !view.on_curve(p) {
-            continue;
-        }
-        let Some(p_far) = longer_step(points, view, p) else {
-            continue;
-        };
-        for &q in graph.neighbours(p) {
-            if q < p || !view.on_curve(q) || view.neighbours(p).any(|n| n == q) {
-                continue;
-            }
-            let Some(q_far) = longer_step(points, view, q) else {
-                continue;
-            };
-            let within =
-                |r: u32, far: u32| length_order(at(p), at(q), at(r), at(far)) != Ordering::Greater;
-            if !(within(p, p_far) && within(q, q_far)) {
-                continue;
-            }
-            if view
-                .steps_apart(p, q)
-                .is_some_and(|steps| steps <= CLOSE_CURVE_STEPS)
-            {
-                continue;
-            }
-            pairs += 1;
-            let named = [tri.input_index(p), tri.input_index(q)];
-            let named = [named[0].min(named[1]), named[0].max(named[1])];
-            if first.is_none_or(|f| named < f) {
-                first = Some(named);
-            }
-        }
-    }
-    let [i, j] = first?;
+    let [i, j] = survey.first_close?;
     Some(Warning {
         code: WarningCode::CurvesTooClose,
         message: format!(
             "curves pass within the sample spacing of each other at {} (e.g. points {i} and {j} \
              at {}): the samples cannot tell them apart there, so they may be merged or split \
              wrongly; sample more densely where curves nearly touch",
-            count(pairs, "place", "places"),
-            position(at(tri.local_index(i)))
+            count(survey.close_pairs, "place", "places"),
+            position(tri.points[tri.local_index(i) as usize])
         ),
         points: vec![i, j],
     })

@@ -310,13 +310,18 @@ impl Survey {
                     }
                 }
             }
+            // A curve edge is no crowding neighbour (and comparing it with itself would
+            // take the exact stages every time).
+            if view.neighbours(a).any(|x| x == b) {
+                continue;
+            }
             // Within the longer curve edge of `p`.
             let within = |p: u32| {
                 let f = far[p as usize];
                 f != NO_CURVE && length_order(at(a), at(b), at(p), at(f)) != Ordering::Greater
             };
             let (a_within, b_within) = (within(a), within(b));
-            if !(a_within || b_within) || view.neighbours(a).any(|x| x == b) {
+            if !(a_within || b_within) {
                 continue;
             }
             if twin != NO_TWIN {
@@ -402,26 +407,34 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
             let ab = edge(k);
             // Up to two curve edges on each side; at a chain's end, the end's
             // nearest-neighbour pair stands for the missing side.
-            let mut beside: Vec<[u32; 2]> = Vec::with_capacity(4);
-            for side in [-1i64, -2, 1, 2] {
-                let j = k as i64 + side;
-                if closed || (0..edges as i64).contains(&j) {
-                    let j = j.rem_euclid(n as i64) as usize;
-                    if j != k {
-                        beside.push(edge(j));
-                    }
-                }
-            }
             let nearest = |p: u32| match survey.nearest_of_end[p as usize] {
                 NO_CURVE => None,
                 q => Some([p, q]),
             };
-            if !closed && k == 0 {
-                beside.extend(nearest(ab[0]));
+            let along = |side: i64| {
+                let j = k as i64 + side;
+                (closed || (0..edges as i64).contains(&j))
+                    .then(|| j.rem_euclid(n as i64) as usize)
+                    .filter(|&j| j != k)
+                    .map(edge)
+            };
+            let candidates = [
+                along(-2),
+                along(-1),
+                along(1),
+                along(2),
+                (!closed && k == 0).then(|| nearest(ab[0])).flatten(),
+                (!closed && k + 1 == edges)
+                    .then(|| nearest(ab[1]))
+                    .flatten(),
+            ];
+            let mut beside = [[0u32; 2]; 6];
+            let mut sides = 0;
+            for f in candidates.into_iter().flatten() {
+                beside[sides] = f;
+                sides += 1;
             }
-            if !closed && k + 1 == edges {
-                beside.extend(nearest(ab[1]));
-            }
+            let beside = &beside[..sides];
             if beside.is_empty() || !beside.iter().all(|&f| longer(ab, f, LONG_EDGE_DOUBLINGS)) {
                 continue;
             }

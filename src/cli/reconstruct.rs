@@ -10,7 +10,7 @@ use wdm_crust::io::{
 };
 use wdm_crust::reconstruct::{Algorithm, MedialAxisMode, Options, Phase};
 
-use super::input::Input;
+use super::input::{ColumnsArg, Input};
 use super::output::Output;
 use super::threads::ThreadsArg;
 use super::timings::Timings;
@@ -150,6 +150,9 @@ pub struct ReconstructArgs {
     #[command(flatten)]
     pub threads: ThreadsArg,
 
+    #[command(flatten)]
+    columns: ColumnsArg,
+
     /// WDM: one pass only, as in the paper (curves nested inside others are then lost).
     /// By default WDM reruns on the points no curve reached, to find holes.
     #[arg(long)]
@@ -205,7 +208,7 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
         ));
     }
     let mut timings = Timings::new(args.timings);
-    let input = Input::new(args.input.as_deref());
+    let input = Input::new(args.input.as_deref(), &args.columns);
     let output = Output::new(args.output.as_deref())?;
 
     let points = input.read_points_timed(&mut timings)?;

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use clap::{Args, ValueEnum};
 use wdm_crust::io::{write_triangulation_json, write_triangulation_text};
 
-use super::input::Input;
+use super::input::{ColumnsArg, Input};
 use super::output::Output;
 use super::threads::ThreadsArg;
 use super::timings::Timings;
@@ -56,12 +56,15 @@ pub struct TriangulateArgs {
 
     #[command(flatten)]
     pub threads: ThreadsArg,
+
+    #[command(flatten)]
+    columns: ColumnsArg,
 }
 
 /// Reads, triangulates, writes.
 pub fn run(args: &TriangulateArgs) -> Result<(), CliError> {
     let mut timings = Timings::new(args.timings);
-    let input = Input::new(args.input.as_deref());
+    let input = Input::new(args.input.as_deref(), &args.columns);
     let output = Output::new(args.output.as_deref())?;
 
     let points = input.read_points_timed(&mut timings)?;

@@ -7,7 +7,7 @@ use clap::{Args, ValueEnum};
 use wdm_crust::io::{write_voronoi_geojson, write_voronoi_json, write_voronoi_text};
 use wdm_crust::BoundingBox;
 
-use super::input::Input;
+use super::input::{ColumnsArg, Input};
 use super::output::Output;
 use super::threads::ThreadsArg;
 use super::timings::Timings;
@@ -89,6 +89,9 @@ pub struct VoronoiArgs {
 
     #[command(flatten)]
     pub threads: ThreadsArg,
+
+    #[command(flatten)]
+    columns: ColumnsArg,
 }
 
 impl VoronoiArgs {
@@ -137,7 +140,7 @@ pub fn run(args: &VoronoiArgs) -> Result<(), CliError> {
         ));
     }
     let mut timings = Timings::new(args.timings);
-    let input = Input::new(args.input.as_deref());
+    let input = Input::new(args.input.as_deref(), &args.columns);
     let output = Output::new(args.output.as_deref())?;
 
     let points = input.read_points_timed(&mut timings)?;

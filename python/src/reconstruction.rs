@@ -38,7 +38,12 @@ fn options(
         options = options.with_peeling(peeling);
     }
     if let Some(name) = medial_axis {
-        let mode = by_name(&MEDIAL_AXIS_MODES, MedialAxisMode::name, "medial_axis", name)?;
+        let mode = by_name(
+            &MEDIAL_AXIS_MODES,
+            MedialAxisMode::name,
+            "medial_axis",
+            name,
+        )?;
         options = options.with_medial_axis(mode);
     }
     if let Some(budget) = peeling_budget {

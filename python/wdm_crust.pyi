@@ -122,11 +122,18 @@ def reconstruct(
     points: _Points,
     *,
     algorithm: Literal["wdm", "crust", "nn-crust"] = "wdm",
-    peeling: bool = True,
-    medial_axis: Literal["pruned", "raw", "none"] = "pruned",
+    peeling: Optional[bool] = None,
+    medial_axis: Optional[Literal["pruned", "raw", "none"]] = None,
     peeling_budget: Optional[int] = None,
 ) -> Reconstruction:
-    """Reconstructs the curves the points were sampled from, and their medial axis."""
+    """Reconstructs the curves the points were sampled from, and their medial axis.
+
+    None keeps the engine's default: for WDM, peeling on, the pruned medial axis, a peeling
+    budget of 4. The WDM options that ask a baseline ('crust', 'nn-crust') for what it does
+    not do raise ValueError saying why: medial_axis='pruned' or 'raw', peeling=True, any
+    peeling_budget; medial_axis='none' and peeling=False are accepted with every algorithm.
+    A peeling_budget with peeling=False raises ValueError too.
+    """
 
 def orient2d(a: _Point, b: _Point, c: _Point) -> Literal[-1, 0, 1]:
     """Exact orientation of a → b → c: +1 counterclockwise, -1 clockwise, 0 collinear."""

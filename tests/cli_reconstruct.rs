@@ -302,14 +302,18 @@ fn every_algorithm_and_no_peeling_match_the_library() {
                 .with_algorithm(algorithm)
                 .with_peeling(peeling);
             check_json(&run.stdout, &points, &options);
-            args.extend(["--format", "svg", "--show", "delaunay,voronoi,labels"]);
+            // The labels are WDM's (refused with a baseline: options_that_do_not_apply_are_refused).
+            let layers = if algorithm == Algorithm::Wdm {
+                "delaunay,voronoi,labels"
+            } else {
+                "delaunay,voronoi"
+            };
+            args.extend(["--format", "svg", "--show", layers]);
             let run = run_in(d, &args, b"");
             assert_eq!(run.code, 0, "{args:?}: {}", run.stderr);
             check_svg(&run.stdout, &points, &["delaunay", "voronoi", "points"]);
             if algorithm == Algorithm::Wdm {
                 check_svg(&run.stdout, &points, &["inner-vertices", "outer-vertices"]);
-            } else {
-                assert!(run.stdout.contains("does not label"), "{args:?}");
             }
         }
     }
@@ -667,6 +671,120 @@ fn usage_errors_are_one_line_with_exit_2() {
     let run = run_in(d, &["reconstruct", "in.txt", "--show", "delaunay"], b"");
     assert!(run.stderr.contains("--format svg"), "{}", run.stderr);
     assert_eq!(listing(d), ["in.txt"]);
+}
+
+#[test]
+fn options_that_do_not_apply_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let points = bean();
+    write(d, "bean.txt", points_text(&points).as_bytes());
+    let tail = "; see 'wdm-crust reconstruct --help'\n";
+    for baseline in ["crust", "nn-crust"] {
+        for (extra, message) in [
+            (
+                &["--medial-axis", "raw"][..],
+                format!("--medial-axis raw does not apply to --algorithm {baseline}: {baseline} computes no medial axis; leave it out, or use --algorithm wdm"),
+            ),
+            (
+                &["--medial-axis", "pruned"],
+                format!("--medial-axis pruned does not apply to --algorithm {baseline}: {baseline} computes no medial axis; leave it out, or use --algorithm wdm"),
+            ),
+            (
+                &["--peeling-budget", "4"],
+                format!("--peeling-budget does not apply to --algorithm {baseline}: {baseline} runs one pass and has no peeling; leave it out, or use --algorithm wdm"),
+            ),
+            (
+                &["--no-peeling", "--peeling-budget", "0"],
+                format!("--peeling-budget does not apply to --algorithm {baseline}: {baseline} runs one pass and has no peeling; leave it out, or use --algorithm wdm"),
+            ),
+            (
+                &["--format", "svg", "--show", "delaunay,labels"],
+                format!("--show labels does not apply to --algorithm {baseline}: {baseline} labels no Voronoi vertices (the labels are WDM's water flow); leave it out, or use --algorithm wdm"),
+            ),
+        ] {
+            let mut args = vec!["reconstruct", "bean.txt", "--algorithm", baseline, "-o", "out.json"];
+            args.extend(extra);
+            let run = run_in(d, &args, b"");
+            assert_eq!(run.code, 2, "{args:?}: {}", run.stderr);
+            assert_eq!(run.stderr, format!("wdm-crust: {message}{tail}"), "{args:?}");
+            assert_eq!(run.stdout, "", "{args:?}");
+            assert_eq!(listing(d), ["bean.txt"], "{args:?}");
+            // Refused before the input is read: the same on a standard input never read.
+            args[1] = "-";
+            let run = run_in(d, &args, b"not points");
+            assert_eq!(run.code, 2, "{args:?}: {}", run.stderr);
+            assert!(run.stderr.contains("does not apply"), "{args:?}: {}", run.stderr);
+        }
+        // What asks for nothing a baseline lacks is accepted, with the baseline's result.
+        let options = Options::new().with_algorithm(match baseline {
+            "crust" => Algorithm::Crust,
+            _ => Algorithm::NnCrust,
+        });
+        for extra in [
+            &["--medial-axis", "none"][..],
+            &["--no-peeling"],
+            &["--format", "svg", "--show", "delaunay,voronoi"],
+        ] {
+            let mut args = vec!["reconstruct", "bean.txt", "--algorithm", baseline];
+            args.extend(extra);
+            let run = run_in(d, &args, b"");
+            assert_eq!(run.code, 0, "{args:?}: {}", run.stderr);
+            if !extra.contains(&"svg") {
+                check_json(&run.stdout, &points, &options);
+            }
+        }
+    }
+    // With WDM: every option, but a budget for a peeling turned off.
+    let run = run_in(
+        d,
+        &[
+            "reconstruct",
+            "bean.txt",
+            "--no-peeling",
+            "--peeling-budget",
+            "2",
+        ],
+        b"",
+    );
+    assert_eq!(run.code, 2, "{}", run.stderr);
+    assert_eq!(
+        run.stderr,
+        format!("wdm-crust: --peeling-budget does not apply with --no-peeling: peeling is off, so there is no peeling for the budget to bound; leave one of them out{tail}")
+    );
+    for extra in [
+        &["--medial-axis", "pruned", "--peeling-budget", "4"][..],
+        &["--algorithm", "wdm", "--medial-axis", "raw"],
+        &["--no-peeling", "--medial-axis", "none"],
+    ] {
+        let mut args = vec!["reconstruct", "bean.txt"];
+        args.extend(extra);
+        let run = run_in(d, &args, b"");
+        assert_eq!(run.code, 0, "{args:?}: {}", run.stderr);
+    }
+    // The explicit defaults give the default result.
+    let default = run_in(d, &["reconstruct", "bean.txt"], b"");
+    let explicit = run_in(
+        d,
+        &[
+            "reconstruct",
+            "bean.txt",
+            "--medial-axis",
+            "pruned",
+            "--peeling-budget",
+            "4",
+        ],
+        b"",
+    );
+    assert_eq!(default.stdout, explicit.stdout);
+    check_json(&default.stdout, &points, &Options::default());
+    // The help states the library's default budget.
+    let help = run_in(d, &["reconstruct", "--help"], b"");
+    let stated = format!("[default: {}]", Options::default().peeling_budget());
+    assert!(
+        help.stdout.contains(&stated),
+        "{stated} missing from the help"
+    );
 }
 
 #[test]

@@ -7,7 +7,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
 use pyo3::types::{PyList, PyTuple};
-use wdm_crust::reconstruct::{Algorithm, MedialAxisMode, Options};
+use wdm_crust::reconstruct::{Algorithm, MedialAxisMode, Options, OptionsConflict, WdmSetting};
 
 use crate::arrays::{index_rows, indices, rows_array, vector};
 use crate::errors::engine_error;
@@ -23,25 +23,29 @@ const MEDIAL_AXIS_MODES: [MedialAxisMode; 3] = [
     MedialAxisMode::Omitted,
 ];
 
-/// The engine's options from the keyword arguments; unknown names are a `ValueError` that
-/// lists the known ones.
+/// The engine's options from the keyword arguments given (`None`: the engine's default);
+/// unknown names are a `ValueError` that lists the known ones, and so are options that do not
+/// apply to the algorithm (the engine's [`Options::check`]), saying why.
 fn options(
     algorithm: &str,
-    peeling: bool,
-    medial_axis: &str,
+    peeling: Option<bool>,
+    medial_axis: Option<&str>,
     peeling_budget: Option<i64>,
 ) -> PyResult<Options> {
     let algorithm = by_name(&ALGORITHMS, Algorithm::name, "algorithm", algorithm)?;
-    let medial_axis = by_name(
-        &MEDIAL_AXIS_MODES,
-        MedialAxisMode::name,
-        "medial_axis",
-        medial_axis,
-    )?;
-    let mut options = Options::new()
-        .with_algorithm(algorithm)
-        .with_peeling(peeling)
-        .with_medial_axis(medial_axis);
+    let mut options = Options::new().with_algorithm(algorithm);
+    if let Some(peeling) = peeling {
+        options = options.with_peeling(peeling);
+    }
+    if let Some(name) = medial_axis {
+        let mode = by_name(
+            &MEDIAL_AXIS_MODES,
+            MedialAxisMode::name,
+            "medial_axis",
+            name,
+        )?;
+        options = options.with_medial_axis(mode);
+    }
     if let Some(budget) = peeling_budget {
         let budget = usize::try_from(budget).map_err(|_| {
             PyValueError::new_err(format!(
@@ -50,6 +54,31 @@ fn options(
         })?;
         options = options.with_peeling_budget(budget);
     }
+    options.check().map_err(|conflict| {
+        PyValueError::new_err(match conflict {
+            OptionsConflict::WdmOnly { setting, .. } => {
+                let keyword = match setting {
+                    WdmSetting::MedialAxis => {
+                        format!("medial_axis='{}'", options.medial_axis().name())
+                    }
+                    WdmSetting::Peeling => "peeling=True".to_string(),
+                    WdmSetting::PeelingBudget => "peeling_budget".to_string(),
+                    other => format!("the {} setting", other.name()),
+                };
+                format!(
+                    "{keyword} does not apply to algorithm='{}': {}; leave it out, or use \
+                     algorithm='wdm'",
+                    algorithm.name(),
+                    conflict.reason()
+                )
+            }
+            OptionsConflict::BudgetWithoutPeeling => format!(
+                "peeling_budget does not apply with peeling=False: {}; leave one of them out",
+                conflict.reason()
+            ),
+            other => other.to_string(),
+        })
+    })?;
     Ok(options)
 }
 
@@ -329,12 +358,18 @@ impl Reconstruction {
 ///     algorithm: 'wdm' (WDM_CRUST, the default), 'crust' (Amenta–Bern–Eppstein) or
 ///         'nn-crust' (Dey–Kumar); the baselines return no medial axis.
 ///     peeling: WDM: rerun on the points no curve reached, to find nested curves (holes);
-///         False runs the paper's single pass.
-///     medial_axis: WDM: 'pruned' (the default: spurious branches removed), 'raw' (the
-///         paper's WDM_MAT, every Voronoi edge between two inner vertices) or 'none' (the
-///         curves only, in about half the time; the medial axis returned is empty).
-///     peeling_budget: the extra passes together may run on at most this many times the
-///         input's points; None keeps the engine's default (as the command line's).
+///         False runs the paper's single pass. None (the default) is True for WDM.
+///     medial_axis: WDM: 'pruned' (what None, the default, gives WDM: spurious branches
+///         removed), 'raw' (the paper's WDM_MAT, every Voronoi edge between two inner
+///         vertices) or 'none' (the curves only, in about half the time; the medial axis
+///         returned is empty).
+///     peeling_budget: WDM: the extra passes together may run on at most this many times
+///         the input's points; None keeps the engine's default (as the command line's).
+///
+/// The WDM options that ask a baseline for what it does not do are refused with 'crust'
+/// and 'nn-crust': medial_axis='pruned' or 'raw', peeling=True, any peeling_budget.
+/// medial_axis='none' and peeling=False ask for nothing a baseline does and are accepted
+/// with every algorithm. A peeling_budget with peeling=False is refused too.
 ///
 /// Returns:
 ///     Reconstruction with `edges`, `curves`, `medial_axis`, `unassigned`: the same data as
@@ -342,18 +377,19 @@ impl Reconstruction {
 ///
 /// Raises:
 ///     ValueError: invalid points (as `triangulate`), an unknown algorithm or medial_axis
-///         name, or a negative peeling_budget.
+///         name, a negative peeling_budget, or an option that does not apply to the
+///         algorithm (saying why).
 ///     TypeError: the points are not real numbers.
 ///
 /// The GIL is released while the engine runs.
 #[pyfunction]
-#[pyo3(signature = (points, *, algorithm = "wdm", peeling = true, medial_axis = "pruned", peeling_budget = None))]
+#[pyo3(signature = (points, *, algorithm = "wdm", peeling = None, medial_axis = None, peeling_budget = None))]
 pub fn reconstruct(
     py: Python<'_>,
     points: &Bound<'_, PyAny>,
     algorithm: &str,
-    peeling: bool,
-    medial_axis: &str,
+    peeling: Option<bool>,
+    medial_axis: Option<&str>,
     peeling_budget: Option<i64>,
 ) -> PyResult<Reconstruction> {
     let options = options(algorithm, peeling, medial_axis, peeling_budget)?;

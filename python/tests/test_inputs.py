@@ -2,6 +2,7 @@
 caller's array (no copy of a C-contiguous float64 array, the GIL released meanwhile)."""
 
 import ast
+import re
 import threading
 import time
 import tracemalloc
@@ -182,6 +183,48 @@ def test_reconstruct_options_are_checked():
         wdm_crust.reconstruct(POINTS, "crust")  # options are keyword-only
     with pytest.raises(TypeError):
         wdm_crust.reconstruct(POINTS, algorithm=1)
+
+
+@pytest.mark.parametrize("algorithm", ["crust", "nn-crust"])
+@pytest.mark.parametrize(
+    "options,message",
+    [
+        ({"medial_axis": "raw"}, "medial_axis='raw' does not apply to algorithm='{a}': {a} computes no medial axis"),
+        ({"medial_axis": "pruned"}, "medial_axis='pruned' does not apply to algorithm='{a}': {a} computes no medial axis"),
+        ({"peeling": True}, "peeling=True does not apply to algorithm='{a}': {a} runs one pass and has no peeling"),
+        ({"peeling_budget": 4}, "peeling_budget does not apply to algorithm='{a}': {a} runs one pass and has no peeling"),
+        ({"peeling": False, "peeling_budget": 0}, "peeling_budget does not apply to algorithm='{a}'"),
+    ],
+    ids=repr,
+)
+def test_options_that_do_not_apply_to_a_baseline_raise_value_error(algorithm, options, message):
+    expected = "^" + re.escape(message.format(a=algorithm)) + ".*; leave it out, or use algorithm='wdm'$"
+    with pytest.raises(ValueError, match=expected):
+        wdm_crust.reconstruct(POINTS, algorithm=algorithm, **options)
+
+
+@pytest.mark.parametrize("algorithm", ["crust", "nn-crust"])
+def test_options_that_ask_a_baseline_for_nothing_are_accepted(algorithm):
+    plain = wdm_crust.reconstruct(POINTS, algorithm=algorithm)
+    for options in [{"medial_axis": "none"}, {"peeling": False}, {"medial_axis": None, "peeling": None}]:
+        rec = wdm_crust.reconstruct(POINTS, algorithm=algorithm, **options)
+        assert rec.edges.tolist() == plain.edges.tolist()
+        assert [c.points.tolist() for c in rec.curves] == [c.points.tolist() for c in plain.curves]
+
+
+def test_explicit_defaults_give_the_default_reconstruction():
+    default = wdm_crust.reconstruct(POINTS)
+    explicit = wdm_crust.reconstruct(POINTS, algorithm="wdm", peeling=True, medial_axis="pruned", peeling_budget=4)
+    assert explicit.edges.tolist() == default.edges.tolist()
+    assert [c.points.tolist() for c in explicit.curves] == [c.points.tolist() for c in default.curves]
+    assert explicit.medial_axis[0].tolist() == default.medial_axis[0].tolist()
+    assert explicit.medial_axis[1].tolist() == default.medial_axis[1].tolist()
+    with pytest.raises(
+        ValueError,
+        match="^peeling_budget does not apply with peeling=False: peeling is off, so there is no "
+        "peeling for the budget to bound; leave one of them out$",
+    ):
+        wdm_crust.reconstruct(POINTS, peeling=False, peeling_budget=2)
 
 
 def test_results_describe_themselves():

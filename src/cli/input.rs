@@ -4,15 +4,36 @@ use std::fs::File;
 use std::io::{self, BufReader};
 use std::path::{Path, PathBuf};
 
-use wdm_crust::io::{format_from_path, read_points, ParseError, ParseErrorKind};
+use clap::Args;
+use wdm_crust::io::{
+    format_from_path, read_points_with, ColumnSelection, ParseError, ParseErrorKind, ReadOptions,
+};
 
 use super::timings::{Timings, PROGRESS_BYTES, PROGRESS_POINTS};
 use super::CliError;
+
+/// The `--columns` option, flattened into each subcommand's arguments.
+#[derive(Debug, Clone, Args)]
+pub struct ColumnsArg {
+    /// The columns to read as x and y, by header name (any case) or 1-based position (which
+    /// also reads a file without a header): `--columns lon_deg,lat_deg`, `--columns 2,3`.
+    /// Without it a header picks x,y, lon,lat (lng, long or longitude with lat or latitude)
+    /// or easting,northing; a header with none of them, or with more than one pair, is
+    /// refused.
+    #[arg(long, value_name = "X,Y", value_parser = parse_columns)]
+    columns: Option<ColumnSelection>,
+}
+
+/// `X,Y` as a [`ColumnSelection`].
+fn parse_columns(text: &str) -> Result<ColumnSelection, String> {
+    text.parse().map_err(|e| format!("{e}"))
+}
 
 /// The input of a subcommand: a file, or standard input for an absent INPUT or `-`.
 #[derive(Debug)]
 pub struct Input {
     path: Option<PathBuf>,
+    columns: Option<ColumnSelection>,
 }
 
 /// The note for an input without points.
@@ -20,10 +41,13 @@ const EMPTY_NOTE: &str = "no points (the input is empty, or only comments, blank
                           header); the result is empty";
 
 impl Input {
-    /// The input named on the command line.
-    pub fn new(arg: Option<&Path>) -> Self {
+    /// The input named on the command line, read with its `--columns`.
+    pub fn new(arg: Option<&Path>, columns: &ColumnsArg) -> Self {
         let path = arg.filter(|p| p.as_os_str() != "-").map(Path::to_path_buf);
-        Input { path }
+        Input {
+            path,
+            columns: columns.columns.clone(),
+        }
     }
 
     /// The name used in messages: the path as given, or `<stdin>`.
@@ -42,8 +66,15 @@ impl Input {
 
     /// Reads all points, in the format implied by the extension or detected from the content.
     pub fn read_points(&self) -> Result<Vec<[f64; 2]>, CliError> {
+        let mut options = ReadOptions::new();
+        if let Some(columns) = &self.columns {
+            options = options.with_columns(columns.clone());
+        }
         let result = match &self.path {
-            None => read_points(BufReader::with_capacity(1 << 16, io::stdin().lock()), None),
+            None => read_points_with(
+                BufReader::with_capacity(1 << 16, io::stdin().lock()),
+                &options,
+            ),
             Some(path) => {
                 if path.is_dir() {
                     return Err(CliError::bad_input(format!(
@@ -54,10 +85,10 @@ impl Input {
                 let file = File::open(path).map_err(|e| {
                     CliError::bad_input(format!("{}: cannot open: {e}", self.name()))
                 })?;
-                read_points(
-                    BufReader::with_capacity(1 << 16, file),
-                    format_from_path(path),
-                )
+                if let Some(format) = format_from_path(path) {
+                    options = options.with_format(format);
+                }
+                read_points_with(BufReader::with_capacity(1 << 16, file), &options)
             }
         };
         result.map_err(|e| self.parse_error(&e))

@@ -26,11 +26,18 @@ Input formats (detected from the content, or .node/.gtn/.csv by extension):
   plain text   one point per line: `x y`, `x,y` or `x y z...` (extra columns ignored); a
                line with a comma is split at commas only, one without at white space
   CSV          the same, after an optional header line of column names; the header picks
-               the columns named x and y (any case): `id,x,y` reads columns 2 and 3
+               the coordinates by name (any case, quoted or not, in any order): x,y;
+               lon,lat (lng, long or longitude with lat or latitude); easting,northing.
+               `id,x,y` reads columns 2 and 3, `lat,lon` reads x from column 2
   .node/.gtn   Triangle/Dey format: header `N 2 A B`, then `index x y [attributes] [marker]`
+--columns X,Y picks other columns: header names (`--columns lon_deg,lat_deg`) or 1-based
+positions, which also read a file without a header (`--columns 2,3` for `id x y` rows).
 Blank lines and `#` comments are skipped; \\n, \\r\\n and \\r line ends are all accepted.
 Refused with file and line, never misread: rows with a different number of columns than the
-header or first row, decimal commas (`0,5 1,5`), numbers followed by anything (`1.5x`).
+header or first row, decimal commas (`0,5 1,5`), numbers followed by anything (`1.5x`), a
+header with no coordinate pair it knows or with two (`x,y` beside `lon,lat`: use --columns).
+Refused with what they look like: SVG/XML/HTML, JSON/GeoJSON, compressed files, ZIP archives
+and spreadsheets, PDFs, images, UTF-16 text.
 An input without points gives an empty result and a note on standard error.
 Point indices in every output are positions among the points read, counting from 0.
 On a terminal, inputs of more than 200000 points get a progress line per phase.

@@ -8,9 +8,11 @@ use wdm_crust::io::{
     write_reconstruction_geojson, write_reconstruction_json, write_reconstruction_svg,
     write_reconstruction_text, SvgOptions,
 };
-use wdm_crust::reconstruct::{Algorithm, MedialAxisMode, Options, Phase};
+use wdm_crust::reconstruct::{
+    Algorithm, MedialAxisMode, Options, OptionsConflict, Phase, WdmSetting,
+};
 
-use super::input::Input;
+use super::input::{ColumnsArg, Input};
 use super::output::Output;
 use super::report::{self, counted};
 use super::threads::ThreadsArg;
@@ -138,7 +140,9 @@ pub struct ReconstructArgs {
     #[arg(value_name = "INPUT")]
     input: Option<PathBuf>,
 
-    /// Reconstruction algorithm.
+    /// Reconstruction algorithm. The options for WDM that ask for what the baselines do not
+    /// do (--medial-axis pruned|raw, --peeling-budget, --show labels) are refused with crust
+    /// and nn-crust; --medial-axis none and --no-peeling are accepted with every algorithm.
     #[arg(long, value_enum, default_value_t = AlgorithmArg::Wdm)]
     algorithm: AlgorithmArg,
 
@@ -161,26 +165,29 @@ pub struct ReconstructArgs {
     /// progress.
     #[arg(short, long, conflicts_with = "timings")]
     pub quiet: bool,
+    #[command(flatten)]
+    columns: ColumnsArg,
 
     /// WDM: one pass only, as in the paper (curves nested inside others are then lost).
     /// By default WDM reruns on the points no curve reached, to find holes.
     #[arg(long)]
     no_peeling: bool,
 
-    /// Peeling stops before the extra passes together would run on more than N times the
-    /// input's points (a note on standard error says so). Curve samples with holes never
-    /// reach it; noise and grids would otherwise peel for hundreds of passes.
-    #[arg(long, value_name = "N", default_value_t = Options::default().peeling_budget())]
-    peeling_budget: usize,
+    /// WDM: peeling stops before the extra passes together would run on more than N times
+    /// the input's points (a note on standard error says so) [default: 4]. Curve samples
+    /// with holes never reach it; noise and grids would otherwise peel for hundreds of
+    /// passes.
+    #[arg(long, value_name = "N")]
+    peeling_budget: Option<usize>,
 
     /// WDM: the medial axis returned: `pruned` (default: the axis of the closed curves, one
     /// tree per simply connected shape, noise branches removed), `raw` (the paper's
     /// WDM_MAT: every Voronoi edge between two inner vertices) or `none` (the curves only,
     /// in about half the time; the output's medial axis is empty).
-    #[arg(long, value_enum, default_value_t = MedialAxisArg::Pruned)]
-    medial_axis: MedialAxisArg,
+    #[arg(long, value_enum)]
+    medial_axis: Option<MedialAxisArg>,
 
-    /// SVG underlays, comma-separated: delaunay, voronoi, labels.
+    /// SVG underlays, comma-separated: delaunay, voronoi, labels (WDM only).
     #[arg(long, value_enum, value_delimiter = ',', value_name = "LAYERS")]
     show: Vec<Layer>,
 
@@ -199,6 +206,60 @@ pub struct ReconstructArgs {
 }
 
 impl ReconstructArgs {
+    /// The library's options from the arguments given; options that do not apply to the
+    /// algorithm (or to each other) are a usage error saying why.
+    fn options(&self) -> Result<Options, CliError> {
+        let algorithm = Algorithm::from(self.algorithm);
+        let mut options = Options::new().with_algorithm(algorithm);
+        if self.no_peeling {
+            options = options.with_peeling(false);
+        }
+        if let Some(budget) = self.peeling_budget {
+            options = options.with_peeling_budget(budget);
+        }
+        if let Some(mode) = self.medial_axis {
+            options = options.with_medial_axis(mode.into());
+        }
+        let inapplicable = |option: String, conflict: OptionsConflict| {
+            CliError::bad_input(format!(
+                "{option} does not apply to --algorithm {}: {}; leave it out, or use \
+                 --algorithm wdm; see 'wdm-crust reconstruct --help'",
+                algorithm.name(),
+                conflict.reason()
+            ))
+        };
+        if let Err(conflict) = options.check() {
+            return Err(match conflict {
+                OptionsConflict::WdmOnly { setting, .. } => {
+                    let option = match (setting, self.medial_axis) {
+                        (WdmSetting::MedialAxis, Some(mode)) => {
+                            format!("--medial-axis {}", MedialAxisMode::from(mode).name())
+                        }
+                        (WdmSetting::PeelingBudget, _) => "--peeling-budget".to_string(),
+                        (WdmSetting::Peeling, _) => "--no-peeling".to_string(),
+                        (other, _) => format!("the {} setting", other.name()),
+                    };
+                    inapplicable(option, conflict)
+                }
+                OptionsConflict::BudgetWithoutPeeling => CliError::bad_input(format!(
+                    "--peeling-budget does not apply with --no-peeling: {}; leave one of them \
+                     out; see 'wdm-crust reconstruct --help'",
+                    conflict.reason()
+                )),
+                _ => CliError::bad_input(format!("{conflict}")),
+            });
+        }
+        if algorithm != Algorithm::Wdm && self.show.contains(&Layer::Labels) {
+            // The labels drawn are the water flow's, as a label rule would ask for.
+            let conflict = OptionsConflict::WdmOnly {
+                setting: WdmSetting::LabelRule,
+                algorithm,
+            };
+            return Err(inapplicable("--show labels".to_string(), conflict));
+        }
+        Ok(options)
+    }
+
     /// The explicit format, or the one implied by the output file name.
     fn format(&self) -> ReconstructFormat {
         self.format.unwrap_or_else(|| {
@@ -228,17 +289,13 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
             "--no-points leaves the points out of a picture: it needs --format svg (or an OUTPUT ending in .svg); see 'wdm-crust reconstruct --help'",
         ));
     }
+    let options = args.options()?;
     let mut timings = Timings::new(args.timings);
-    let input = Input::new(args.input.as_deref());
+    let input = Input::new(args.input.as_deref(), &args.columns);
     let output = Output::new(args.output.as_deref())?;
 
     let points = input.read_points_timed(&mut timings)?;
 
-    let options = Options::new()
-        .with_algorithm(args.algorithm.into())
-        .with_peeling(!args.no_peeling)
-        .with_peeling_budget(args.peeling_budget)
-        .with_medial_axis(args.medial_axis.into());
     let n = points.len();
     timings.begin(|| format!("triangulating {n} points"));
     // The library reports each phase as it ends; the next one begins right then. The

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use clap::{Args, ValueEnum};
 use wdm_crust::io::{write_triangulation_json, write_triangulation_text};
 
-use super::input::Input;
+use super::input::{ColumnsArg, Input};
 use super::output::Output;
 use super::report::counted;
 use super::threads::ThreadsArg;
@@ -62,12 +62,14 @@ pub struct TriangulateArgs {
     /// progress.
     #[arg(short, long, conflicts_with = "timings")]
     pub quiet: bool,
+    #[command(flatten)]
+    columns: ColumnsArg,
 }
 
 /// Reads, triangulates, writes.
 pub fn run(args: &TriangulateArgs) -> Result<(), CliError> {
     let mut timings = Timings::new(args.timings);
-    let input = Input::new(args.input.as_deref());
+    let input = Input::new(args.input.as_deref(), &args.columns);
     let output = Output::new(args.output.as_deref())?;
 
     let points = input.read_points_timed(&mut timings)?;

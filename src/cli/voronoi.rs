@@ -7,7 +7,7 @@ use clap::{Args, ValueEnum};
 use wdm_crust::io::{write_voronoi_geojson, write_voronoi_json, write_voronoi_text};
 use wdm_crust::BoundingBox;
 
-use super::input::Input;
+use super::input::{ColumnsArg, Input};
 use super::output::Output;
 use super::report::counted;
 use super::threads::ThreadsArg;
@@ -95,6 +95,8 @@ pub struct VoronoiArgs {
     /// progress.
     #[arg(short, long, conflicts_with = "timings")]
     pub quiet: bool,
+    #[command(flatten)]
+    columns: ColumnsArg,
 }
 
 impl VoronoiArgs {
@@ -143,7 +145,7 @@ pub fn run(args: &VoronoiArgs) -> Result<(), CliError> {
         ));
     }
     let mut timings = Timings::new(args.timings);
-    let input = Input::new(args.input.as_deref());
+    let input = Input::new(args.input.as_deref(), &args.columns);
     let output = Output::new(args.output.as_deref())?;
 
     let points = input.read_points_timed(&mut timings)?;

@@ -1,7 +1,8 @@
 //! Reading point files and writing results.
 //!
 //! * [`read_points`] / [`read_points_from_path`] read plain text, CSV and Triangle `.node` /
-//!   Dey `.gtn` point files (see [`parse`] for the formats and the errors, each with its line).
+//!   Dey `.gtn` point files (see [`parse`] for the formats and the errors, each with its line);
+//!   [`read_points_with`] also takes the columns of x and y ([`ReadOptions`]).
 //! * [`write_triangulation_json`] / [`write_triangulation_text`],
 //!   [`write_voronoi_json`] / [`write_voronoi_text`] and
 //!   [`write_reconstruction_json`] / [`write_reconstruction_text`] write a
@@ -25,8 +26,9 @@ pub use output::{
     write_triangulation_text, write_voronoi_json, write_voronoi_text,
 };
 pub use parse::{
-    detect_format, format_from_path, read_points, read_points_from_path, Axis, InputFormat,
-    ParseError, ParseErrorKind,
+    detect_format, format_from_path, read_points, read_points_from_path, read_points_with, Axis,
+    Column, ColumnSelection, ColumnSelectionError, FileKind, InputFormat, ParseError,
+    ParseErrorKind, ReadOptions,
 };
 pub use svg::{write_reconstruction_svg, SvgOptions};
 pub use voronoi_geojson::write_voronoi_geojson;

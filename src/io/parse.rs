@@ -11,9 +11,27 @@
 //! * **CSV** ([`InputFormat::Csv`]): the same rows, after an optional header line of column
 //!   names on the first line that is not a comment or blank (a line with no number and at
 //!   least one word, such as `x,y`, `id,x,y`, `",x,y"` or `X Y`). A header selects the
-//!   coordinates by name: the columns called `x` and `y`, compared without regard to case,
-//!   quotes and white space around them; a header without both is an error naming the columns
-//!   it has. Fields may be quoted (`"1.5","2"`, `"a, b",1,2`).
+//!   coordinates by name, compared without regard to case, quotes and white space around
+//!   them: the columns `x` and `y`, `lon` and `lat` (`lng`, `long` or `longitude` with `lat`
+//!   or `latitude`), or `easting` and `northing`, wherever they are (`lat,lon` reads the
+//!   second column as x). Fields may be quoted (`"1.5","2"`, `"a, b",1,2`).
+//!
+//! # Choosing the columns
+//!
+//! A [`ColumnSelection`] ([`ReadOptions::with_columns`], the command line's `--columns X,Y`)
+//! names the columns of x and y instead: header names (any case), or 1-based positions,
+//! which also read a file without a header (`--columns 2,3` for `id x y` rows). A header is
+//! read only when it is unambiguous, and otherwise refused with a message that says to
+//! choose the columns:
+//!
+//! * no pair of the names above (`x (m),y (m)`, `lat` alone): [`ParseErrorKind::HeaderWithoutXY`];
+//! * a name twice (`x,y,X`): [`ParseErrorKind::DuplicateColumn`];
+//! * more than one pair (`x,y` beside `lon,lat`; `lon` and `longitude` beside `lat`):
+//!   [`ParseErrorKind::AmbiguousColumns`].
+//!
+//! A chosen name that the header lacks is an error listing the header's columns; a name in
+//! a file without a header, a position beyond the header or first row, and any selection
+//! for a `.node` file are errors too.
 //! * **Triangle `.node` / Dey `.gtn`** ([`InputFormat::Node`]): a header line `N 2 A B`
 //!   (point count, dimension 2, attribute count, boundary-marker flag 0 or 1), then `N` lines
 //!   `index x y [attributes] [marker]` of exactly `3 + A + B` fields. The indices must run
@@ -45,10 +63,16 @@
 //!
 //! Every problem is a [`ParseError`] carrying the 1-based number of the offending line: a
 //! token that is not a number, a line with only one number, a row with the wrong number of
-//! columns, a header without `x` and `y`, NaN or infinity, a decimal that rounds to zero or
-//! overflows as an `f64` (every finite `f64` itself is accepted, see
-//! [`crate::error::check_coordinate`]), binary data, a `.node` header that does not match its
-//! points, or an I/O error.
+//! columns, a header without a pair of coordinate names or with more than one, NaN or
+//! infinity, a decimal that rounds to zero or overflows as an `f64` (every finite `f64`
+//! itself is accepted, see [`crate::error::check_coordinate`]), binary data, a `.node` header
+//! that does not match its points, or an I/O error.
+//!
+//! A file that is no point list at all is refused before its first line, with what it looks
+//! like and what to do ([`ParseErrorKind::NotAPointFile`], [`FileKind`]): an SVG, HTML or
+//! other XML document, JSON or GeoJSON, gzip/xz/bzip2/zstd data, a ZIP archive (spreadsheets
+//! are ones), a PDF, a PNG/JPEG/GIF image, UTF-16 text. Each of them would be refused anyway;
+//! the test only chooses the message.
 
 use std::fmt;
 use std::fs::File;
@@ -58,6 +82,10 @@ use std::path::Path;
 mod columns;
 mod fields;
 mod node;
+mod sniff;
+
+pub use self::columns::{Column, ColumnSelection, ColumnSelectionError};
+pub use self::sniff::FileKind;
 
 use self::columns::{looks_like_header, Columns};
 use self::fields::is_blank_char;
@@ -73,7 +101,8 @@ pub enum InputFormat {
     /// space, further columns ignored. No header line.
     Text,
     /// Like [`InputFormat::Text`], after an optional header line of column names that selects
-    /// the columns named `x` and `y` (`x,y`, `id,x,y`).
+    /// the coordinate columns by name (`x,y`, `id,x,y`, `lon,lat`; see the
+    /// [module docs](self)).
     Csv,
     /// Triangle `.node` or Dey `.gtn`: a header `N 2 A B`, then `index x y [attributes] [marker]`.
     Node,
@@ -188,18 +217,63 @@ pub enum ParseErrorKind {
         /// Whether `line` is a header (column names) rather than the first row.
         header: bool,
     },
-    /// A CSV header (a first line of column names) without a column named `x` and one named
-    /// `y`.
+    /// A CSV header (a first line of column names) without a pair of coordinate names:
+    /// `x` and `y`, `lon` and `lat` (or their longer spellings), `easting` and `northing`.
     HeaderWithoutXY {
         /// The column names found (the first few, shortened).
         columns: Vec<String>,
         /// How many more names the header has.
         more: usize,
     },
-    /// A CSV header names two columns `x` (or two `y`).
+    /// A CSV header names two columns `x` (or two `y`, two `lat`, ...), or a column chosen
+    /// by a [`ColumnSelection`] by name is there twice.
     DuplicateColumn {
         /// The name repeated.
         name: String,
+    },
+    /// A CSV header names more than one pair of coordinate columns (`x,y` beside `lon,lat`,
+    /// or `lon` and `longitude` beside `lat`): which one is meant is not guessed.
+    AmbiguousColumns {
+        /// The pairs found, `[x, y]` as the header spells them.
+        pairs: Vec<[String; 2]>,
+    },
+    /// A column chosen by name ([`ColumnSelection`]) is not in the header.
+    ColumnNotFound {
+        /// The name asked for.
+        name: String,
+        /// The column names the header has (the first few, shortened).
+        columns: Vec<String>,
+        /// How many more names the header has.
+        more: usize,
+    },
+    /// A column chosen by position ([`ColumnSelection`]) is beyond the header or the first
+    /// row.
+    NoSuchColumn {
+        /// The 1-based position asked for.
+        position: usize,
+        /// Columns in the header or the first row.
+        count: usize,
+        /// Whether `count` is the header's rather than the first row's.
+        header: bool,
+    },
+    /// A [`ColumnSelection`] chooses one column for both x and y (a name and the position
+    /// of the same column).
+    SameColumn {
+        /// The column's name in the header.
+        name: String,
+    },
+    /// A [`ColumnSelection`] chooses a column by name, but the file has no header line.
+    ColumnsWithoutHeader {
+        /// The name asked for.
+        name: String,
+    },
+    /// A [`ColumnSelection`] was given for a `.node` file, whose columns are fixed.
+    ColumnsInNode,
+    /// The content is not a point list at all but another kind of file (an SVG drawing,
+    /// JSON, a compressed file, an image, UTF-16 text...); reported without a line.
+    NotAPointFile {
+        /// What it looks like.
+        looks_like: FileKind,
     },
     /// The first line is a header of column names, but the format is plain text, which has
     /// none (read it as [`InputFormat::Csv`], or let the format be detected).
@@ -299,15 +373,11 @@ impl fmt::Display for ParseErrorKind {
             ),
             ParseErrorKind::HeaderWithoutXY { columns, more } => {
                 f.write_str("the header line names the columns ")?;
-                for (i, name) in columns.iter().enumerate() {
-                    write!(f, "{}{name:?}", if i == 0 { "" } else { ", " })?;
-                }
-                if *more > 0 {
-                    write!(f, " and {more} more")?;
-                }
+                write_names(f, columns, *more)?;
                 f.write_str(
-                    " but no `x` and `y`: name the coordinate columns x and y (any case), \
-                     or remove the header line",
+                    " but no pair of coordinate names it knows (x,y; lon, lng, long or \
+                     longitude with lat or latitude; easting,northing; any case): choose the \
+                     columns with --columns X,Y, or remove the header line",
                 )?;
                 if columns.iter().any(|name| name.contains(';')) {
                     f.write_str(" (semicolons do not separate columns here: use commas)")?;
@@ -316,7 +386,69 @@ impl fmt::Display for ParseErrorKind {
             }
             ParseErrorKind::DuplicateColumn { name } => write!(
                 f,
-                "the header line names two columns {name:?}; the coordinates must be unambiguous"
+                "the header line names two columns {name:?}; the coordinates must be \
+                 unambiguous: choose them by position with --columns X,Y (e.g. --columns 2,3)"
+            ),
+            ParseErrorKind::AmbiguousColumns { pairs } => {
+                f.write_str("the header line names more than one pair of coordinate columns (")?;
+                for (i, [x, y]) in pairs.iter().enumerate() {
+                    let separator = match i {
+                        0 => "",
+                        _ if i + 1 == pairs.len() => " and ",
+                        _ => ", ",
+                    };
+                    write!(f, "{separator}`{x},{y}`")?;
+                }
+                write!(
+                    f,
+                    "): choose one with --columns X,Y (e.g. --columns {},{})",
+                    pairs[0][0], pairs[0][1]
+                )
+            }
+            ParseErrorKind::ColumnNotFound {
+                name,
+                columns,
+                more,
+            } => {
+                write!(
+                    f,
+                    "--columns asks for a column {name:?}, but the header line has none \
+                     (names are compared in any case); its columns are "
+                )?;
+                write_names(f, columns, *more)
+            }
+            ParseErrorKind::NoSuchColumn {
+                position,
+                count,
+                header,
+            } => write!(
+                f,
+                "--columns asks for column {position}, but {} has {count} column{}",
+                if *header {
+                    "the header line"
+                } else {
+                    "the first row"
+                },
+                if *count == 1 { "" } else { "s" }
+            ),
+            ParseErrorKind::SameColumn { name } => write!(
+                f,
+                "--columns chooses the column {name:?} for both x and y"
+            ),
+            ParseErrorKind::ColumnsWithoutHeader { name } => write!(
+                f,
+                "--columns asks for a column {name:?} by name, but the file has no header line \
+                 (this first line is a row, not column names): choose the columns by their \
+                 1-based position (e.g. --columns 2,3), or add a header line"
+            ),
+            ParseErrorKind::ColumnsInNode => f.write_str(
+                "--columns chooses the columns of text and CSV files, but this is a .node file \
+                 (`index x y ...` after a header `N 2 A B`): leave --columns out",
+            ),
+            ParseErrorKind::NotAPointFile { looks_like } => write!(
+                f,
+                "this looks like {looks_like}, not a list of points; {}",
+                looks_like.advice()
             ),
             ParseErrorKind::HeaderInText => f.write_str(
                 "a header line of column names, but plain text has none; read the file as CSV",
@@ -347,11 +479,23 @@ impl fmt::Display for ParseErrorKind {
     }
 }
 
+/// `"a", "b", "c" and 4 more`.
+fn write_names(f: &mut fmt::Formatter<'_>, names: &[String], more: usize) -> fmt::Result {
+    for (i, name) in names.iter().enumerate() {
+        write!(f, "{}{name:?}", if i == 0 { "" } else { ", " })?;
+    }
+    if more > 0 {
+        write!(f, " and {more} more")?;
+    }
+    Ok(())
+}
+
 /// A point file that could not be read: where (1-based line number) and what.
 #[derive(Debug)]
 #[non_exhaustive]
 pub struct ParseError {
-    /// The 1-based line number of the problem, if it has one (opening a file has none).
+    /// The 1-based line number of the problem, if it has one (opening a file, and a file
+    /// that is no point list at all, [`ParseErrorKind::NotAPointFile`], have none).
     pub line: Option<usize>,
     /// What is wrong.
     pub kind: ParseErrorKind,
@@ -484,6 +628,70 @@ pub fn read_points<R: BufRead>(
     reader: R,
     format: Option<InputFormat>,
 ) -> Result<Vec<[f64; 2]>, ParseError> {
+    let options = ReadOptions {
+        format,
+        columns: None,
+    };
+    read_points_with(reader, &options)
+}
+
+/// How [`read_points_with`] reads a file: in which format, and which columns hold x and y.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct ReadOptions {
+    format: Option<InputFormat>,
+    columns: Option<ColumnSelection>,
+}
+
+impl ReadOptions {
+    /// The format detected from the content, the coordinate columns found by the header's
+    /// names (or the first two).
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Reads the file in `format` instead of detecting it.
+    pub fn with_format(mut self, format: InputFormat) -> Self {
+        self.format = Some(format);
+        self
+    }
+
+    /// Reads x and y from these columns of a text or CSV file (by header name, or by
+    /// position) instead of the header's coordinate names or the first two columns.
+    pub fn with_columns(mut self, columns: ColumnSelection) -> Self {
+        self.columns = Some(columns);
+        self
+    }
+
+    /// See [`with_format`](Self::with_format); `None`: detected.
+    pub fn format(&self) -> Option<InputFormat> {
+        self.format
+    }
+
+    /// See [`with_columns`](Self::with_columns).
+    pub fn columns(&self) -> Option<&ColumnSelection> {
+        self.columns.as_ref()
+    }
+}
+
+/// Reads points from `reader` as [`read_points`] does, with the format and the coordinate
+/// columns of `options`.
+///
+/// # Errors
+/// As for [`read_points`]; besides, a column of the [`ColumnSelection`] that the file does
+/// not have, a selection by name in a file without a header, or any selection in a `.node`
+/// file.
+pub fn read_points_with<R: BufRead>(
+    mut reader: R,
+    options: &ReadOptions,
+) -> Result<Vec<[f64; 2]>, ParseError> {
+    // A read error here is met again, with its line, by the line reader.
+    if let Some(kind) = reader.fill_buf().ok().and_then(sniff::sniff) {
+        return Err(ParseError {
+            line: None,
+            kind: ParseErrorKind::NotAPointFile { looks_like: kind },
+        });
+    }
+    let (format, selection) = (options.format, options.columns.as_ref());
     let mut lines = LineReader::new(reader);
     let mut points: Vec<[f64; 2]> = Vec::new();
     let mut state = State::Start;
@@ -501,6 +709,9 @@ pub fn read_points<R: BufRead>(
                     Some(_) => None,
                 };
                 match (node_header, format) {
+                    (Some(_), Some(_)) if selection.is_some() => {
+                        return Err(at(ParseErrorKind::ColumnsInNode));
+                    }
                     (Some(header), Some(_)) => {
                         points.reserve(header.count.min(1 << 20) as usize);
                         State::Node(NodeState::new(header, line_number))
@@ -509,11 +720,12 @@ pub fn read_points<R: BufRead>(
                     (None, Some(InputFormat::Text)) if looks_like_header(line) => {
                         return Err(at(ParseErrorKind::HeaderInText));
                     }
-                    (None, _) if looks_like_header(line) => {
-                        State::Rows(Some(Columns::from_header(line, line_number).map_err(at)?))
-                    }
+                    (None, _) if looks_like_header(line) => State::Rows(Some(
+                        Columns::from_header(line, line_number, selection).map_err(at)?,
+                    )),
                     (None, _) => {
-                        let mut columns = None;
+                        let mut columns =
+                            Some(Columns::without_header(selection, line_number).map_err(at)?);
                         points
                             .push(Columns::parse_row(&mut columns, line, line_number).map_err(at)?);
                         State::Rows(columns)
@@ -522,14 +734,22 @@ pub fn read_points<R: BufRead>(
             }
             State::PendingNode(header, header_line) => {
                 if header.confirmed_by(line) {
+                    if selection.is_some() {
+                        return Err(ParseError::at(header_line, ParseErrorKind::ColumnsInNode));
+                    }
                     points.reserve(header.count.min(1 << 20) as usize);
                     let mut node = NodeState::new(header, header_line);
                     points.push(node.parse_point(line).map_err(at)?);
                     State::Node(node)
                 } else {
                     // Not a .node file after all: the first line was a row of four numbers.
-                    points.push(header.as_point());
-                    let mut columns = Some(Columns::first_row(4, header_line));
+                    let columns = first_row_of_four(header, header_line, selection)?;
+                    points.push(
+                        columns
+                            .point_of(&header.as_row())
+                            .map_err(|kind| ParseError::at(header_line, kind))?,
+                    );
+                    let mut columns = Some(columns);
                     points.push(Columns::parse_row(&mut columns, line, line_number).map_err(at)?);
                     State::Rows(columns)
                 }
@@ -545,7 +765,13 @@ pub fn read_points<R: BufRead>(
         };
     }
     match state {
-        State::PendingNode(header, _) if header.count > 0 => points.push(header.as_point()),
+        State::PendingNode(header, header_line) if header.count > 0 => {
+            let columns = first_row_of_four(header, header_line, selection)?;
+            let point = columns
+                .point_of(&header.as_row())
+                .map_err(|kind| ParseError::at(header_line, kind))?;
+            points.push(point);
+        }
         State::Node(node) if node.seen < node.header.count => {
             return Err(ParseError::at(
                 node.header_line,
@@ -558,6 +784,19 @@ pub fn read_points<R: BufRead>(
         _ => {}
     }
     Ok(points)
+}
+
+/// The columns of a file whose first line, `header_line`, looked like a `.node` header
+/// `N 2 A B` but was a row of four numbers.
+fn first_row_of_four(
+    header: NodeHeader,
+    header_line: usize,
+    selection: Option<&ColumnSelection>,
+) -> Result<Columns, ParseError> {
+    let mut columns = Columns::without_header(selection, header_line)
+        .map_err(|kind| ParseError::at(header_line, kind))?;
+    columns.set_count(header.as_row().len());
+    Ok(columns)
 }
 
 /// Where the reader is in the file.

@@ -40,7 +40,7 @@ pub mod wdm;
 pub use curves::Curve;
 pub use diagnose::{Warning, WarningCode};
 pub use extract::EdgeClass;
-pub use options::{Algorithm, MedialAxisMode, Options};
+pub use options::{Algorithm, MedialAxisMode, Options, OptionsConflict, WdmSetting};
 pub use pipeline::{reconstruct, reconstruct_observed, reconstruct_with, Phase};
 pub use polygons::Polygon;
 pub use result::{MedialAxis, Reconstruction};

@@ -1,4 +1,8 @@
-//! What a reconstruction is asked to do: the algorithm and its settings.
+//! What a reconstruction is asked to do: the algorithm and its settings, and which settings
+//! do not apply together ([`Options::check`]).
+
+use std::fmt;
+use std::hash::{Hash, Hasher};
 
 pub use super::wdm::LabelRule;
 
@@ -67,6 +71,141 @@ impl MedialAxisMode {
     }
 }
 
+/// A setting of [`Options`] that only [`Algorithm::Wdm`] reads.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum WdmSetting {
+    /// [`Options::with_peeling`].
+    Peeling,
+    /// [`Options::with_peeling_budget`].
+    PeelingBudget,
+    /// [`Options::with_medial_axis`].
+    MedialAxis,
+    /// [`Options::with_label_rule`].
+    LabelRule,
+    /// [`Options::with_detour_repair`].
+    DetourRepair,
+    /// [`Options::with_open_curves`].
+    OpenCurves,
+}
+
+impl WdmSetting {
+    /// Every setting, in the order [`Options::check`] looks at them.
+    const ALL: [WdmSetting; 6] = [
+        WdmSetting::MedialAxis,
+        WdmSetting::Peeling,
+        WdmSetting::PeelingBudget,
+        WdmSetting::LabelRule,
+        WdmSetting::DetourRepair,
+        WdmSetting::OpenCurves,
+    ];
+
+    /// The setting in words: `"medial axis"`, `"peeling budget"`, ...
+    pub fn name(self) -> &'static str {
+        match self {
+            WdmSetting::Peeling => "peeling",
+            WdmSetting::PeelingBudget => "peeling budget",
+            WdmSetting::MedialAxis => "medial axis",
+            WdmSetting::LabelRule => "label rule",
+            WdmSetting::DetourRepair => "detour repair",
+            WdmSetting::OpenCurves => "open curves",
+        }
+    }
+
+    fn bit(self) -> u8 {
+        1 << (self as u8)
+    }
+}
+
+/// Settings of [`Options`] that do not apply together, found by [`Options::check`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum OptionsConflict {
+    /// A WDM setting that asks a baseline algorithm for something it does not do.
+    WdmOnly {
+        /// The setting given.
+        setting: WdmSetting,
+        /// The baseline asked for.
+        algorithm: Algorithm,
+    },
+    /// A peeling budget given with peeling off: there is no peeling for it to bound.
+    BudgetWithoutPeeling,
+}
+
+impl OptionsConflict {
+    /// Why the settings do not apply together, in words that do not depend on how the caller
+    /// spells them: `"crust computes no medial axis"`.
+    pub fn reason(&self) -> String {
+        match *self {
+            OptionsConflict::WdmOnly { setting, algorithm } => {
+                let name = algorithm.name();
+                match setting {
+                    WdmSetting::MedialAxis => format!("{name} computes no medial axis"),
+                    WdmSetting::Peeling | WdmSetting::PeelingBudget => {
+                        format!("{name} runs one pass and has no peeling")
+                    }
+                    WdmSetting::LabelRule => {
+                        format!(
+                            "{name} labels no Voronoi vertices (the labels are WDM's water flow)"
+                        )
+                    }
+                    WdmSetting::DetourRepair => format!("{name} has no detour repair"),
+                    WdmSetting::OpenCurves => {
+                        format!("{name} has no open-curve stage (its curves are its own edges)")
+                    }
+                }
+            }
+            OptionsConflict::BudgetWithoutPeeling => {
+                "peeling is off, so there is no peeling for the budget to bound".to_string()
+            }
+        }
+    }
+}
+
+impl fmt::Display for OptionsConflict {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            OptionsConflict::WdmOnly { setting, algorithm } => write!(
+                f,
+                "the {} setting does not apply to {}: {}",
+                setting.name(),
+                algorithm.name(),
+                self.reason()
+            ),
+            OptionsConflict::BudgetWithoutPeeling => write!(
+                f,
+                "the peeling budget does not apply without peeling: {}",
+                self.reason()
+            ),
+        }
+    }
+}
+
+impl std::error::Error for OptionsConflict {}
+
+/// The [`WdmSetting`]s set through a `with_*` method: what [`Options::check`] reads. Not
+/// part of what options are equal by (they ask for the same reconstruction either way).
+#[derive(Debug, Clone, Copy, Default)]
+struct Given(u8);
+
+impl Given {
+    fn has(self, setting: WdmSetting) -> bool {
+        self.0 & setting.bit() != 0
+    }
+}
+
+impl PartialEq for Given {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl Eq for Given {}
+
+impl Hash for Given {
+    fn hash<H: Hasher>(&self, _: &mut H) {}
+}
+
 /// Reconstruction options, set through `with_*` methods so that new ones can come without
 /// breaking callers.
 ///
@@ -76,6 +215,9 @@ impl MedialAxisMode {
 /// assert_eq!(options.algorithm(), Algorithm::Crust);
 /// assert!(!options.peeling());
 /// ```
+///
+/// The settings of WDM ([`WdmSetting`]) are ignored by the baselines; [`check`](Self::check)
+/// tells a caller who wants to refuse them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Options {
     algorithm: Algorithm,
@@ -85,6 +227,7 @@ pub struct Options {
     medial_axis: MedialAxisMode,
     detour_repair: bool,
     open_curves: bool,
+    given: Given,
 }
 
 impl Default for Options {
@@ -97,6 +240,7 @@ impl Default for Options {
             medial_axis: MedialAxisMode::Pruned,
             detour_repair: true,
             open_curves: true,
+            given: Given(0),
         }
     }
 }
@@ -119,12 +263,14 @@ impl Options {
     /// a hole, so its inner curve would be lost. On by default; WDM only.
     pub fn with_peeling(mut self, peeling: bool) -> Self {
         self.peeling = peeling;
+        self.given.0 |= WdmSetting::Peeling.bit();
         self
     }
 
     /// How water-flow states become labels (see [`LabelRule`]); WDM only.
     pub fn with_label_rule(mut self, label_rule: LabelRule) -> Self {
         self.label_rule = label_rule;
+        self.given.0 |= WdmSetting::LabelRule.bit();
         self
     }
 
@@ -137,12 +283,14 @@ impl Options {
     /// tells when it stopped the peeling.
     pub fn with_peeling_budget(mut self, peeling_budget: usize) -> Self {
         self.peeling_budget = peeling_budget;
+        self.given.0 |= WdmSetting::PeelingBudget.bit();
         self
     }
 
     /// The medial axis returned (default [`MedialAxisMode::Pruned`]); WDM only.
     pub fn with_medial_axis(mut self, medial_axis: MedialAxisMode) -> Self {
         self.medial_axis = medial_axis;
+        self.given.0 |= WdmSetting::MedialAxis.bit();
         self
     }
 
@@ -155,6 +303,7 @@ impl Options {
     /// nothing when every point is on a curve.
     pub fn with_detour_repair(mut self, detour_repair: bool) -> Self {
         self.detour_repair = detour_repair;
+        self.given.0 |= WdmSetting::DetourRepair.bit();
         self
     }
 
@@ -182,6 +331,7 @@ impl Options {
     /// ```
     pub fn with_open_curves(mut self, open_curves: bool) -> Self {
         self.open_curves = open_curves;
+        self.given.0 |= WdmSetting::OpenCurves.bit();
         self
     }
 
@@ -218,5 +368,157 @@ impl Options {
     /// See [`with_detour_repair`](Self::with_detour_repair).
     pub fn detour_repair(&self) -> bool {
         self.detour_repair
+    }
+
+    /// Whether the settings given (through a `with_*` method, even with the default value)
+    /// apply together; the first conflict if not.
+    ///
+    /// A setting of WDM ([`WdmSetting`]) given with [`Algorithm::Crust`] or
+    /// [`Algorithm::NnCrust`] conflicts when it asks for something the baseline does not do:
+    /// a medial axis ([`MedialAxisMode::Pruned`] or [`MedialAxisMode::Raw`]), peeling
+    /// (`with_peeling(true)`), a peeling budget, a label rule, the detour repair
+    /// (`with_detour_repair(true)`), open curves (either way: the baseline's chains are its
+    /// own edges, not the open-curve stage's). A setting that turns off what the baseline
+    /// lacks anyway ([`MedialAxisMode::Omitted`], `with_peeling(false)`,
+    /// `with_detour_repair(false)`) does not: the result is what it asks for, so one set of
+    /// such options serves every algorithm. A peeling budget given with peeling off
+    /// conflicts too.
+    ///
+    /// [`reconstruct_with`](super::reconstruct_with) does not call it (a baseline ignores the
+    /// WDM settings); the command line and the Python package do, and refuse the conflict.
+    ///
+    /// ```
+    /// use wdm_crust::reconstruct::{Algorithm, MedialAxisMode, Options, OptionsConflict, WdmSetting};
+    /// let crust = Options::new().with_algorithm(Algorithm::Crust);
+    /// assert_eq!(crust.check(), Ok(()));
+    /// let raw = crust.with_medial_axis(MedialAxisMode::Raw);
+    /// assert_eq!(
+    ///     raw.check(),
+    ///     Err(OptionsConflict::WdmOnly { setting: WdmSetting::MedialAxis, algorithm: Algorithm::Crust })
+    /// );
+    /// assert_eq!(raw.check().unwrap_err().reason(), "crust computes no medial axis");
+    /// // Turning off what the crust does not have anyway is fine.
+    /// assert_eq!(crust.with_medial_axis(MedialAxisMode::Omitted).with_peeling(false).check(), Ok(()));
+    /// // A budget for a peeling that is off.
+    /// let single = Options::new().with_peeling(false).with_peeling_budget(2);
+    /// assert_eq!(single.check(), Err(OptionsConflict::BudgetWithoutPeeling));
+    /// ```
+    pub fn check(&self) -> Result<(), OptionsConflict> {
+        if self.algorithm != Algorithm::Wdm {
+            for setting in WdmSetting::ALL {
+                if self.given.has(setting) && self.asks_for(setting) {
+                    return Err(OptionsConflict::WdmOnly {
+                        setting,
+                        algorithm: self.algorithm,
+                    });
+                }
+            }
+        }
+        if self.given.has(WdmSetting::PeelingBudget) && !self.peeling {
+            return Err(OptionsConflict::BudgetWithoutPeeling);
+        }
+        Ok(())
+    }
+
+    /// Whether `setting`, as set, asks for a part of WDM (rather than turning one off).
+    fn asks_for(&self, setting: WdmSetting) -> bool {
+        match setting {
+            WdmSetting::Peeling => self.peeling,
+            WdmSetting::MedialAxis => self.medial_axis != MedialAxisMode::Omitted,
+            WdmSetting::DetourRepair => self.detour_repair,
+            WdmSetting::PeelingBudget | WdmSetting::LabelRule | WdmSetting::OpenCurves => true,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wdm_settings_that_ask_a_baseline_for_what_it_lacks_conflict() {
+        for algorithm in [Algorithm::Crust, Algorithm::NnCrust] {
+            let base = Options::new().with_algorithm(algorithm);
+            let conflict = |setting| Err(OptionsConflict::WdmOnly { setting, algorithm });
+            assert_eq!(base.check(), Ok(()));
+            for mode in [MedialAxisMode::Pruned, MedialAxisMode::Raw] {
+                let options = base.with_medial_axis(mode);
+                assert_eq!(options.check(), conflict(WdmSetting::MedialAxis));
+            }
+            assert_eq!(
+                base.with_peeling(true).check(),
+                conflict(WdmSetting::Peeling)
+            );
+            assert_eq!(
+                base.with_peeling_budget(4).check(),
+                conflict(WdmSetting::PeelingBudget)
+            );
+            assert_eq!(
+                base.with_label_rule(LabelRule::WaterReached).check(),
+                conflict(WdmSetting::LabelRule)
+            );
+            assert_eq!(
+                base.with_detour_repair(true).check(),
+                conflict(WdmSetting::DetourRepair)
+            );
+            for on in [true, false] {
+                assert_eq!(
+                    base.with_open_curves(on).check(),
+                    conflict(WdmSetting::OpenCurves)
+                );
+            }
+            // Off where the baseline has nothing to turn off.
+            let off = base
+                .with_medial_axis(MedialAxisMode::Omitted)
+                .with_peeling(false)
+                .with_detour_repair(false);
+            assert_eq!(off.check(), Ok(()));
+            // The order the settings were given in does not matter, nor the algorithm's place.
+            let late = Options::new()
+                .with_medial_axis(MedialAxisMode::Raw)
+                .with_algorithm(algorithm);
+            assert_eq!(late.check(), conflict(WdmSetting::MedialAxis));
+            assert_eq!(
+                late.check().unwrap_err().to_string(),
+                format!(
+                    "the medial axis setting does not apply to {0}: {0} computes no medial axis",
+                    algorithm.name()
+                )
+            );
+        }
+    }
+
+    #[test]
+    fn wdm_takes_every_setting_but_a_budget_without_peeling() {
+        let every = Options::new()
+            .with_algorithm(Algorithm::Wdm)
+            .with_medial_axis(MedialAxisMode::Raw)
+            .with_peeling(true)
+            .with_peeling_budget(2)
+            .with_label_rule(LabelRule::WaterReached)
+            .with_detour_repair(false)
+            .with_open_curves(false);
+        assert_eq!(every.check(), Ok(()));
+        assert_eq!(
+            every.with_peeling(false).check(),
+            Err(OptionsConflict::BudgetWithoutPeeling)
+        );
+        assert_eq!(Options::new().with_peeling(false).check(), Ok(()));
+    }
+
+    #[test]
+    fn options_are_equal_by_what_they_ask_for() {
+        assert_eq!(Options::new(), Options::new().with_peeling(true));
+        assert_ne!(Options::new(), Options::new().with_peeling(false));
+        let hash = |o: &Options| {
+            use std::collections::hash_map::DefaultHasher;
+            let mut h = DefaultHasher::new();
+            o.hash(&mut h);
+            h.finish()
+        };
+        assert_eq!(
+            hash(&Options::new()),
+            hash(&Options::new().with_peeling_budget(4))
+        );
     }
 }

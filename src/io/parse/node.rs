@@ -32,9 +32,14 @@ impl NodeHeader {
             && Some(count) == self.fields()
     }
 
-    /// The header line read as a row of plain text: the point `(N, 2)` in four columns.
-    pub(super) fn as_point(&self) -> [f64; 2] {
-        [self.count as f64, 2.0]
+    /// The header line read as a row of plain text: the four numbers `N 2 A B`.
+    pub(super) fn as_row(&self) -> [f64; 4] {
+        [
+            self.count as f64,
+            2.0,
+            self.attributes as f64,
+            self.markers as f64,
+        ]
     }
 }
 

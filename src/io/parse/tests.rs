@@ -400,8 +400,17 @@ fn binary_garbage() {
     assert_eq!(err.line, Some(2));
     assert!(matches!(err.kind, ParseErrorKind::InvalidUtf8));
 
-    // UTF-16 text: NUL bytes on line 1.
+    // UTF-16 text: said so, before its NUL bytes on line 1.
     let err = read_points(&b"\xff\xfe1\x00 \x002\x00"[..], None).unwrap_err();
+    assert_eq!(err.line, None);
+    assert!(matches!(
+        err.kind,
+        ParseErrorKind::NotAPointFile {
+            looks_like: FileKind::Utf16
+        }
+    ));
+    // NUL bytes that are not UTF-16.
+    let err = read_points(&b"\x00\x00\x01\x02"[..], None).unwrap_err();
     assert_eq!(err.line, Some(1));
     assert!(matches!(err.kind, ParseErrorKind::NulByte));
 
@@ -649,10 +658,11 @@ fn a_header_selects_x_and_y_by_name() {
 #[test]
 fn a_header_without_x_and_y_names_its_columns() {
     for (text, names) in [
-        ("lon,lat\n1,2\n", "\"lon\", \"lat\""),
-        ("longitude latitude\n1 2\n", "\"longitude\", \"latitude\""),
+        ("lat,height\n1,2\n", "\"lat\", \"height\""),
+        ("long lat_deg\n1 2\n", "\"long\", \"lat_deg\""),
         ("id,x,z\n1,2,3\n", "\"id\", \"x\", \"z\""),
         ("\"X coord\",\"Y coord\"\n1,2\n", "\"X coord\", \"Y coord\""),
+        ("east,north\n1,2\n", "\"east\", \"north\""),
     ] {
         let kind = err_at(text, None, 1);
         assert!(
@@ -661,7 +671,11 @@ fn a_header_without_x_and_y_names_its_columns() {
         );
         let message = kind.to_string();
         assert!(message.contains(names), "{message}");
-        assert!(message.contains("no `x` and `y`"), "{message}");
+        assert!(
+            message.contains("but no pair of coordinate names it knows"),
+            "{message}"
+        );
+        assert!(message.contains("--columns X,Y"), "{message}");
     }
     let many: Vec<String> = (0..40).map(|i| format!("c{i}")).collect();
     let kind = err_at(&format!("{}\n", many.join(",")), None, 1);
@@ -846,4 +860,331 @@ proptest! {
         let expected: Vec<[f64; 2]> = rows.iter().map(|r| [r[x_at], r[y_at]]).collect();
         prop_assert_eq!(parse(&text).unwrap(), expected);
     }
+}
+
+// ----- coordinate names other than x and y; choosing the columns -----
+
+fn read_with(text: &str, columns: &str) -> Result<Vec<[f64; 2]>, ParseError> {
+    let options = ReadOptions::new().with_columns(columns.parse().unwrap());
+    read_points_with(text.as_bytes(), &options)
+}
+
+/// The error of `text` read with `--columns columns`, checking its line and that its message
+/// is one line.
+fn err_with(text: &str, columns: &str, line: usize) -> ParseErrorKind {
+    let err = read_with(text, columns).expect_err(text);
+    let message = err.to_string();
+    assert_eq!(err.line, Some(line), "{text:?}: {message}");
+    assert!(!message.contains('\n'), "{message:?}");
+    err.kind
+}
+
+#[test]
+fn geographic_and_projected_names_are_recognised_in_any_case() {
+    // Longitude is x, latitude y, whatever their order in the file.
+    let expected = vec![[7.4474, 46.948], [-0.1276, 51.5072]];
+    for header in [
+        "lon,lat",
+        "LON,LAT",
+        "Lon,Lat",
+        "longitude,latitude",
+        "Longitude,Latitude",
+        "lng,lat",
+        "long,lat",
+        "longitude,lat",
+        "lon,latitude",
+        "easting,northing",
+        "Easting,Northing",
+        "x,y",
+    ] {
+        let text = format!("{header}\n7.4474,46.948\n-0.1276,51.5072\n");
+        assert_eq!(ok(&text), expected, "{header}");
+        assert_eq!(detect_format(text.as_bytes()), InputFormat::Csv, "{header}");
+        // Reversed: the y name first.
+        let (a, b) = header.split_once(',').unwrap();
+        let text = format!("{b},{a}\n46.948,7.4474\n51.5072,-0.1276\n");
+        assert_eq!(ok(&text), expected, "{b},{a}");
+    }
+    // Lat/Long spreadsheets: lat is y although it comes first.
+    assert_eq!(
+        ok("City,Lat,Long\nBern,46.948,7.4474\nLondon,51.5072,-0.1276\n"),
+        expected
+    );
+    // Quoted names, a byte-order mark, white space around the names, tab separation.
+    assert_eq!(
+        ok("\u{feff}\"lat\",\"lon\"\r\n46.948,7.4474\r\n51.5072,-0.1276\r\n"),
+        expected
+    );
+    assert_eq!(
+        ok("\u{feff}id\t Latitude \tLongitude\n1\t46.948\t7.4474\n2\t51.5072\t-0.1276\n"),
+        expected
+    );
+    // The exact decimals read back bit for bit.
+    let [[x, y]] = ok("lat,lon\n0.1,-179.99999999999997\n")[..] else {
+        panic!()
+    };
+    assert_eq!(
+        (x.to_bits(), y.to_bits()),
+        ((-179.99999999999997f64).to_bits(), 0.1f64.to_bits())
+    );
+}
+
+#[test]
+fn a_header_that_could_be_misread_is_refused() {
+    for (text, pairs) in [
+        ("x,y,lon,lat\n1,2,3,4\n", "(`x,y` and `lon,lat`)"),
+        (
+            "lat,lon,Easting,Northing\n1,2,3,4\n",
+            "(`lon,lat` and `Easting,Northing`)",
+        ),
+        (
+            "lon,longitude,lat\n1,2,3\n",
+            "(`lon,lat` and `longitude,lat`)",
+        ),
+        (
+            "lon,lat,latitude\n1,2,3\n",
+            "(`lon,lat` and `lon,latitude`)",
+        ),
+    ] {
+        let kind = err_at(text, None, 1);
+        assert!(
+            matches!(kind, ParseErrorKind::AmbiguousColumns { .. }),
+            "{text:?}: {kind}"
+        );
+        let message = kind.to_string();
+        assert!(message.contains(pairs), "{message}");
+        assert!(
+            message.contains("choose one with --columns X,Y"),
+            "{message}"
+        );
+    }
+    for (text, name) in [("lat,lon,LAT\n1,2,3\n", "lat"), ("x,y,X\n1,2,3\n", "x")] {
+        let kind = err_at(text, None, 1);
+        assert!(
+            matches!(kind, ParseErrorKind::DuplicateColumn { name: ref n } if n == name),
+            "{text:?}: {kind}"
+        );
+        assert!(kind.to_string().contains("--columns 2,3"), "{kind}");
+    }
+    // A lone coordinate name of another family does not make x,y ambiguous.
+    assert_eq!(ok("x,y,lat\n1,2,3\n"), vec![[1.0, 2.0]]);
+    // --columns settles each of them.
+    assert_eq!(
+        read_with("x,y,lon,lat\n1,2,3,4\n", "lon,lat").unwrap(),
+        vec![[3.0, 4.0]]
+    );
+    assert_eq!(
+        read_with("x,y,lon,lat\n1,2,3,4\n", "X,Y").unwrap(),
+        vec![[1.0, 2.0]]
+    );
+    assert_eq!(
+        read_with("x,y,X\n1,2,3\n", "3,2").unwrap(),
+        vec![[3.0, 2.0]]
+    );
+}
+
+#[test]
+fn columns_by_name_in_any_case() {
+    let text = "station,height,\"Lon (deg)\",\"Lat (deg)\"\nA,500,7.5,46.25\n\"B, C\",0,-8,47\n";
+    let expected = vec![[7.5, 46.25], [-8.0, 47.0]];
+    assert_eq!(read_with(text, "lon (deg),LAT (DEG)").unwrap(), expected);
+    assert_eq!(
+        read_with(text, " Lon (deg) , Lat (deg) ").unwrap(),
+        expected
+    );
+    // y before x.
+    assert_eq!(
+        read_with(text, "Lat (deg),Lon (deg)").unwrap(),
+        vec![[46.25, 7.5], [47.0, -8.0]]
+    );
+    // The recognised names can be chosen too, and other columns swapped in.
+    assert_eq!(
+        read_with("id,x,y,z\n1,2,3,4\n", "x,z").unwrap(),
+        vec![[2.0, 4.0]]
+    );
+    // The same with explicit CSV.
+    let options = ReadOptions::new()
+        .with_format(InputFormat::Csv)
+        .with_columns("y,x".parse().unwrap());
+    assert_eq!(
+        read_points_with("x,y\n1,2\n".as_bytes(), &options).unwrap(),
+        vec![[2.0, 1.0]]
+    );
+}
+
+#[test]
+fn columns_by_position() {
+    // A file without a header.
+    assert_eq!(
+        read_with("7 1.5 2\n8 -3 4\n", "2,3").unwrap(),
+        vec![[1.5, 2.0], [-3.0, 4.0]]
+    );
+    assert_eq!(
+        read_with("7,1.5,2\n8,-3,4\n", "3,1").unwrap(),
+        vec![[2.0, 7.0], [4.0, 8.0]]
+    );
+    // A header's columns, by position.
+    assert_eq!(
+        read_with("a,b,c\n1,2,3\n", "3,1").unwrap(),
+        vec![[3.0, 1.0]]
+    );
+    // A first line that looks like a .node header but is a row of four numbers.
+    assert_eq!(
+        read_with("5 2 0 1\n6 7 8 9\n", "4,3").unwrap(),
+        vec![[1.0, 0.0], [9.0, 8.0]]
+    );
+    assert_eq!(read_with("5 2 0 1\n", "4,1").unwrap(), vec![[1.0, 5.0]]);
+    // Every row still needs the columns of the first.
+    let kind = err_with("7 1 2\n8 3\n", "2,3", 2);
+    assert!(
+        matches!(
+            kind,
+            ParseErrorKind::ColumnCount {
+                found: 2,
+                expected: 3,
+                line: 1,
+                header: false
+            }
+        ),
+        "{kind}"
+    );
+}
+
+#[test]
+fn a_chosen_column_the_file_lacks_is_named_with_the_columns_it_has() {
+    let kind = err_with("# export\nid,lon,lat\n1,2,3\n", "longitude,lat", 2);
+    match &kind {
+        ParseErrorKind::ColumnNotFound {
+            name,
+            columns,
+            more,
+        } => {
+            assert_eq!(name, "longitude");
+            assert_eq!(columns, &["id", "lon", "lat"]);
+            assert_eq!(*more, 0);
+        }
+        other => panic!("{other}"),
+    }
+    assert_eq!(
+        kind.to_string(),
+        "--columns asks for a column \"longitude\", but the header line has none (names are \
+         compared in any case); its columns are \"id\", \"lon\", \"lat\""
+    );
+    let many: Vec<String> = (0..20).map(|i| format!("c{i}")).collect();
+    let kind = err_with(&format!("{}\n", many.join(",")), "x,c1", 1);
+    assert!(kind.to_string().ends_with("\"c11\" and 8 more"), "{kind}");
+    // By position.
+    let kind = err_with("a,b,c\n1,2,3\n", "2,4", 1);
+    assert_eq!(
+        kind.to_string(),
+        "--columns asks for column 4, but the header line has 3 columns"
+    );
+    let kind = err_with("\n1 2 3\n", "5,1", 2);
+    assert_eq!(
+        kind.to_string(),
+        "--columns asks for column 5, but the first row has 3 columns"
+    );
+    // A name twice in the header, a name and a position of one column.
+    let kind = err_with("lon,Lon,lat\n1,2,3\n", "lon,lat", 1);
+    assert!(
+        matches!(kind, ParseErrorKind::DuplicateColumn { .. }),
+        "{kind}"
+    );
+    let kind = err_with("lon,lat\n1,2\n", "lon,1", 1);
+    assert_eq!(
+        kind.to_string(),
+        "--columns chooses the column \"lon\" for both x and y"
+    );
+}
+
+#[test]
+fn columns_by_name_need_a_header() {
+    let kind = err_with("# no header\n1 2 3\n4 5 6\n", "lon,lat", 2);
+    assert!(
+        matches!(kind, ParseErrorKind::ColumnsWithoutHeader { ref name } if name == "lon"),
+        "{kind}"
+    );
+    assert!(kind.to_string().contains("--columns 2,3"), "{kind}");
+    // Explicit text has no header: a header line stays an error there.
+    let options = ReadOptions::new()
+        .with_format(InputFormat::Text)
+        .with_columns("lon,lat".parse().unwrap());
+    let err = read_points_with("lon,lat\n1,2\n".as_bytes(), &options).unwrap_err();
+    assert!(matches!(err.kind, ParseErrorKind::HeaderInText), "{err}");
+}
+
+#[test]
+fn columns_are_refused_for_node_files() {
+    let node = "3 2 0 0\n0 1.5 2\n1 3 4\n2 5 6\n";
+    // Detected from the content, and asked for.
+    let kind = err_with(node, "2,3", 1);
+    assert!(matches!(kind, ParseErrorKind::ColumnsInNode), "{kind}");
+    let options = ReadOptions::new()
+        .with_format(InputFormat::Node)
+        .with_columns("2,3".parse().unwrap());
+    let err = read_points_with(node.as_bytes(), &options).unwrap_err();
+    assert!(matches!(err.kind, ParseErrorKind::ColumnsInNode), "{err}");
+    assert_eq!(err.line, Some(1));
+}
+
+#[test]
+fn column_selections_are_parsed_strictly() {
+    let selection: ColumnSelection = " Lon , 3 ".parse().unwrap();
+    assert_eq!(selection.x(), &Column::Name("Lon".to_string()));
+    assert_eq!(selection.y(), &Column::Position(3));
+    assert_eq!(selection.to_string(), "Lon,3");
+    for (text, message) in [
+        ("lon", "expected two columns X,Y (names or 1-based positions) separated by a comma, got one"),
+        ("a,b,c", "expected two columns X,Y (names or 1-based positions) separated by a comma, got 3"),
+        ("lon,", "a column name is empty"),
+        ("0,1", "column positions count from 1"),
+        ("lat,LAT", "x and y must be two different columns, got lat and LAT (names are compared in any case)"),
+        ("lat,lat", "x and y must be two different columns, got lat twice"),
+        ("2,2", "x and y must be two different columns, got 2 twice"),
+        ("1,99999999999999999999999", "column position 99999999999999999999999 is too large"),
+    ] {
+        let err = text.parse::<ColumnSelection>().unwrap_err();
+        assert_eq!(err.to_string(), message, "{text:?}");
+    }
+}
+
+#[test]
+fn files_that_are_no_point_list_say_what_they_look_like() {
+    for (content, looks_like, advice) in [
+        (
+            &b"<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 10 10\">\n"[..],
+            FileKind::Svg,
+            "this looks like an SVG drawing (XML), not a list of points; export the points as text (one `x y` per line) or CSV",
+        ),
+        (b"\xEF\xBB\xBF\n  <svg>", FileKind::Svg, "export the points as text"),
+        (b"<!DOCTYPE html>\n<html>", FileKind::Html, "an HTML page"),
+        (b"<?xml version=\"1.0\"?>\n<gpx>", FileKind::Xml, "an XML document"),
+        (
+            b"{\"type\":\"FeatureCollection\",\"features\":[]}\n",
+            FileKind::Json,
+            "this looks like JSON (or GeoJSON), not a list of points",
+        ),
+        (b"[[0, 1], [2, 3]]\n", FileKind::Json, "JSON"),
+        (b"\x1f\x8b\x08\x00\x00\x00", FileKind::Gzip, "gzip -dc FILE"),
+        (b"PK\x03\x04\x14\x00\x06\x00", FileKind::Zip, "save the spreadsheet as CSV"),
+        (b"\x89PNG\r\n\x1a\n\x00\x00", FileKind::Image, "an image"),
+        (b"%PDF-1.7\n%\xe2\xe3", FileKind::Pdf, "a PDF document"),
+        (b"\xff\xfe1\x00 \x002\x00\r\x00\n\x00", FileKind::Utf16, "save it as UTF-8"),
+    ] {
+        for format in [None, Some(InputFormat::Text), Some(InputFormat::Csv), Some(InputFormat::Node)] {
+            let err = read_points(content, format).unwrap_err();
+            assert_eq!(err.line, None, "{content:?}");
+            assert!(
+                matches!(err.kind, ParseErrorKind::NotAPointFile { looks_like: k } if k == looks_like),
+                "{content:?}: {err}"
+            );
+            let message = err.to_string();
+            assert!(message.contains(advice), "{message}");
+            assert!(!message.contains('\n'), "{message:?}");
+        }
+    }
+    // Markup after a comment line, or inside one, keeps the ordinary messages.
+    let kind = err_at("# drawing\n<svg>\n", None, 2);
+    assert!(matches!(kind, ParseErrorKind::NotANumber { .. }), "{kind}");
+    assert_eq!(ok("# <svg> and {json}\n1 2\n"), vec![[1.0, 2.0]]);
 }

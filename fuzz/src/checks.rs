@@ -1073,6 +1073,15 @@ pub fn check_default(points: &[[f64; 2]], rec: &Reconstruction) -> Check {
         rec.untouched_points()
     );
     check_plane_drawing(points, rec.edges())?;
+    for warning in rec.warnings() {
+        ensure!(
+            warning.points.iter().all(|&p| (p as usize) < points.len()),
+            "warning {} names a point out of range: {:?}",
+            warning.code,
+            warning.points
+        );
+        ensure!(!warning.message.is_empty(), "warning {} without a message", warning.code);
+    }
     let axis = rec.medial_axis();
     ensure!(
         axis.edges.windows(2).all(|w| w[0] < w[1]),
@@ -1226,6 +1235,13 @@ pub fn check_permuted(
     ensure!(
         canonical_curves(permuted, back) == canonical_curves(rec, |i| i),
         "permuted input: the curves differ (original indices)"
+    );
+    let codes = |r: &Reconstruction| r.warnings().iter().map(|w| w.code).collect::<Vec<_>>();
+    ensure!(
+        codes(permuted) == codes(rec),
+        "permuted input: warnings {:?}, original {:?}",
+        codes(permuted),
+        codes(rec)
     );
     let mut untouched: Vec<u32> = permuted.untouched_points().into_iter().map(back).collect();
     untouched.sort_unstable();

@@ -261,6 +261,48 @@ fn medial_axis_of_noisy_chains_does_not_depend_on_the_input_order() {
     check_everything(&points);
 }
 
+/// Found by `reconstruct` (its permutation check): 83 points of a curve of order 1e190 and
+/// one of order 1e-312 in two orders (`tests/data/regressions/flow-junctions-far-apart-in-
+/// scale*.txt`; the seed `fuzz/seeds/reconstruct/warnings-at-flow-junctions-order.bin`).
+/// Without the open-curve stage the crust has junctions, which end several chains; the
+/// warnings read a junction's curve neighbours off the chain listed last, whose split
+/// follows the caller's indices, and called the points a scatter in one order only. They
+/// read them off the edges now.
+#[test]
+fn warnings_same_in_any_order_at_junctions() {
+    let read = |name: &str| {
+        let path = format!(
+            "{}/tests/data/regressions/{name}",
+            env!("CARGO_MANIFEST_DIR")
+        );
+        wdm_crust::io::read_points_from_path(std::path::Path::new(&path))
+            .unwrap_or_else(|e| panic!("{path}: {e}"))
+    };
+    let points = read("flow-junctions-far-apart-in-scale.txt");
+    let permuted = read("flow-junctions-far-apart-in-scale-permuted.txt");
+    assert_eq!((points.len(), permuted.len()), (83, 83));
+    let flow_only = Options::new()
+        .with_medial_axis(MedialAxisMode::Raw)
+        .with_detour_repair(false)
+        .with_open_curves(false)
+        .with_peeling(false);
+    let codes = |p: &[[f64; 2]]| {
+        let rec = reconstruct_with(p, &flow_only).unwrap();
+        let mut degree = vec![0; p.len()];
+        for &[a, b] in rec.edges() {
+            degree[a as usize] += 1;
+            degree[b as usize] += 1;
+        }
+        let degree_three = degree.iter().any(|&d| d > 2);
+        let codes: Vec<_> = rec.warnings().iter().map(|w| w.code).collect();
+        (degree_three, codes)
+    };
+    let (junctions, mine) = codes(&points);
+    assert!(junctions, "the crust has a junction");
+    assert!(!mine.is_empty());
+    assert_eq!(codes(&permuted).1, mine);
+}
+
 /// Found by `reconstruct` (its permutation check): 223 subnormal points whose distinct
 /// points are the eight points of a 3 × 3 grid without its centre, 1 ulp apart, in two
 /// orders (`tests/data/regressions/subnormal-grid-without-centre*.txt`; the seed

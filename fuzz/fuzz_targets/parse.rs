@@ -8,7 +8,7 @@
 use std::io::BufReader;
 
 use libfuzzer_sys::fuzz_target;
-use wdm_crust::io::{detect_format, read_points, InputFormat, ParseError};
+use wdm_crust::io::{detect_format, read_points, InputFormat, ParseError, ParseErrorKind};
 use wdm_crust_fuzz::checks::expected_error;
 
 /// Number of lines, with `\n`, `\r\n` and lone `\r` as line ends and a final unterminated one.
@@ -65,6 +65,10 @@ fuzz_target!(|input: &[u8]| {
             "format {format:?}: buffer size matters"
         );
         match &whole {
+            // A file that is no point list at all is refused before its first line.
+            Err(e) if matches!(e.kind, ParseErrorKind::NotAPointFile { .. }) => {
+                assert!(e.line.is_none(), "format {format:?}: {e} on a line");
+            }
             Err(e) => {
                 let line = e.line.expect("reading a slice cannot fail without a line");
                 assert!(

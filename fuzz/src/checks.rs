@@ -1080,7 +1080,11 @@ pub fn check_default(points: &[[f64; 2]], rec: &Reconstruction) -> Check {
             warning.code,
             warning.points
         );
-        ensure!(!warning.message.is_empty(), "warning {} without a message", warning.code);
+        ensure!(
+            !warning.message.is_empty(),
+            "warning {} without a message",
+            warning.code
+        );
     }
     let axis = rec.medial_axis();
     ensure!(

@@ -177,70 +177,90 @@ fn peeling_budget(rec: &Reconstruction) -> Warning {
     }
 }
 
-/// The curves in local indices: each point's curve, position and curve neighbours.
+/// The curves in local indices: each point's curve neighbours, and its curve and position
+/// in it where that is one curve.
 struct CurveView {
-    /// For every local point: its curve (`u32::MAX` when on none) and position in it.
+    /// For every local point: its curve and position in it; `(NO_CURVE, 0)` when on none,
+    /// `(JUNCTION, 0)` at a point of three or more edges (a baseline's or the water flow's
+    /// junction), which ends several chains.
     place: Vec<(u32, u32)>,
     /// Each curve's local points in order, and whether it is closed.
     curves: Vec<(Vec<u32>, bool)>,
+    /// Every point's edge neighbours, in compressed rows: the curve neighbours of a point
+    /// are those of its edges, whichever curves they were assembled into (that split at a
+    /// junction follows the caller's indices; the edges do not).
+    start: Vec<u32>,
+    targets: Vec<u32>,
     curve_points: usize,
 }
 
 const NO_CURVE: u32 = u32::MAX;
+const JUNCTION: u32 = u32::MAX - 1;
 
 impl CurveView {
     fn new(rec: &Reconstruction) -> Self {
         let tri = &rec.triangulation;
-        let mut place = vec![(NO_CURVE, 0); tri.distinct_point_count()];
+        let n = tri.distinct_point_count();
+        let edges: Vec<[u32; 2]> = rec
+            .edges
+            .iter()
+            .map(|e| e.map(|i| tri.local_index(i)))
+            .collect();
+        let mut start = vec![0u32; n + 1];
+        for &[a, b] in &edges {
+            start[a as usize + 1] += 1;
+            start[b as usize + 1] += 1;
+        }
+        for i in 0..n {
+            start[i + 1] += start[i];
+        }
+        let mut fill = start.clone();
+        let mut targets = vec![0u32; 2 * edges.len()];
+        for &[a, b] in &edges {
+            for (p, q) in [(a, b), (b, a)] {
+                targets[fill[p as usize] as usize] = q;
+                fill[p as usize] += 1;
+            }
+        }
+        let degree = |p: usize| start[p + 1] - start[p];
+        let mut place = vec![(NO_CURVE, 0); n];
         let mut curves = Vec::with_capacity(rec.curves.len());
-        let mut curve_points = 0;
         for (c, curve) in rec.curves.iter().enumerate() {
             let local: Vec<u32> = curve.points.iter().map(|&i| tri.local_index(i)).collect();
             for (k, &p) in local.iter().enumerate() {
-                if place[p as usize].0 == NO_CURVE {
-                    curve_points += 1;
-                }
-                place[p as usize] = (c as u32, k as u32);
+                place[p as usize] = if degree(p as usize) > 2 {
+                    (JUNCTION, 0)
+                } else {
+                    (c as u32, k as u32)
+                };
             }
             curves.push((local, curve.closed));
         }
+        let curve_points = (0..n).filter(|&p| degree(p) > 0).count();
         CurveView {
             place,
             curves,
+            start,
+            targets,
             curve_points,
         }
     }
 
-    /// The curve neighbours of `p` (at most two: the curves are 1-manifold by default; at a
-    /// junction of a baseline, those of one of its curves).
+    /// The curve neighbours of `p`: the other ends of its edges.
     fn neighbours(&self, p: u32) -> impl Iterator<Item = u32> + '_ {
-        let (c, k) = self.place[p as usize];
-        let mut out = [None, None];
-        if c != NO_CURVE {
-            let (points, closed) = &self.curves[c as usize];
-            let (k, n) = (k as usize, points.len());
-            if n > 1 {
-                if k > 0 {
-                    out[0] = Some(points[k - 1]);
-                } else if *closed {
-                    out[0] = Some(points[n - 1]);
-                }
-                if k + 1 < n {
-                    out[1] = Some(points[k + 1]);
-                } else if *closed {
-                    out[1] = Some(points[0]);
-                }
-            }
-        }
-        if out[0] == out[1] {
-            out[1] = None;
-        }
-        out.into_iter().flatten()
+        let p = p as usize;
+        self.targets[self.start[p] as usize..self.start[p + 1] as usize]
+            .iter()
+            .copied()
     }
 
-    /// The steps along one curve between `p` and `q`, `None` on different curves.
+    /// The steps along one curve between `p` and `q`: `None` on different curves, `Some(0)`
+    /// at a junction (it ends several chains, so it is near all of them).
     fn steps_apart(&self, p: u32, q: u32) -> Option<usize> {
         let ((cp, kp), (cq, kq)) = (self.place[p as usize], self.place[q as usize]);
+        if cp == JUNCTION || cq == JUNCTION {
+            return Some(0);
+        }
         if cp != cq {
             return None;
         }
@@ -551,6 +571,15 @@ fn round_ratio(r: f64) -> String {
     }
 }
 
+/// `(x, y)` in the shortest form that reads back, with an exponent beyond 1e15 and below
+/// 1e-4 (Rust's `{}` writes every digit of 1e187).
 fn position(p: [f64; 2]) -> String {
-    format!("({}, {})", p[0], p[1])
+    let one = |x: f64| {
+        if x == 0.0 || (1e-4..1e15).contains(&x.abs()) {
+            format!("{x}")
+        } else {
+            format!("{x:e}")
+        }
+    };
+    format!("({}, {})", one(p[0]), one(p[1]))
 }

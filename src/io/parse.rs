@@ -76,7 +76,7 @@
 
 use std::fmt;
 use std::fs::File;
-use std::io::{self, BufRead, BufReader};
+use std::io::{self, BufRead, BufReader, Read};
 use std::path::Path;
 
 mod columns;
@@ -684,15 +684,31 @@ pub fn read_points_with<R: BufRead>(
     mut reader: R,
     options: &ReadOptions,
 ) -> Result<Vec<[f64; 2]>, ParseError> {
-    // A read error here is met again, with its line, by the line reader.
-    if let Some(kind) = reader.fill_buf().ok().and_then(sniff::sniff) {
+    // The kind of file is told from a head of fixed length, read here whatever the
+    // reader's buffer holds (a small buffer must not change the verdict), then read again
+    // by the line reader in front of the rest.
+    let mut head = Vec::with_capacity(sniff::HEAD_BYTES);
+    if let Err(e) = (&mut reader)
+        .take(sniff::HEAD_BYTES as u64)
+        .read_to_end(&mut head)
+    {
+        // On the line being read, as the line reader would say.
+        let ends = head
+            .iter()
+            .enumerate()
+            .filter(|&(i, &b)| b == b'\n' || (b == b'\r' && head.get(i + 1) != Some(&b'\n')))
+            .count();
+        let line = 1 + ends;
+        return Err(ParseError::at(line, ParseErrorKind::Io(e)));
+    }
+    if let Some(kind) = sniff::sniff(&head) {
         return Err(ParseError {
             line: None,
             kind: ParseErrorKind::NotAPointFile { looks_like: kind },
         });
     }
     let (format, selection) = (options.format, options.columns.as_ref());
-    let mut lines = LineReader::new(reader);
+    let mut lines = LineReader::new(io::Cursor::new(head).chain(reader));
     let mut points: Vec<[f64; 2]> = Vec::new();
     let mut state = State::Start;
     while let Some((line_number, raw)) = lines.next_line()? {

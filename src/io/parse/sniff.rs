@@ -76,6 +76,10 @@ impl fmt::Display for FileKind {
 /// How far into the head a markup document is searched for its root element.
 const ROOT_SEARCH_BYTES: usize = 1024;
 
+/// How many bytes of a file [`sniff`] is given: the root search after a byte-order mark
+/// and some leading white space.
+pub(super) const HEAD_BYTES: usize = 4096;
+
 /// What the first bytes of a file say it is, when it is not a point list; `None` when they
 /// could start one (or are too few to tell).
 pub(super) fn sniff(head: &[u8]) -> Option<FileKind> {

@@ -1188,3 +1188,29 @@ fn files_that_are_no_point_list_say_what_they_look_like() {
     assert!(matches!(kind, ParseErrorKind::NotANumber { .. }), "{kind}");
     assert_eq!(ok("# <svg> and {json}\n1 2\n"), vec![[1.0, 2.0]]);
 }
+
+/// Found by the `parse` fuzz target: with a one-byte buffer the kind of file was told from
+/// the one byte buffered, and a head that is UTF-16 without a byte-order mark (ASCII
+/// bytes each followed by a NUL) was read as text with a NUL byte. The verdict is taken on
+/// a head of fixed length now.
+#[test]
+fn the_kind_of_file_does_not_depend_on_the_buffer() {
+    let inputs: [&[u8]; 4] = [
+        b"\t\x00\x0c\x00]\n\n\x95",
+        b"  \n\n   <?xml version=\"1.0\"?>\n<svg width=\"10\"/>\n",
+        b"\xef\xbb\xbf{\"type\": \"FeatureCollection\"}",
+        b"1\x002\x00 \x003\x00\n\x00",
+    ];
+    for data in inputs {
+        let whole = read_points(data, None).map_err(|e| e.to_string());
+        for capacity in 1..=8 {
+            let split = read_points(BufReader::with_capacity(capacity, data), None)
+                .map_err(|e| e.to_string());
+            assert_eq!(split, whole, "{data:?}, buffer of {capacity}");
+        }
+        assert!(
+            whole.as_ref().is_err_and(|e| e.contains("this looks like")),
+            "{data:?}: {whole:?}"
+        );
+    }
+}

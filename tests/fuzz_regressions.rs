@@ -11,6 +11,16 @@ mod checks;
 
 use wdm_crust::reconstruct::{reconstruct_with, MedialAxisMode, Options};
 
+/// The points of `tests/data/regressions/<name>`.
+fn regression_points(name: &str) -> Vec<[f64; 2]> {
+    let path = format!(
+        "{}/tests/data/regressions/{name}",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    wdm_crust::io::read_points_from_path(std::path::Path::new(&path))
+        .unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
 /// Every check of the `triangulate` and `reconstruct` targets, on `points` and on `points`
 /// reversed.
 fn check_everything(points: &[[f64; 2]]) {
@@ -228,14 +238,7 @@ fn tiny_points_sharing_a_zorder_key_give_order_independent_positions() {
 /// counted; their parity is the same along every path.
 #[test]
 fn medial_axis_of_noisy_chains_does_not_depend_on_the_input_order() {
-    let read = |name: &str| {
-        let path = format!(
-            "{}/tests/data/regressions/{name}",
-            env!("CARGO_MANIFEST_DIR")
-        );
-        wdm_crust::io::read_points_from_path(std::path::Path::new(&path))
-            .unwrap_or_else(|e| panic!("{path}: {e}"))
-    };
+    let read = regression_points;
     let points = read("noisy-chains-at-wide-scales.txt");
     let permuted = read("noisy-chains-at-wide-scales-permuted.txt");
     assert_eq!((points.len(), permuted.len()), (600, 600));
@@ -270,14 +273,7 @@ fn medial_axis_of_noisy_chains_does_not_depend_on_the_input_order() {
 /// read them off the edges now.
 #[test]
 fn warnings_same_in_any_order_at_junctions() {
-    let read = |name: &str| {
-        let path = format!(
-            "{}/tests/data/regressions/{name}",
-            env!("CARGO_MANIFEST_DIR")
-        );
-        wdm_crust::io::read_points_from_path(std::path::Path::new(&path))
-            .unwrap_or_else(|e| panic!("{path}: {e}"))
-    };
+    let read = regression_points;
     let points = read("flow-junctions-far-apart-in-scale.txt");
     let permuted = read("flow-junctions-far-apart-in-scale-permuted.txt");
     assert_eq!((points.len(), permuted.len()), (83, 83));
@@ -314,14 +310,7 @@ fn warnings_same_in_any_order_at_junctions() {
 /// axis's vertices are rounded once into the caller's coordinates.
 #[test]
 fn pruned_axis_same_in_any_order_at_subnormal_scale() {
-    let read = |name: &str| {
-        let path = format!(
-            "{}/tests/data/regressions/{name}",
-            env!("CARGO_MANIFEST_DIR")
-        );
-        wdm_crust::io::read_points_from_path(std::path::Path::new(&path))
-            .unwrap_or_else(|e| panic!("{path}: {e}"))
-    };
+    let read = regression_points;
     let points = read("subnormal-grid-without-centre.txt");
     let permuted = read("subnormal-grid-without-centre-permuted.txt");
     assert_eq!((points.len(), permuted.len()), (223, 223));

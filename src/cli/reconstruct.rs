@@ -27,6 +27,7 @@ Examples:
   wdm-crust reconstruct points.txt --algorithm nn-crust --format text
   wdm-crust reconstruct points.txt -o shapes.geojson
   wdm-crust reconstruct big-scan.txt --medial-axis none -o curves.json
+  wdm-crust reconstruct noisy-scan.txt --smooth -o shapes.geojson
 
 JSON output (one line):
   {\"algorithm\": \"wdm\", \"points\": N, \"edges\": [[i, j], ...],
@@ -49,8 +50,8 @@ holes; a curve inside a hole starts a new polygon), properties {\"kind\": \"curv
 \"points\": [...], \"holes\": [[...], ...]}; a LineString per open chain {\"kind\": \"chain\",
 \"points\": [...]}; one MultiLineString for the medial axis {\"kind\": \"medial_axis\"}; a
 MultiPoint of the unassigned points {\"kind\": \"unassigned\", \"points\": [...]} (left out
-when there are none). Rings are closed; coordinates are the input's, written so that they
-read back exactly.
+when there are none). Rings are closed; coordinates are the input's (with --smooth the
+curves' are the fitted ones), written so that they read back exactly.
 
 SVG output: the points, the curves (closed red, open purple), the medial axis (green), the
 unassigned points (grey rings) and a legend, y axis up (--y-down: down, for image
@@ -174,6 +175,13 @@ pub struct ReconstructArgs {
     #[arg(long, value_enum, default_value_t = MedialAxisArg::Pruned)]
     medial_axis: MedialAxisArg,
 
+    /// Fit the curves to the samples: every curve vertex is placed on a local fit of the
+    /// noisy samples around it (the JSON's `coords`, the GeoJSON's and the SVG's curves);
+    /// without it the curve vertices are the input points themselves. For dense noisy
+    /// scans; corners stay sharp, clean samples stay put, curves stay simple.
+    #[arg(long)]
+    smooth: bool,
+
     /// SVG underlays, comma-separated: delaunay, voronoi, labels.
     #[arg(long, value_enum, value_delimiter = ',', value_name = "LAYERS")]
     show: Vec<Layer>,
@@ -220,7 +228,8 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
         .with_algorithm(args.algorithm.into())
         .with_peeling(!args.no_peeling)
         .with_peeling_budget(args.peeling_budget)
-        .with_medial_axis(args.medial_axis.into());
+        .with_medial_axis(args.medial_axis.into())
+        .with_smoothing(args.smooth);
     let n = points.len();
     timings.begin(|| format!("triangulating {n} points"));
     // The library reports each phase as it ends; the next one begins right then. The

@@ -1,0 +1,696 @@
+//! Smoothing (on demand, [`Options::with_smoothing`](super::Options::with_smoothing)):
+//! every curve vertex placed on a local fit of the samples around it, the last stage, on the
+//! assembled curves.
+//!
+//! # The fit
+//!
+//! The samples around a vertex `p` are every input point, on a curve or not, within a
+//! radius `R` of it (gathered along the Delaunay graph in order of distance: in a dense noise
+//! band most points are on no curve, and they are what the fit averages). The radius grows
+//! from the vertex's longer curve step by factors of √2 ([`SCALE_STEP`], at most
+//! [`WINDOWS`] radii, at most [`MAX_WINDOW_POINTS`] points), and three families of
+//! windows are fitted at each radius, each sample weighted by the biweight `(1 − (d/R)²)²` of
+//! its distance `d`:
+//!
+//! * the *centred* window, the whole disk: a quadratic `v = c₀ + c₁u + c₂u²` over the
+//!   total-least-squares line of the window (the moving-least-squares projection), the
+//!   vertex moved to `c₀` along the line's normal;
+//! * the two *one-sided* windows, the half disks ahead of and behind `p` along the curve
+//!   (split by the line through `p` perpendicular to the chord of its two curve
+//!   neighbours, which at a corner separates its two sides): a total-least-squares line, the
+//!   vertex projected onto it.
+//!
+//! A window is used once it is a curve piece and not a blob: at least [`MIN_FIT_POINTS`]
+//! samples and an aspect (smaller over larger principal variance) of at most
+//! [`MAX_ASPECT`]. Each family grows while its residual (the weighted RMS distance of the
+//! samples from the fit, corrected for the fitted parameters) stays within
+//! [`RESIDUAL_GROWTH`] times the smallest residual before it: on a noise band the residual
+//! stays at the noise while the window grows and the fit averages more samples; where the
+//! window reaches a corner or a bend the fit does not follow, the residual grows with the
+//! radius and the growth stops. The centred family's last fit is taken unless its residual
+//! is more than [`SIDED_PREFERENCE`] times that of a one-sided family: at a corner the
+//! centred fit rounds it off and its residual shows it, while each side is straight; the
+//! side with the smaller residual is taken, and the corner vertex stays on its own side's
+//! line, at the corner.
+//!
+//! Junctions (points on three or more edges) stay where they are.
+//!
+//! # Simple curves, exactly
+//!
+//! The fit is rounded arithmetic; whether the moved curves are simple is decided exactly
+//! ([`crossings`]): every pair of curve segments (of all curves: no curve crosses itself or
+//! another) is tested with the kernel's exact orientation, a segment sharing an end with
+//! another may not fold back over it, and a closed curve must still run counterclockwise.
+//! Where a test fails, the moves of the points involved are undone, and the test runs again
+//! until nothing fails. Undoing every move gives the unsmoothed curves, whose edges are
+//! edges of one triangulation, so the loop ends.
+//!
+//! Everything runs in the reconstruction's frame (the points exactly rescaled) on the
+//! triangulation's local indices, in an order fixed by the points: the result is the same
+//! in any input order and for every exact power-of-two scaling.
+
+mod crossings;
+
+use std::cmp::Ordering;
+use std::collections::{BinaryHeap, HashSet};
+
+use super::curves::Curve;
+use super::lengths::distance;
+use crate::delaunay::{Triangulation, NO_TWIN};
+use crate::parallel;
+
+/// Window radii grow by this factor: a fit's residual is compared with that of a window
+/// of half its area (√2: the residual of a corner grows by as much per step, and two steps
+/// double it, which [`RESIDUAL_GROWTH`] catches).
+const SCALE_STEP: f64 = std::f64::consts::SQRT_2;
+/// At most this many radii: the largest is `2^11.5 ≈ 2900` times the vertex's longer curve
+/// step (in a dense band the step is a small fraction of the noise; the windows stop long
+/// before, at [`MAX_WINDOW_POINTS`]).
+const WINDOWS: usize = 24;
+/// A window grows no further once it holds this many samples (a bound on work: the error
+/// of a fit over `N` samples falls as `1/√N`, 4 % of the noise here).
+const MAX_WINDOW_POINTS: usize = 512;
+/// The fewest samples (with positive weight) of a window that is fitted: a quadratic has
+/// three parameters, and its residual needs a few more samples to mean anything.
+const MIN_FIT_POINTS: usize = 6;
+/// A window whose smaller principal variance is more than this share of its larger one
+/// is a blob, not a curve piece (a straight band of half-length `R` and noise `σ` has an
+/// aspect of about `3 (σ/R)²`, so this admits windows of more than about 3.5 σ).
+const MAX_ASPECT: f64 = 0.25;
+/// A family of windows grows while the vertex's offset of its next window agrees with that
+/// of every smaller window within this many standard errors of the two: on a noise band the
+/// offsets of growing windows scatter within their errors, which shrink as the windows
+/// take more samples; where a window reaches a corner or a bend the fit cannot follow,
+/// its offset drifts away by more (the intersection-of-confidence-intervals rule).
+const AGREEMENT: f64 = 3.0;
+/// The centred fit is replaced by a one-sided one when its residual is more than this times
+/// the one-sided one's: noise alone makes the residuals of the three families differ by
+/// less.
+const SIDED_PREFERENCE: f64 = 2.0;
+/// Standard errors below this share of the radius are rounding, not noise: on samples
+/// exactly on a line every fit's error is about `1e-16 R`.
+const RESIDUAL_FLOOR: f64 = 1e-12;
+
+/// The fitted position of every point of `curves` (local indices, in the frame of `tri`),
+/// `None` for a point that stays where it is; indexed by local point.
+pub(super) fn fitted_positions(tri: &Triangulation, curves: &[Curve]) -> Vec<Option<[f64; 2]>> {
+    let n = tri.points.len();
+    let mut moved = vec![None; n];
+    if tri.is_degenerate() || curves.is_empty() {
+        return moved;
+    }
+    let graph = Graph::new(tri);
+    // Every curve vertex with its two curve neighbours (a chain end: one), junctions left
+    // out: the vertices are the points of degree 1 or 2.
+    let mut degree = vec![0u8; n];
+    for c in curves {
+        let k = c.points.len();
+        let edges = if c.closed { k } else { k.saturating_sub(1) };
+        for i in 0..edges {
+            for p in [c.points[i], c.points[(i + 1) % k]] {
+                degree[p as usize] = degree[p as usize].saturating_add(1);
+            }
+        }
+    }
+    let mut vertices: Vec<[u32; 3]> = Vec::new();
+    for c in curves {
+        let k = c.points.len();
+        if k < 2 {
+            continue;
+        }
+        for i in 0..k {
+            let p = c.points[i];
+            if degree[p as usize] > 2 {
+                continue;
+            }
+            let prev = if i > 0 {
+                c.points[i - 1]
+            } else if c.closed {
+                c.points[k - 1]
+            } else {
+                p
+            };
+            let next = if i + 1 < k {
+                c.points[i + 1]
+            } else if c.closed {
+                c.points[0]
+            } else {
+                p
+            };
+            vertices.push([prev, p, next]);
+        }
+    }
+    let fits = parallel::map_range(vertices.len(), |i| {
+        let [prev, p, next] = vertices[i];
+        fit_vertex(tri, &graph, prev, p, next)
+    });
+    for (&[_, p, _], fit) in vertices.iter().zip(fits) {
+        moved[p as usize] = fit;
+    }
+    crossings::undo_crossings(&tri.points, curves, &mut moved);
+    moved
+}
+
+/// The Delaunay graph of the triangulation, neighbours by local index.
+struct Graph {
+    offsets: Vec<u32>,
+    neighbours: Vec<u32>,
+}
+
+impl Graph {
+    fn new(tri: &Triangulation) -> Graph {
+        let n = tri.points.len();
+        let twins = tri.halfedges();
+        let mut count = vec![0u32; n + 1];
+        let undirected = |e: usize| twins[e] == NO_TWIN || e < twins[e] as usize;
+        for e in (0..twins.len()).filter(|&e| undirected(e)) {
+            count[tri.org(e) as usize + 1] += 1;
+            count[tri.dest(e) as usize + 1] += 1;
+        }
+        for i in 0..n {
+            count[i + 1] += count[i];
+        }
+        let mut fill = count.clone();
+        let mut neighbours = vec![0u32; count[n] as usize];
+        for e in (0..twins.len()).filter(|&e| undirected(e)) {
+            let (a, b) = (tri.org(e), tri.dest(e));
+            neighbours[fill[a as usize] as usize] = b;
+            fill[a as usize] += 1;
+            neighbours[fill[b as usize] as usize] = a;
+            fill[b as usize] += 1;
+        }
+        Graph {
+            offsets: count,
+            neighbours,
+        }
+    }
+
+    fn of(&self, p: u32) -> &[u32] {
+        let (a, b) = (self.offsets[p as usize], self.offsets[p as usize + 1]);
+        &self.neighbours[a as usize..b as usize]
+    }
+}
+
+/// A sample waiting in the gathering, nearest first (ties by local index).
+#[derive(PartialEq)]
+struct Waiting(f64, u32);
+
+impl Eq for Waiting {}
+
+impl PartialOrd for Waiting {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Waiting {
+    fn cmp(&self, other: &Self) -> Ordering {
+        // Reversed: the heap pops the nearest.
+        other.0.total_cmp(&self.0).then(other.1.cmp(&self.1))
+    }
+}
+
+/// One fit of one window, in the frame's units: where it puts the vertex, its normal
+/// there, its residual (the samples' weighted RMS distance from it, corrected for the
+/// fitted parameters) and the standard error of the vertex's offset along the normal.
+#[derive(Clone, Copy, Debug)]
+struct Fit {
+    position: [f64; 2],
+    normal: [f64; 2],
+    residual: f64,
+    error: f64,
+}
+
+/// What one family of windows has found so far: the fits it accepted, the last one best.
+#[derive(Default)]
+struct Family {
+    accepted: Vec<Fit>,
+    stopped: bool,
+    /// The residual of every window offered (accepted or not), `None` where it was no
+    /// curve piece.
+    residuals: Vec<Option<f64>>,
+    /// The window of the last accepted fit.
+    last: usize,
+}
+
+impl Family {
+    /// The family's next (larger) window: accepted while its offset agrees with every
+    /// smaller window's within [`AGREEMENT`] standard errors of the two (the intersection
+    /// of confidence intervals rule); the family stops at the first that does not, and at
+    /// a window that is no curve piece after one that was.
+    fn offer(&mut self, fit: Option<Fit>) {
+        self.residuals.push(fit.map(|f| f.residual));
+        if self.stopped {
+            return;
+        }
+        let Some(fit) = fit else {
+            self.stopped = !self.accepted.is_empty();
+            return;
+        };
+        let along = |p: [f64; 2]| p[0] * fit.normal[0] + p[1] * fit.normal[1];
+        let agrees = self.accepted.iter().all(|earlier| {
+            (along(fit.position) - along(earlier.position)).abs()
+                <= AGREEMENT * (earlier.error * earlier.error - fit.error * fit.error).max(0.0).sqrt()
+        });
+        if agrees {
+            self.accepted.push(fit);
+            self.last = self.residuals.len() - 1;
+        } else {
+            self.stopped = true;
+        }
+    }
+
+    fn best(&self) -> Option<Fit> {
+        self.accepted.last().copied()
+    }
+}
+
+/// The fitted position of curve vertex `p` (local), with curve neighbours `prev` and
+/// `next` (`p` itself at a chain end); `None` where no window is a curve piece or the
+/// arithmetic fails.
+fn fit_vertex(tri: &Triangulation, graph: &Graph, prev: u32, p: u32, next: u32) -> Option<[f64; 2]> {
+    let at = |q: u32| tri.points[q as usize];
+    let o = at(p);
+    let step = distance(o, at(prev)).max(distance(o, at(next)));
+    if !(step.is_finite() && step > 0.0) {
+        return None;
+    }
+    // The side of a sample: ahead of `p` along the chord from `prev` to `next`.
+    let (a, b) = (at(prev), at(next));
+    let chord = [b[0] - a[0], b[1] - a[1]];
+    let chord_length = chord[0].abs().max(chord[1].abs());
+    if !(chord_length.is_finite() && chord_length > 0.0) {
+        return None;
+    }
+    let tangent = [chord[0] / chord_length, chord[1] / chord_length];
+    let mut seen: HashSet<u32> = HashSet::new();
+    let mut waiting = BinaryHeap::new();
+    let mut window: Vec<(f64, u32)> = Vec::new();
+    seen.insert(p);
+    waiting.push(Waiting(0.0, p));
+    let mut families: [Family; 3] = Default::default();
+    let mut radius = step;
+    for _ in 0..WINDOWS {
+        // Every sample within `radius` reachable through such samples, in distance order.
+        while let Some(Waiting(d, q)) = waiting.peek() {
+            if *d >= radius || window.len() >= MAX_WINDOW_POINTS {
+                break;
+            }
+            let (d, q) = (*d, *q);
+            waiting.pop();
+            window.push((d, q));
+            for &w in graph.of(q) {
+                if seen.insert(w) {
+                    let dw = distance(o, at(w));
+                    if dw.is_finite() {
+                        waiting.push(Waiting(dw, w));
+                    }
+                }
+            }
+        }
+        // The samples in a fixed order (by local index), so that the sums are the same
+        // however they were reached.
+        let mut samples: Vec<(f64, u32)> = window.clone();
+        samples.sort_unstable_by_key(|&(_, q)| q);
+        let offsets: Vec<Sample> = samples
+            .iter()
+            .map(|&(d, q)| {
+                let x = at(q);
+                let u = [(x[0] - o[0]) / radius, (x[1] - o[1]) / radius];
+                let s = u[0] * tangent[0] + u[1] * tangent[1];
+                let side = if q == p {
+                    0
+                } else if s >= 0.0 {
+                    1
+                } else {
+                    -1
+                };
+                let t = d / radius;
+                let w = (1.0 - t * t).max(0.0);
+                Sample {
+                    at: u,
+                    weight: w * w,
+                    side,
+                }
+            })
+            .collect();
+        let unscale = |fit: Option<Fit>| {
+            fit.map(|f| Fit {
+                position: [o[0] + f.position[0] * radius, o[1] + f.position[1] * radius],
+                normal: f.normal,
+                residual: f.residual * radius,
+                error: (f.error.max(RESIDUAL_FLOOR)) * radius,
+            })
+        };
+        families[0].offer(unscale(quadratic_fit(&offsets, |_| true)));
+        families[1].offer(unscale(line_fit(&offsets, |s| s >= 0)));
+        families[2].offer(unscale(line_fit(&offsets, |s| s <= 0)));
+        if families.iter().all(|f| f.stopped) || window.len() >= MAX_WINDOW_POINTS {
+            break;
+        }
+        radius *= SCALE_STEP;
+    }
+    // A corner: at the centred family's last window, a side fits much better than the
+    // whole disk. The residuals are compared at one window, where they average as many
+    // samples: a small window's residual is a poor estimate.
+    let [centred, ahead, behind] = &families;
+    let chosen = match centred.best() {
+        Some(c) => {
+            let at = |f: &Family| f.residuals.get(centred.last).copied().flatten();
+            let sides = [(at(ahead), ahead), (at(behind), behind)];
+            let better = sides
+                .iter()
+                .filter_map(|&(r, f)| Some((r?, f.best()?)))
+                .min_by(|x, y| x.0.total_cmp(&y.0));
+            match better {
+                Some((r, side)) if c.residual > SIDED_PREFERENCE * r => side,
+                _ => c,
+            }
+        }
+        None => {
+            let sides = [ahead.best(), behind.best()];
+            sides
+                .into_iter()
+                .flatten()
+                .min_by(|x, y| x.residual.total_cmp(&y.residual))?
+        }
+    };
+    let position = chosen.position;
+    (position[0].is_finite() && position[1].is_finite() && position != o).then_some(position)
+}
+
+/// A sample of a window: its offset from the vertex in units of the radius, its weight,
+/// and its side (1 ahead, -1 behind, 0 the vertex itself).
+struct Sample {
+    at: [f64; 2],
+    weight: f64,
+    side: i8,
+}
+
+/// The weighted principal frame of the samples of the sides `use_side`.
+struct Frame {
+    centroid: [f64; 2],
+    /// The unit direction of the larger variance.
+    tangent: [f64; 2],
+    /// The smaller variance (weighted mean).
+    small: f64,
+    /// Σw(u − ū)² along the tangent, Σw²(u − ū)².
+    spread: f64,
+    spread2: f64,
+    /// Σw and Σw².
+    sw: f64,
+    sw2: f64,
+}
+
+/// The weighted principal frame of the samples `use_side(side)`; `None` with fewer than
+/// [`MIN_FIT_POINTS`] samples of positive weight or an aspect above [`MAX_ASPECT`].
+fn principal_frame(samples: &[Sample], use_side: impl Fn(i8) -> bool) -> Option<Frame> {
+    let used = || {
+        samples
+            .iter()
+            .filter(|s| s.weight > 0.0 && use_side(s.side))
+    };
+    let (mut count, mut sw, mut sw2, mut sx, mut sy) = (0, 0.0, 0.0, 0.0, 0.0);
+    for s in used() {
+        count += 1;
+        sw += s.weight;
+        sw2 += s.weight * s.weight;
+        sx += s.weight * s.at[0];
+        sy += s.weight * s.at[1];
+    }
+    if count < MIN_FIT_POINTS || !(sw > 0.0) {
+        return None;
+    }
+    let m = [sx / sw, sy / sw];
+    let (mut cxx, mut cxy, mut cyy) = (0.0, 0.0, 0.0);
+    for s in used() {
+        let (dx, dy) = (s.at[0] - m[0], s.at[1] - m[1]);
+        cxx += s.weight * dx * dx;
+        cxy += s.weight * dx * dy;
+        cyy += s.weight * dy * dy;
+    }
+    let (cxx, cxy, cyy) = (cxx / sw, cxy / sw, cyy / sw);
+    let half_trace = 0.5 * (cxx + cyy);
+    let root = (0.25 * (cxx - cyy) * (cxx - cyy) + cxy * cxy).sqrt();
+    let (large, small) = (half_trace + root, (half_trace - root).max(0.0));
+    if !(large > 0.0) || small > MAX_ASPECT * large {
+        return None;
+    }
+    // The eigenvector of the larger eigenvalue, from the better conditioned of the two
+    // forms.
+    let direction = if cxx >= cyy {
+        [large - cyy, cxy]
+    } else {
+        [cxy, large - cxx]
+    };
+    let norm = direction[0].hypot(direction[1]);
+    if !(norm > 0.0) {
+        return None;
+    }
+    let t = [direction[0] / norm, direction[1] / norm];
+    let (mut spread, mut spread2) = (0.0, 0.0);
+    for s in used() {
+        let u = (s.at[0] - m[0]) * t[0] + (s.at[1] - m[1]) * t[1];
+        spread += s.weight * u * u;
+        spread2 += s.weight * s.weight * u * u;
+    }
+    Some(Frame {
+        centroid: m,
+        tangent: t,
+        small,
+        spread,
+        spread2,
+        sw,
+        sw2,
+    })
+}
+
+/// The residual variance `mean` (weighted) corrected for `parameters` fitted with the
+/// effective sample count `(Σw)² / Σw²`, as a residual; `None` when the count does not
+/// exceed the parameters by more than one.
+fn corrected(mean: f64, sw: f64, sw2: f64, parameters: f64) -> Option<f64> {
+    let effective = sw * sw / sw2;
+    (effective > parameters + 1.0).then(|| (mean * effective / (effective - parameters)).sqrt())
+}
+
+/// The vertex (at the origin) projected onto the total-least-squares line of the samples
+/// of the sides `use_side`; `None` where the samples are no curve piece.
+fn line_fit(samples: &[Sample], use_side: impl Fn(i8) -> bool) -> Option<Fit> {
+    let f = principal_frame(samples, use_side)?;
+    let (m, t) = (f.centroid, f.tangent);
+    // The origin's projection: m + ((0 − m)·t) t.
+    let along = -(m[0] * t[0] + m[1] * t[1]);
+    let position = [m[0] + along * t[0], m[1] + along * t[1]];
+    let residual = corrected(f.small, f.sw, f.sw2, 2.0)?;
+    // The offset's variance: the centroid's across the line, and the direction's times
+    // the distance along it.
+    let factor = f.sw2 / (f.sw * f.sw) + along * along * f.spread2 / (f.spread * f.spread);
+    Some(Fit {
+        position,
+        normal: [-t[1], t[0]],
+        residual,
+        error: residual * factor.sqrt(),
+    })
+}
+
+/// The vertex (at the origin) moved along the normal of the samples' total-least-squares
+/// line onto the weighted quadratic `v = c₀ + c₁u + c₂u²` over it (`u` along the line, `v`
+/// across, from the origin): the moving-least-squares projection; the line's projection
+/// where the quadratic is ill-conditioned.
+fn quadratic_fit(samples: &[Sample], use_side: impl Fn(i8) -> bool + Copy) -> Option<Fit> {
+    let f = principal_frame(samples, use_side)?;
+    let t = f.tangent;
+    let n = [-t[1], t[0]];
+    let used = || {
+        samples
+            .iter()
+            .filter(|s| s.weight > 0.0 && use_side(s.side))
+    };
+    let coordinates = |s: &Sample| {
+        let u = s.at[0] * t[0] + s.at[1] * t[1];
+        let v = s.at[0] * n[0] + s.at[1] * n[1];
+        (u, v)
+    };
+    // Normal equations of the weighted least squares in (1, u, u²), and Σw² b bᵀ for the
+    // variance of c₀.
+    let mut a = [[0.0f64; 3]; 3];
+    let mut b2 = [[0.0f64; 3]; 3];
+    let mut rhs = [0.0f64; 3];
+    for s in used() {
+        let (u, v) = coordinates(s);
+        let basis = [1.0, u, u * u];
+        for i in 0..3 {
+            for j in 0..3 {
+                a[i][j] += s.weight * basis[i] * basis[j];
+                b2[i][j] += s.weight * s.weight * basis[i] * basis[j];
+            }
+            rhs[i] += s.weight * basis[i] * v;
+        }
+    }
+    let (Some(c), Some(g)) = (solve3(a, rhs), solve3(a, [1.0, 0.0, 0.0])) else {
+        return line_fit(samples, use_side);
+    };
+    let mut residual = 0.0;
+    for s in used() {
+        let (u, v) = coordinates(s);
+        let r = v - (c[0] + c[1] * u + c[2] * u * u);
+        residual += s.weight * r * r;
+    }
+    let residual = corrected(residual / f.sw, f.sw, f.sw2, 3.0)?;
+    // Var c₀ = σ² gᵀ B g with g the first column of A⁻¹.
+    let mut factor = 0.0;
+    for i in 0..3 {
+        for j in 0..3 {
+            factor += g[i] * b2[i][j] * g[j];
+        }
+    }
+    // Within the window, or the fit is not to be trusted.
+    if !(c[0].abs() <= 1.0 && factor >= 0.0) {
+        return None;
+    }
+    let quadratic = Fit {
+        position: [c[0] * n[0], c[0] * n[1]],
+        normal: n,
+        residual,
+        error: residual * factor.sqrt(),
+    };
+    // The circle where it is one: the quadratic's fourth-order error on an arc grows as
+    // the window does, the circle's only with the change of curvature.
+    Some(circle_fit(samples, use_side, &f).map_or(quadratic, |(position, normal, residual)| {
+        Fit {
+            position,
+            normal,
+            residual,
+            error: residual * factor.sqrt(),
+        }
+    }))
+}
+
+/// The vertex (at the origin) projected onto the weighted algebraic circle fit of the
+/// samples (Taubin's, in Chernov's Newton form), with the normal there and the residual;
+/// `None` where the circle is nearly a line (radius above [`LINE_RADIUS`] window radii:
+/// the quadratic fits it) or the arithmetic fails.
+fn circle_fit(
+    samples: &[Sample],
+    use_side: impl Fn(i8) -> bool,
+    frame: &Frame,
+) -> Option<([f64; 2], [f64; 2], f64)> {
+    let used = || {
+        samples
+            .iter()
+            .filter(|s| s.weight > 0.0 && use_side(s.side))
+    };
+    let (sw, m) = (frame.sw, frame.centroid);
+    let (mut mxx, mut myy, mut mxy, mut mxz, mut myz, mut mzz) = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    for s in used() {
+        let (x, y) = (s.at[0] - m[0], s.at[1] - m[1]);
+        let z = x * x + y * y;
+        let w = s.weight;
+        mxx += w * x * x;
+        myy += w * y * y;
+        mxy += w * x * y;
+        mxz += w * x * z;
+        myz += w * y * z;
+        mzz += w * z * z;
+    }
+    let [mxx, myy, mxy, mxz, myz, mzz] = [mxx, myy, mxy, mxz, myz, mzz].map(|v| v / sw);
+    let mz = mxx + myy;
+    let cov_xy = mxx * myy - mxy * mxy;
+    let var_z = mzz - mz * mz;
+    let a3 = 4.0 * mz;
+    let a2 = -3.0 * mz * mz - mzz;
+    let a1 = var_z * mz + 4.0 * cov_xy * mz - mxz * mxz - myz * myz;
+    let a0 = mxz * (mxz * myy - myz * mxy) + myz * (myz * mxx - mxz * mxy) - var_z * cov_xy;
+    let (mut x, mut y) = (0.0f64, a0);
+    for _ in 0..TAUBIN_ITERATIONS {
+        let slope = a1 + x * (2.0 * a2 + 3.0 * a3 * x);
+        let next = x - y / slope;
+        if next == x || !next.is_finite() {
+            break;
+        }
+        let value = a0 + next * (a1 + next * (a2 + next * a3));
+        if value.abs() >= y.abs() {
+            break;
+        }
+        (x, y) = (next, value);
+    }
+    let det = x * x - x * mz + cov_xy;
+    let centre = [
+        (mxz * (myy - x) - myz * mxy) / det / 2.0,
+        (myz * (mxx - x) - mxz * mxy) / det / 2.0,
+    ];
+    let radius = (centre[0] * centre[0] + centre[1] * centre[1] + mz).sqrt();
+    if !(radius.is_finite() && (MIN_CIRCLE_RADIUS..=LINE_RADIUS).contains(&radius)) {
+        return None;
+    }
+    let centre = [centre[0] + m[0], centre[1] + m[1]];
+    let mut residual = 0.0;
+    for s in used() {
+        let r = (s.at[0] - centre[0]).hypot(s.at[1] - centre[1]) - radius;
+        residual += s.weight * r * r;
+    }
+    let residual = corrected(residual / sw, sw, frame.sw2, 3.0)?;
+    // The origin, radially onto the circle.
+    let away = [-centre[0], -centre[1]];
+    let length = away[0].hypot(away[1]);
+    if !(length > 0.0) {
+        return None;
+    }
+    let normal = [away[0] / length, away[1] / length];
+    let position = [
+        centre[0] + normal[0] * radius,
+        centre[1] + normal[1] * radius,
+    ];
+    (position[0].abs() <= 1.0 && position[1].abs() <= 1.0).then_some((position, normal, residual))
+}
+/// Newton steps on Taubin's characteristic polynomial (Chernov's bound; it converges in a
+/// few from zero).
+const TAUBIN_ITERATIONS: usize = 99;
+
+/// A circle of fewer than this many window radii is not taken: on a short noisy arc the
+/// circle's curvature is unstable and the projection far from linear in the noise (the
+/// quadratic's standard error then says nothing about it).
+const MIN_CIRCLE_RADIUS: f64 = 2.0;
+
+/// A circle of more than this many window radii is a line to the fit (the quadratic then
+/// fits it as well, and the circle's centre is ill-conditioned).
+const LINE_RADIUS: f64 = 1e3;
+
+/// The solution of the symmetric positive 3 × 3 system `a x = b` (Cholesky), `None` when a
+/// pivot is not clearly positive (relative to the diagonal).
+fn solve3(a: [[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
+    let mut l = [[0.0f64; 3]; 3];
+    for i in 0..3 {
+        for j in 0..=i {
+            let mut s = a[i][j];
+            for k in 0..j {
+                s -= l[i][k] * l[j][k];
+            }
+            if i == j {
+                if !(s > 1e-12 * a[i][i]) {
+                    return None;
+                }
+                l[i][i] = s.sqrt();
+            } else {
+                l[i][j] = s / l[j][j];
+            }
+        }
+    }
+    let mut y = [0.0f64; 3];
+    for i in 0..3 {
+        let mut s = b[i];
+        for k in 0..i {
+            s -= l[i][k] * y[k];
+        }
+        y[i] = s / l[i][i];
+    }
+    let mut x = [0.0f64; 3];
+    for i in (0..3).rev() {
+        let mut s = y[i];
+        for k in i + 1..3 {
+            s -= l[k][i] * x[k];
+        }
+        x[i] = s / l[i][i];
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}

@@ -57,12 +57,19 @@ use std::collections::{BinaryHeap, HashSet};
 use super::curves::Curve;
 use super::lengths::distance;
 use crate::delaunay::{Triangulation, NO_TWIN};
+use crate::kernel::{orient, Sign};
 use crate::parallel;
 
 /// Window radii grow by this factor: a fit's residual is compared with that of a window
 /// of half its area (√2: the residual of a corner grows by as much per step, and two steps
 /// double it, which [`RESIDUAL_GROWTH`] catches).
 const SCALE_STEP: f64 = std::f64::consts::SQRT_2;
+/// The gathering walks Delaunay edges at most this many times the nearest-neighbour
+/// distance at one of their ends: along the samples of one curve piece, graded sampling
+/// included, not across the inside of a sparse curve (an ε-sample's two sides lie at least
+/// `2/ε` spacings apart, 5 at ε = 0.39) nor from one noise band to the next.
+const LINK: f64 = 3.0;
+
 /// At most this many radii: the largest is `2^11.5 ≈ 2900` times the vertex's longer curve
 /// step (in a dense band the step is a small fraction of the noise; the windows stop long
 /// before, at [`MAX_WINDOW_POINTS`]).
@@ -73,6 +80,10 @@ const MAX_WINDOW_POINTS: usize = 512;
 /// The fewest samples (with positive weight) of a window that is fitted: a quadratic has
 /// three parameters, and its residual needs a few more samples to mean anything.
 const MIN_FIT_POINTS: usize = 6;
+/// The fewest samples of a one-sided window (a line: two parameters). Near a corner of a
+/// clean polygon a side may hold few samples within the window's reach; they lie on its
+/// line exactly, and the vertex stays on it.
+const MIN_LINE_POINTS: usize = 4;
 /// A window whose smaller principal variance is more than this share of its larger one
 /// is a blob, not a curve piece (a straight band of half-length `R` and noise `σ` has an
 /// aspect of about `3 (σ/R)²`, so this admits windows of more than about 3.5 σ).
@@ -82,13 +93,32 @@ const MAX_ASPECT: f64 = 0.25;
 /// offsets of growing windows scatter within their errors, which shrink as the windows
 /// take more samples; where a window reaches a corner or a bend the fit cannot follow,
 /// its offset drifts away by more (the intersection-of-confidence-intervals rule).
-const AGREEMENT: f64 = 3.0;
+const AGREEMENT: f64 = 4.0;
 /// The centred fit is replaced by a one-sided one when its residual is more than this times
 /// the one-sided one's: noise alone makes the residuals of the three families differ by
 /// less.
 const SIDED_PREFERENCE: f64 = 2.0;
-/// Standard errors below this share of the radius are rounding, not noise: on samples
-/// exactly on a line every fit's error is about `1e-16 R`.
+/// A curve is smoothed when more than this share of its vertices zigzag (turn against
+/// both neighbours): about a quarter do where noise sets the turns, none on clean samples.
+const ZIGZAG_SHARE: f64 = 0.05;
+
+/// Turns (sines) below this are no turns to the zigzag test: the rounding of a moved or
+/// scaled straight run of clean samples turns them by about `1e-16`.
+const FLAT: f64 = 1e-9;
+
+/// A family grows only while its residual stays within this factor of that of its window of
+/// half the radius:
+/// on noise the residual stays level as the window grows; where the window takes in a
+/// corner, another piece of the curve or the whole of a small one, the residual grows with
+/// the radius (a corner's doubles in two steps).
+const RESIDUAL_GROWTH: f64 = 1.5;
+
+/// A fit that moves the vertex by more than this many of its residuals is not of the
+/// vertex's own samples (a Gaussian sample lies that far out once in 16 000).
+const SHIFT_RESIDUALS: f64 = 4.0;
+
+/// Residuals and standard errors below this share of the radius are rounding, not noise:
+/// on samples exactly on a line every fit's are about `1e-16 R`.
 const RESIDUAL_FLOOR: f64 = 1e-12;
 
 /// The fitted position of every point of `curves` (local indices, in the frame of `tri`),
@@ -112,49 +142,80 @@ pub(super) fn fitted_positions(tri: &Triangulation, curves: &[Curve]) -> Vec<Opt
             }
         }
     }
-    let mut vertices: Vec<[u32; 3]> = Vec::new();
-    for c in curves {
-        let k = c.points.len();
-        if k < 2 {
+    let mut vertices: Vec<(usize, usize)> = Vec::new();
+    for (j, c) in curves.iter().enumerate() {
+        if c.points.len() < 2 || !zigzags(&tri.points, c) {
             continue;
         }
-        for i in 0..k {
-            let p = c.points[i];
-            if degree[p as usize] > 2 {
-                continue;
+        for (i, &p) in c.points.iter().enumerate() {
+            if degree[p as usize] <= 2 {
+                vertices.push((j, i));
             }
-            let prev = if i > 0 {
-                c.points[i - 1]
-            } else if c.closed {
-                c.points[k - 1]
-            } else {
-                p
-            };
-            let next = if i + 1 < k {
-                c.points[i + 1]
-            } else if c.closed {
-                c.points[0]
-            } else {
-                p
-            };
-            vertices.push([prev, p, next]);
         }
     }
-    let fits = parallel::map_range(vertices.len(), |i| {
-        let [prev, p, next] = vertices[i];
-        fit_vertex(tri, &graph, prev, p, next)
+    let fits = parallel::map_range(vertices.len(), |v| {
+        let (j, i) = vertices[v];
+        fit_vertex(tri, &graph, &curves[j], i)
     });
-    for (&[_, p, _], fit) in vertices.iter().zip(fits) {
-        moved[p as usize] = fit;
+    for (&(j, i), fit) in vertices.iter().zip(fits) {
+        moved[curves[j].points[i] as usize] = fit;
     }
     crossings::undo_crossings(&tri.points, curves, &mut moved);
     moved
+}
+
+/// Whether `curve` is noisy: more than [`ZIGZAG_SHARE`] of its vertices turn the other way
+/// than both their neighbours (exact orientations). Noise that is not small against the
+/// curve's own turn per step makes the turns' signs about random, and a quarter of the
+/// vertices then zigzag; an ε-sample of a smooth curve or a polygon turns one way along
+/// every run between inflections, which it samples with several vertices, so none do. A
+/// curve that does not zigzag is left as it is: a fit could only trade its samples' exact
+/// positions for the fit's bias.
+fn zigzags(points: &[[f64; 2]], curve: &Curve) -> bool {
+    let k = curve.points.len();
+    if k < 5 {
+        return false;
+    }
+    let at = |i: usize| points[curve.points[i % k] as usize];
+    // The turn at `b`, `Zero` where it is below [`FLAT`] (a straight run of clean samples
+    // that rounding put a hair off its line).
+    let turn = |a: [f64; 2], b: [f64; 2], c: [f64; 2]| {
+        let sign = orient(a, b, c);
+        let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
+        let sine = (u[0] * v[1] - u[1] * v[0]) / (u[0].hypot(u[1]) * v[0].hypot(v[1]));
+        if sine.abs() <= FLAT {
+            Sign::Zero
+        } else {
+            sign
+        }
+    };
+    let turns: Vec<Sign> = if curve.closed {
+        (0..k)
+            .map(|i| turn(at(i + k - 1), at(i), at(i + 1)))
+            .collect()
+    } else {
+        (1..k - 1)
+            .map(|i| turn(at(i - 1), at(i), at(i + 1)))
+            .collect()
+    };
+    let m = turns.len();
+    let middle = if curve.closed { 0..m } else { 1..m - 1 };
+    let flips = middle
+        .clone()
+        .filter(|&i| {
+            let (before, here, after) = (turns[(i + m - 1) % m], turns[i], turns[(i + 1) % m]);
+            here != Sign::Zero && before == after && before != here && before != Sign::Zero
+        })
+        .count();
+    flips as f64 > ZIGZAG_SHARE * middle.len() as f64
 }
 
 /// The Delaunay graph of the triangulation, neighbours by local index.
 struct Graph {
     offsets: Vec<u32>,
     neighbours: Vec<u32>,
+    /// Every point's distance to its nearest neighbour (a Delaunay neighbour).
+    nearest: Vec<f64>,
 }
 
 impl Graph {
@@ -179,9 +240,17 @@ impl Graph {
             neighbours[fill[b as usize] as usize] = a;
             fill[b as usize] += 1;
         }
+        let nearest = parallel::map_range(n, |p| {
+            let (a, b) = (count[p] as usize, count[p + 1] as usize);
+            neighbours[a..b]
+                .iter()
+                .map(|&q| distance(tri.points[p], tri.points[q as usize]))
+                .fold(f64::INFINITY, f64::min)
+        });
         Graph {
             offsets: count,
             neighbours,
+            nearest,
         }
     }
 
@@ -216,6 +285,8 @@ impl Ord for Waiting {
 #[derive(Clone, Copy, Debug)]
 struct Fit {
     position: [f64; 2],
+    /// How far the vertex moves.
+    shift: f64,
     normal: [f64; 2],
     residual: f64,
     error: f64,
@@ -238,7 +309,11 @@ impl Family {
     /// smaller window's within [`AGREEMENT`] standard errors of the two (the intersection
     /// of confidence intervals rule); the family stops at the first that does not, and at
     /// a window that is no curve piece after one that was.
-    fn offer(&mut self, fit: Option<Fit>) {
+    fn offer(&mut self, fit: Option<Fit>, radius: f64, sided: bool) {
+        let fit = fit.map(|f| Fit {
+            residual: f.residual.max(RESIDUAL_FLOOR * radius),
+            ..f
+        });
         self.residuals.push(fit.map(|f| f.residual));
         if self.stopped {
             return;
@@ -248,10 +323,24 @@ impl Family {
             return;
         };
         let along = |p: [f64; 2]| p[0] * fit.normal[0] + p[1] * fit.normal[1];
-        let agrees = self.accepted.iter().all(|earlier| {
-            (along(fit.position) - along(earlier.position)).abs()
-                <= AGREEMENT * (earlier.error * earlier.error - fit.error * fit.error).max(0.0).sqrt()
-        });
+        let smallest = self
+            .accepted
+            .iter()
+            .map(|f| f.residual)
+            .fold(f64::INFINITY, f64::min);
+        // The vertex is one of the samples a side's fit describes: its distance from the
+        // fit is one of theirs. A side's fit that puts it much further is one of something
+        // else (the other leg of a sharp corner beside it).
+        let level = fit.residual <= RESIDUAL_GROWTH * smallest
+            && (!sided || fit.shift <= SHIFT_RESIDUALS * fit.residual);
+        let agrees = level
+            && self.accepted.iter().all(|earlier| {
+                (along(fit.position) - along(earlier.position)).abs()
+                    <= AGREEMENT
+                        * (earlier.error * earlier.error - fit.error * fit.error)
+                            .max(0.0)
+                            .sqrt()
+            });
         if agrees {
             self.accepted.push(fit);
             self.last = self.residuals.len() - 1;
@@ -265,32 +354,74 @@ impl Family {
     }
 }
 
-/// The fitted position of curve vertex `p` (local), with curve neighbours `prev` and
-/// `next` (`p` itself at a chain end); `None` where no window is a curve piece or the
-/// arithmetic fails.
-fn fit_vertex(tri: &Triangulation, graph: &Graph, prev: u32, p: u32, next: u32) -> Option<[f64; 2]> {
+/// The fitted position of the `i`-th vertex of `curve` (local indices); `None` where no
+/// window is a curve piece, the samples are clean, or the arithmetic fails.
+fn fit_vertex(tri: &Triangulation, graph: &Graph, curve: &Curve, i: usize) -> Option<[f64; 2]> {
     let at = |q: u32| tri.points[q as usize];
+    let k = curve.points.len();
+    // The vertex `offset` places along the curve (`None` past a chain's end; on a loop,
+    // the two directions never meet).
+    let along = |offset: isize| -> Option<u32> {
+        let j = i as isize + offset;
+        if curve.closed {
+            (2 * offset.unsigned_abs() < k).then(|| curve.points[j.rem_euclid(k as isize) as usize])
+        } else {
+            (0..k as isize)
+                .contains(&j)
+                .then(|| curve.points[j as usize])
+        }
+    };
+    let p = curve.points[i];
     let o = at(p);
-    let step = distance(o, at(prev)).max(distance(o, at(next)));
+    let step = [-1, 1]
+        .into_iter()
+        .filter_map(|d| along(d))
+        .map(|q| distance(o, at(q)))
+        .fold(0.0f64, f64::max);
     if !(step.is_finite() && step > 0.0) {
         return None;
     }
-    // The side of a sample: ahead of `p` along the chord from `prev` to `next`.
-    let (a, b) = (at(prev), at(next));
-    let chord = [b[0] - a[0], b[1] - a[1]];
-    let chord_length = chord[0].abs().max(chord[1].abs());
-    if !(chord_length.is_finite() && chord_length > 0.0) {
-        return None;
-    }
-    let tangent = [chord[0] / chord_length, chord[1] / chord_length];
+    // The side of a sample is that of its nearest vertex of the curve around `p`, walked
+    // in both directions as far as the windows reach: ahead (1), behind (-1) or `p` itself
+    // (0, on both sides). At a corner the samples of each leg are nearest to that leg's
+    // vertices, whatever the corner's angle and however unequal the steps.
+    let mut guide: Vec<(u32, i8)> = vec![(p, 0)];
+    let mut walked = [0isize; 2];
+    let mut extend = |guide: &mut Vec<(u32, i8)>, radius: f64| {
+        for (d, sign) in [(0, 1isize), (1, -1)] {
+            while guide.len() < MAX_WINDOW_POINTS {
+                let Some(q) = along(sign * (walked[d] + 1)) else {
+                    break;
+                };
+                walked[d] += 1;
+                guide.push((q, sign as i8));
+                if !(distance(o, at(q)) <= radius) {
+                    break;
+                }
+            }
+        }
+    };
+    let side_of = |guide: &[(u32, i8)], q: u32| -> i8 {
+        if let Some(&(_, side)) = guide.iter().find(|&&(g, _)| g == q) {
+            return side;
+        }
+        let x = at(q);
+        guide
+            .iter()
+            .map(|&(g, side)| (distance(x, at(g)), side))
+            .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.abs().cmp(&b.1.abs())))
+            .map_or(0, |(_, side)| side)
+    };
     let mut seen: HashSet<u32> = HashSet::new();
     let mut waiting = BinaryHeap::new();
-    let mut window: Vec<(f64, u32)> = Vec::new();
+    let mut window: Vec<(f64, u32, i8)> = Vec::new();
     seen.insert(p);
     waiting.push(Waiting(0.0, p));
     let mut families: [Family; 3] = Default::default();
     let mut radius = step;
+    let mut fitted_size = 0;
     for _ in 0..WINDOWS {
+        extend(&mut guide, radius);
         // Every sample within `radius` reachable through such samples, in distance order.
         while let Some(Waiting(d, q)) = waiting.peek() {
             if *d >= radius || window.len() >= MAX_WINDOW_POINTS {
@@ -298,8 +429,14 @@ fn fit_vertex(tri: &Triangulation, graph: &Graph, prev: u32, p: u32, next: u32) 
             }
             let (d, q) = (*d, *q);
             waiting.pop();
-            window.push((d, q));
+            window.push((d, q, side_of(&guide, q)));
             for &w in graph.of(q) {
+                // Along the curve's samples only: not across the inside of a sparse curve,
+                // nor from one noise band to the next.
+                let reach = LINK * graph.nearest[q as usize].max(graph.nearest[w as usize]);
+                if !(distance(at(q), at(w)) <= reach) {
+                    continue;
+                }
                 if seen.insert(w) {
                     let dw = distance(o, at(w));
                     if dw.is_finite() {
@@ -308,23 +445,25 @@ fn fit_vertex(tri: &Triangulation, graph: &Graph, prev: u32, p: u32, next: u32) 
                 }
             }
         }
+        // A window of the same samples as the last one fitted is no new evidence (only its
+        // weights differ); once nothing is left to reach, the windows are done.
+        if window.len() == fitted_size {
+            if waiting.is_empty() {
+                break;
+            }
+            radius *= SCALE_STEP;
+            continue;
+        }
+        fitted_size = window.len();
         // The samples in a fixed order (by local index), so that the sums are the same
         // however they were reached.
-        let mut samples: Vec<(f64, u32)> = window.clone();
-        samples.sort_unstable_by_key(|&(_, q)| q);
+        let mut samples: Vec<(f64, u32, i8)> = window.clone();
+        samples.sort_unstable_by_key(|&(_, q, _)| q);
         let offsets: Vec<Sample> = samples
             .iter()
-            .map(|&(d, q)| {
+            .map(|&(d, q, side)| {
                 let x = at(q);
                 let u = [(x[0] - o[0]) / radius, (x[1] - o[1]) / radius];
-                let s = u[0] * tangent[0] + u[1] * tangent[1];
-                let side = if q == p {
-                    0
-                } else if s >= 0.0 {
-                    1
-                } else {
-                    -1
-                };
                 let t = d / radius;
                 let w = (1.0 - t * t).max(0.0);
                 Sample {
@@ -337,14 +476,15 @@ fn fit_vertex(tri: &Triangulation, graph: &Graph, prev: u32, p: u32, next: u32) 
         let unscale = |fit: Option<Fit>| {
             fit.map(|f| Fit {
                 position: [o[0] + f.position[0] * radius, o[1] + f.position[1] * radius],
+                shift: f.position[0].hypot(f.position[1]) * radius,
                 normal: f.normal,
                 residual: f.residual * radius,
                 error: (f.error.max(RESIDUAL_FLOOR)) * radius,
             })
         };
-        families[0].offer(unscale(quadratic_fit(&offsets, |_| true)));
-        families[1].offer(unscale(line_fit(&offsets, |s| s >= 0)));
-        families[2].offer(unscale(line_fit(&offsets, |s| s <= 0)));
+        families[0].offer(unscale(quadratic_fit(&offsets, |_| true)), radius, false);
+        families[1].offer(unscale(line_fit(&offsets, |s| s >= 0)), radius, true);
+        families[2].offer(unscale(line_fit(&offsets, |s| s <= 0)), radius, true);
         if families.iter().all(|f| f.stopped) || window.len() >= MAX_WINDOW_POINTS {
             break;
         }
@@ -354,26 +494,24 @@ fn fit_vertex(tri: &Triangulation, graph: &Graph, prev: u32, p: u32, next: u32) 
     // whole disk. The residuals are compared at one window, where they average as many
     // samples: a small window's residual is a poor estimate.
     let [centred, ahead, behind] = &families;
-    let chosen = match centred.best() {
-        Some(c) => {
-            let at = |f: &Family| f.residuals.get(centred.last).copied().flatten();
-            let sides = [(at(ahead), ahead), (at(behind), behind)];
-            let better = sides
-                .iter()
-                .filter_map(|&(r, f)| Some((r?, f.best()?)))
-                .min_by(|x, y| x.0.total_cmp(&y.0));
-            match better {
-                Some((r, side)) if c.residual > SIDED_PREFERENCE * r => side,
-                _ => c,
-            }
-        }
-        None => {
-            let sides = [ahead.best(), behind.best()];
-            sides
-                .into_iter()
-                .flatten()
-                .min_by(|x, y| x.residual.total_cmp(&y.residual))?
-        }
+    // A corner: a side fits much better than the whole disk at the side's own last window
+    // (where the two average about as many samples: a small window's residual alone is a
+    // poor estimate), and of such sides the better one is taken.
+    let sided = [ahead, behind]
+        .into_iter()
+        .filter_map(|side| {
+            let fit = side.best()?;
+            let whole = centred.residuals.get(side.last).copied().flatten()?;
+            (whole > SIDED_PREFERENCE * fit.residual).then_some((side, fit))
+        })
+        .min_by(|x, y| x.1.residual.total_cmp(&y.1.residual));
+    let (_, chosen) = match (sided, centred.best()) {
+        (Some(side), _) => side,
+        (None, Some(c)) => (centred, c),
+        (None, None) => [ahead, behind]
+            .into_iter()
+            .filter_map(|f| Some((f, f.best()?)))
+            .min_by(|x, y| x.1.residual.total_cmp(&y.1.residual))?,
     };
     let position = chosen.position;
     (position[0].is_finite() && position[1].is_finite() && position != o).then_some(position)
@@ -404,7 +542,11 @@ struct Frame {
 
 /// The weighted principal frame of the samples `use_side(side)`; `None` with fewer than
 /// [`MIN_FIT_POINTS`] samples of positive weight or an aspect above [`MAX_ASPECT`].
-fn principal_frame(samples: &[Sample], use_side: impl Fn(i8) -> bool) -> Option<Frame> {
+fn principal_frame(
+    samples: &[Sample],
+    use_side: &impl Fn(i8) -> bool,
+    fewest: usize,
+) -> Option<Frame> {
     let used = || {
         samples
             .iter()
@@ -418,7 +560,7 @@ fn principal_frame(samples: &[Sample], use_side: impl Fn(i8) -> bool) -> Option<
         sx += s.weight * s.at[0];
         sy += s.weight * s.at[1];
     }
-    if count < MIN_FIT_POINTS || !(sw > 0.0) {
+    if count < fewest || !(sw > 0.0) {
         return None;
     }
     let m = [sx / sw, sy / sw];
@@ -476,7 +618,38 @@ fn corrected(mean: f64, sw: f64, sw2: f64, parameters: f64) -> Option<f64> {
 /// The vertex (at the origin) projected onto the total-least-squares line of the samples
 /// of the sides `use_side`; `None` where the samples are no curve piece.
 fn line_fit(samples: &[Sample], use_side: impl Fn(i8) -> bool) -> Option<Fit> {
-    let f = principal_frame(samples, use_side)?;
+    let mut f = principal_frame(samples, &use_side, MIN_LINE_POINTS)?;
+    // Robustly: a side's half disk may take in a few samples of the other side of a corner
+    // far from the vertex; Tukey's biweight on the residuals (scale from their median)
+    // gives them no weight, and noise its ordinary one.
+    for _ in 0..ROBUST_ITERATIONS {
+        let (m, t) = (f.centroid, f.tangent);
+        let across = |s: &Sample| ((s.at[0] - m[0]) * -t[1] + (s.at[1] - m[1]) * t[0]).abs();
+        let mut residuals: Vec<f64> = samples
+            .iter()
+            .filter(|s| s.weight > 0.0 && use_side(s.side))
+            .map(across)
+            .collect();
+        let middle = residuals.len() / 2;
+        let median = *residuals.select_nth_unstable_by(middle, f64::total_cmp).1;
+        let scale = TUKEY * (MAD_TO_SIGMA * median).max(RESIDUAL_FLOOR);
+        let robust: Vec<Sample> = samples
+            .iter()
+            .map(|s| {
+                let r = across(s) / scale;
+                let w = (1.0 - r * r).max(0.0);
+                Sample {
+                    at: s.at,
+                    weight: s.weight * w * w,
+                    side: s.side,
+                }
+            })
+            .collect();
+        match principal_frame(&robust, &use_side, MIN_LINE_POINTS) {
+            Some(next) => f = next,
+            None => break,
+        }
+    }
     let (m, t) = (f.centroid, f.tangent);
     // The origin's projection: m + ((0 − m)·t) t.
     let along = -(m[0] * t[0] + m[1] * t[1]);
@@ -487,6 +660,7 @@ fn line_fit(samples: &[Sample], use_side: impl Fn(i8) -> bool) -> Option<Fit> {
     let factor = f.sw2 / (f.sw * f.sw) + along * along * f.spread2 / (f.spread * f.spread);
     Some(Fit {
         position,
+        shift: 0.0,
         normal: [-t[1], t[0]],
         residual,
         error: residual * factor.sqrt(),
@@ -498,7 +672,7 @@ fn line_fit(samples: &[Sample], use_side: impl Fn(i8) -> bool) -> Option<Fit> {
 /// across, from the origin): the moving-least-squares projection; the line's projection
 /// where the quadratic is ill-conditioned.
 fn quadratic_fit(samples: &[Sample], use_side: impl Fn(i8) -> bool + Copy) -> Option<Fit> {
-    let f = principal_frame(samples, use_side)?;
+    let f = principal_frame(samples, &use_side, MIN_FIT_POINTS)?;
     let t = f.tangent;
     let n = [-t[1], t[0]];
     let used = || {
@@ -550,20 +724,22 @@ fn quadratic_fit(samples: &[Sample], use_side: impl Fn(i8) -> bool + Copy) -> Op
     }
     let quadratic = Fit {
         position: [c[0] * n[0], c[0] * n[1]],
+        shift: 0.0,
         normal: n,
         residual,
         error: residual * factor.sqrt(),
     };
     // The circle where it is one: the quadratic's fourth-order error on an arc grows as
     // the window does, the circle's only with the change of curvature.
-    Some(circle_fit(samples, use_side, &f).map_or(quadratic, |(position, normal, residual)| {
-        Fit {
+    Some(
+        circle_fit(samples, use_side, &f).map_or(quadratic, |(position, normal, residual)| Fit {
             position,
+            shift: 0.0,
             normal,
             residual,
             error: residual * factor.sqrt(),
-        }
-    }))
+        }),
+    )
 }
 
 /// The vertex (at the origin) projected onto the weighted algebraic circle fit of the
@@ -643,6 +819,14 @@ fn circle_fit(
     ];
     (position[0].abs() <= 1.0 && position[1].abs() <= 1.0).then_some((position, normal, residual))
 }
+/// Reweightings of a one-sided line fit (Tukey's biweight on the residuals): three settle
+/// it on a side's samples where a few of the other side's were in its half disk.
+const ROBUST_ITERATIONS: usize = 3;
+/// Tukey's constant (95 % efficiency on Gaussian noise), in units of the residuals' scale.
+const TUKEY: f64 = 4.685;
+/// The median absolute residual times this is the noise's standard deviation (Gaussian).
+const MAD_TO_SIGMA: f64 = 1.4826;
+
 /// Newton steps on Taubin's characteristic polynomial (Chernov's bound; it converges in a
 /// few from zero).
 const TAUBIN_ITERATIONS: usize = 99;

@@ -23,7 +23,11 @@ const STAGES: u8 = 2;
 /// Shortens or undoes the moves of `moved` (fitted positions by local point, `None`: at
 /// `points`) where the curves through them would cross, touch or turn clockwise; what
 /// remains in `moved` is where the points go.
-pub(super) fn undo_crossings(points: &[[f64; 2]], curves: &[Curve], moved: &mut [Option<[f64; 2]>]) {
+pub(super) fn undo_crossings(
+    points: &[[f64; 2]],
+    curves: &[Curve],
+    moved: &mut [Option<[f64; 2]>],
+) {
     let mut segments: Vec<[u32; 2]> = Vec::new();
     for c in curves {
         let k = c.points.len();
@@ -140,12 +144,14 @@ impl Grid {
         let extent = [hi[0] - lo[0], hi[1] - lo[1]];
         let mut lengths: Vec<f64> = ends
             .iter()
-            .map(|[p, q]| (half(p[0]) - half(q[0])).abs().max((half(p[1]) - half(q[1])).abs()))
+            .map(|[p, q]| {
+                (half(p[0]) - half(q[0]))
+                    .abs()
+                    .max((half(p[1]) - half(q[1])).abs())
+            })
             .collect();
         let middle = lengths.len() / 2;
-        let median = *lengths
-            .select_nth_unstable_by(middle, f64::total_cmp)
-            .1;
+        let median = *lengths.select_nth_unstable_by(middle, f64::total_cmp).1;
         let budget = (4 * ends.len() + 16) as f64;
         let mut cell = median.max(extent[0].max(extent[1]) / budget);
         if !(cell > 0.0 && cell.is_finite()) {
@@ -158,7 +164,13 @@ impl Grid {
             rows: 1,
         };
         loop {
-            let count = |e: f64| if grid.cell.is_finite() { (e / grid.cell) as usize + 1 } else { 1 };
+            let count = |e: f64| {
+                if grid.cell.is_finite() {
+                    (e / grid.cell) as usize + 1
+                } else {
+                    1
+                }
+            };
             grid.columns = count(extent[0]);
             grid.rows = count(extent[1]);
             let filled: usize = ends
@@ -244,15 +256,55 @@ mod tests {
     fn segments_meet_exactly() {
         let s = |a: [f64; 2], b: [f64; 2]| [a, b];
         // Crossing, touching at an inner point, apart, collinear overlapping, collinear apart.
-        assert!(segments_meet([0, 1], [2, 3], s([0.0, 0.0], [2.0, 2.0]), s([0.0, 2.0], [2.0, 0.0])));
-        assert!(segments_meet([0, 1], [2, 3], s([0.0, 0.0], [2.0, 0.0]), s([1.0, 0.0], [1.0, 1.0])));
-        assert!(!segments_meet([0, 1], [2, 3], s([0.0, 0.0], [1.0, 0.0]), s([2.0, 0.0], [3.0, 1.0])));
-        assert!(segments_meet([0, 1], [2, 3], s([0.0, 0.0], [2.0, 0.0]), s([1.0, 0.0], [3.0, 0.0])));
-        assert!(!segments_meet([0, 1], [2, 3], s([0.0, 0.0], [1.0, 0.0]), s([2.0, 0.0], [3.0, 0.0])));
+        assert!(segments_meet(
+            [0, 1],
+            [2, 3],
+            s([0.0, 0.0], [2.0, 2.0]),
+            s([0.0, 2.0], [2.0, 0.0])
+        ));
+        assert!(segments_meet(
+            [0, 1],
+            [2, 3],
+            s([0.0, 0.0], [2.0, 0.0]),
+            s([1.0, 0.0], [1.0, 1.0])
+        ));
+        assert!(!segments_meet(
+            [0, 1],
+            [2, 3],
+            s([0.0, 0.0], [1.0, 0.0]),
+            s([2.0, 0.0], [3.0, 1.0])
+        ));
+        assert!(segments_meet(
+            [0, 1],
+            [2, 3],
+            s([0.0, 0.0], [2.0, 0.0]),
+            s([1.0, 0.0], [3.0, 0.0])
+        ));
+        assert!(!segments_meet(
+            [0, 1],
+            [2, 3],
+            s([0.0, 0.0], [1.0, 0.0]),
+            s([2.0, 0.0], [3.0, 0.0])
+        ));
         // Sharing an end: a turn is fine, folding back is not.
-        assert!(!segments_meet([0, 1], [1, 2], s([0.0, 0.0], [1.0, 0.0]), s([1.0, 0.0], [1.0, 1.0])));
-        assert!(!segments_meet([0, 1], [1, 2], s([0.0, 0.0], [1.0, 0.0]), s([1.0, 0.0], [2.0, 0.0])));
-        assert!(segments_meet([0, 1], [1, 2], s([0.0, 0.0], [1.0, 0.0]), s([1.0, 0.0], [0.5, 0.0])));
+        assert!(!segments_meet(
+            [0, 1],
+            [1, 2],
+            s([0.0, 0.0], [1.0, 0.0]),
+            s([1.0, 0.0], [1.0, 1.0])
+        ));
+        assert!(!segments_meet(
+            [0, 1],
+            [1, 2],
+            s([0.0, 0.0], [1.0, 0.0]),
+            s([1.0, 0.0], [2.0, 0.0])
+        ));
+        assert!(segments_meet(
+            [0, 1],
+            [1, 2],
+            s([0.0, 0.0], [1.0, 0.0]),
+            s([1.0, 0.0], [0.5, 0.0])
+        ));
     }
 
     #[test]

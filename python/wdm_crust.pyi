@@ -125,6 +125,7 @@ def reconstruct(
     peeling: bool = True,
     medial_axis: Literal["pruned", "raw", "none"] = "pruned",
     peeling_budget: Optional[int] = None,
+    smooth: bool = False,
 ) -> Reconstruction:
     """Reconstructs the curves the points were sampled from, and their medial axis."""
 

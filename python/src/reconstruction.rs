@@ -30,6 +30,7 @@ fn options(
     peeling: bool,
     medial_axis: &str,
     peeling_budget: Option<i64>,
+    smooth: bool,
 ) -> PyResult<Options> {
     let algorithm = by_name(&ALGORITHMS, Algorithm::name, "algorithm", algorithm)?;
     let medial_axis = by_name(
@@ -41,7 +42,8 @@ fn options(
     let mut options = Options::new()
         .with_algorithm(algorithm)
         .with_peeling(peeling)
-        .with_medial_axis(medial_axis);
+        .with_medial_axis(medial_axis)
+        .with_smoothing(smooth);
     if let Some(budget) = peeling_budget {
         let budget = usize::try_from(budget).map_err(|_| {
             PyValueError::new_err(format!(
@@ -91,15 +93,15 @@ struct ReconstructionData {
 
 impl ReconstructionData {
     /// The same data as the command line's JSON; the curves' coordinates are the caller's
-    /// `points`.
-    fn of(rec: &wdm_crust::Reconstruction, points: &[[f64; 2]]) -> Self {
+    /// points, or the fitted ones with smoothing.
+    fn of(rec: &wdm_crust::Reconstruction) -> Self {
         let curves = rec
             .curves()
             .iter()
             .map(|curve| CurveData {
                 closed: curve.closed,
                 points: indices(curve.points.iter().copied()),
-                coords: curve.points.iter().map(|&i| points[i as usize]).collect(),
+                coords: rec.curve_coords(curve),
             })
             .collect();
         let medial_axis = rec.medial_axis();
@@ -119,8 +121,8 @@ impl ReconstructionData {
 ///     closed: True for a closed loop (its last point connects back to the first).
 ///     points: (k,) int64, the point indices along the curve. A closed loop lists each
 ///         point once, counterclockwise, from its smallest index.
-///     coords: (k, 2) float64, the coordinates of those points (for plotting a closed
-///         loop, repeat the first row at the end).
+///     coords: (k, 2) float64, the coordinates of those points, the fitted ones with
+///         `smooth=True` (for plotting a closed loop, repeat the first row at the end).
 #[pyclass(module = "wdm_crust", frozen)]
 pub struct Curve {
     closed: bool,
@@ -335,6 +337,9 @@ impl Reconstruction {
 ///         curves only, in about half the time; the medial axis returned is empty).
 ///     peeling_budget: the extra passes together may run on at most this many times the
 ///         input's points; None keeps the engine's default (as the command line's).
+///     smooth: fit the curves to the samples (the command line's --smooth): every curve
+///         vertex is placed on a local fit of the noisy samples around it, and each curve's
+///         `coords` are the fitted positions; False (the default) keeps the input points.
 ///
 /// Returns:
 ///     Reconstruction with `edges`, `curves`, `medial_axis`, `unassigned`: the same data as
@@ -347,7 +352,7 @@ impl Reconstruction {
 ///
 /// The GIL is released while the engine runs.
 #[pyfunction]
-#[pyo3(signature = (points, *, algorithm = "wdm", peeling = true, medial_axis = "pruned", peeling_budget = None))]
+#[pyo3(signature = (points, *, algorithm = "wdm", peeling = true, medial_axis = "pruned", peeling_budget = None, smooth = false))]
 pub fn reconstruct(
     py: Python<'_>,
     points: &Bound<'_, PyAny>,
@@ -355,12 +360,13 @@ pub fn reconstruct(
     peeling: bool,
     medial_axis: &str,
     peeling_budget: Option<i64>,
+    smooth: bool,
 ) -> PyResult<Reconstruction> {
-    let options = options(algorithm, peeling, medial_axis, peeling_budget)?;
+    let options = options(algorithm, peeling, medial_axis, peeling_budget, smooth)?;
     let (rec, data) = with_points(points, |points| {
         py.detach(|| {
             let rec = wdm_crust::reconstruct_with(points, &options)?;
-            let data = ReconstructionData::of(&rec, points);
+            let data = ReconstructionData::of(&rec);
             Ok((rec, data))
         })
         .map_err(engine_error)

@@ -1,53 +1,63 @@
 //! Smoothing (on demand, [`Options::with_smoothing`](super::Options::with_smoothing)):
 //! every curve vertex placed on a local fit of the samples around it, the last stage, on the
-//! assembled curves.
+//! assembled curves (the medial axis is that of the unsmoothed curves). The design note is
+//! `docs/design/smoothing.md`; every tolerance below is a named constant with its argument.
+//!
+//! # Which curves
+//!
+//! A curve is smoothed when it zigzags: more than [`ZIGZAG_SHARE`] of its vertices turn
+//! against both neighbours (exact orientations, turns below [`FLAT`] counted as none). Where
+//! noise sets the turns, about a quarter of the vertices do; clean ε-samples and polygons
+//! turn one way along every run between inflections, and are left exactly as they are.
+//! Junctions (points on three or more edges) stay too.
+//!
+//! # The samples around a vertex
+//!
+//! Every input point, on a curve or not, within a radius `R` of the vertex `p`, gathered in
+//! order of distance along Delaunay edges at most [`LINK`] nearest-neighbour distances long
+//! (in a dense noise band most points are on no curve, and they are what the fit averages;
+//! the short edges keep the gathering off the other side of a sparse curve and off another
+//! band). Each sample is weighted by the biweight `(1 − (d/R)²)²` of its distance and takes
+//! the side of its nearest curve vertex around `p`: ahead, behind, or `p` itself (both).
 //!
 //! # The fit
 //!
-//! The samples around a vertex `p` are every input point, on a curve or not, within a
-//! radius `R` of it (gathered along the Delaunay graph in order of distance: in a dense noise
-//! band most points are on no curve, and they are what the fit averages). The radius grows
-//! from the vertex's longer curve step by factors of √2 ([`SCALE_STEP`], at most
-//! [`WINDOWS`] radii, at most [`MAX_WINDOW_POINTS`] points), and three families of
-//! windows are fitted at each radius, each sample weighted by the biweight `(1 − (d/R)²)²` of
-//! its distance `d`:
+//! The radius grows from the vertex's longer curve step by [`SCALE_STEP`] (at most
+//! [`WINDOWS`] radii and [`MAX_WINDOW_POINTS`] samples), and three families of windows are
+//! fitted at each radius:
 //!
-//! * the *centred* window, the whole disk: a quadratic `v = c₀ + c₁u + c₂u²` over the
-//!   total-least-squares line of the window (the moving-least-squares projection), the
-//!   vertex moved to `c₀` along the line's normal;
-//! * the two *one-sided* windows, the half disks ahead of and behind `p` along the curve
-//!   (split by the line through `p` perpendicular to the chord of its two curve
-//!   neighbours, which at a corner separates its two sides): a total-least-squares line, the
-//!   vertex projected onto it.
+//! * the *centred* window: Taubin's algebraic circle fit where its radius is between
+//!   [`MIN_CIRCLE_RADIUS`] and [`LINE_RADIUS`] windows, else a quadratic over the window's
+//!   total-least-squares line; the vertex goes onto it along its normal;
+//! * the *one-sided* windows, the samples of each side: a total-least-squares line,
+//!   reweighted robustly (Tukey's biweight on the residuals), the vertex projected onto it.
 //!
-//! A window is used once it is a curve piece and not a blob: at least [`MIN_FIT_POINTS`]
-//! samples and an aspect (smaller over larger principal variance) of at most
-//! [`MAX_ASPECT`]. Each family grows while its residual (the weighted RMS distance of the
-//! samples from the fit, corrected for the fitted parameters) stays within
-//! [`RESIDUAL_GROWTH`] times the smallest residual before it: on a noise band the residual
-//! stays at the noise while the window grows and the fit averages more samples; where the
-//! window reaches a corner or a bend the fit does not follow, the residual grows with the
-//! radius and the growth stops. The centred family's last fit is taken unless its residual
-//! is more than [`SIDED_PREFERENCE`] times that of a one-sided family: at a corner the
-//! centred fit rounds it off and its residual shows it, while each side is straight; the
-//! side with the smaller residual is taken, and the corner vertex stays on its own side's
-//! line, at the corner.
-//!
-//! Junctions (points on three or more edges) stay where they are.
+//! A window is fitted once it is a curve piece, not a blob: [`MIN_FIT_POINTS`] samples
+//! ([`MIN_LINE_POINTS`] a side) and an aspect of at most [`MAX_ASPECT`]. A family grows
+//! while its next window's offset of the vertex agrees with every smaller window's within
+//! [`AGREEMENT`] standard errors of their difference (the intersection of confidence
+//! intervals rule, with the difference's error of nested estimates), its residual stays
+//! within [`RESIDUAL_GROWTH`] of its window of half the radius, and (a side) it moves the
+//! vertex by at most [`SHIFT_RESIDUALS`] residuals. On a noise band the offsets scatter
+//! within their shrinking errors and the window grows; where it reaches a bend the fit
+//! cannot follow, a corner, or another piece of the curve, the offset drifts or the
+//! residual grows, and the growth stops. The centred family's last fit is taken unless a
+//! side's last fit has less than 1/[`SIDED_PREFERENCE`] of the centred residual at the same
+//! radius: at a corner the centred fit rounds it off and its residual shows it, while each
+//! side is straight, and the vertex stays on its own side's line.
 //!
 //! # Simple curves, exactly
 //!
 //! The fit is rounded arithmetic; whether the moved curves are simple is decided exactly
-//! ([`crossings`]): every pair of curve segments (of all curves: no curve crosses itself or
-//! another) is tested with the kernel's exact orientation, a segment sharing an end with
-//! another may not fold back over it, and a closed curve must still run counterclockwise.
-//! Where a test fails, the moves of the points involved are undone, and the test runs again
-//! until nothing fails. Undoing every move gives the unsmoothed curves, whose edges are
-//! edges of one triangulation, so the loop ends.
+//! ([`crossings`]): every pair of curve segments (of all curves) is tested with the
+//! kernel's exact orientation, two segments that share an end may not fold over each
+//! other, and a closed curve must still run counterclockwise. Where a test fails, the moves
+//! of the points involved are halved, then undone, and the test runs again until nothing
+//! fails; the unsmoothed curves are edges of one triangulation, so the loop ends.
 //!
 //! Everything runs in the reconstruction's frame (the points exactly rescaled) on the
-//! triangulation's local indices, in an order fixed by the points: the result is the same
-//! in any input order and for every exact power-of-two scaling.
+//! triangulation's local indices, the samples of every sum in local order: the result is
+//! the same in any input order and for every exact power-of-two scaling.
 
 mod crossings;
 
@@ -89,7 +99,9 @@ const MIN_LINE_POINTS: usize = 4;
 /// aspect of about `3 (σ/R)²`, so this admits windows of more than about 3.5 σ).
 const MAX_ASPECT: f64 = 0.25;
 /// A family of windows grows while the vertex's offset of its next window agrees with that
-/// of every smaller window within this many standard errors of the two: on a noise band the
+/// of every smaller window within this many standard errors of their difference (for
+/// nested windows `√(s_small² − s_large²)`, the larger averaging the smaller's samples and
+/// more; 3 and 4 measured, dense-band median ratios 0.652 / 0.647): on a noise band the
 /// offsets of growing windows scatter within their errors, which shrink as the windows
 /// take more samples; where a window reaches a corner or a bend the fit cannot follow,
 /// its offset drifts away by more (the intersection-of-confidence-intervals rule).

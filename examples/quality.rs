@@ -1575,7 +1575,7 @@ fn taubin_project(pts: &[[f64; 2]], p: [f64; 2]) -> Option<([f64; 2], f64)> {
             [mxy, half + root - mxx]
         };
         let norm = d[0].hypot(d[1]);
-        if !(norm > 0.0) {
+        if norm.is_nan() || norm <= 0.0 {
             return None;
         }
         let t = [d[0] / norm, d[1] / norm];
@@ -1591,7 +1591,7 @@ fn taubin_project(pts: &[[f64; 2]], p: [f64; 2]) -> Option<([f64; 2], f64)> {
         .map(|q| ((q[0] - ax).hypot(q[1] - ay) - r).powi(2))
         .sum();
     let d = (p[0] - ax).hypot(p[1] - ay);
-    if !(d > 0.0) {
+    if d.is_nan() || d <= 0.0 {
         return None;
     }
     Some((

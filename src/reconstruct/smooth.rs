@@ -387,7 +387,7 @@ fn fit_vertex(tri: &Triangulation, graph: &Graph, curve: &Curve, i: usize) -> Op
     let o = at(p);
     let step = [-1, 1]
         .into_iter()
-        .filter_map(|d| along(d))
+        .filter_map(&along)
         .map(|q| distance(o, at(q)))
         .fold(0.0f64, f64::max);
     if !(step.is_finite() && step > 0.0) {
@@ -407,7 +407,7 @@ fn fit_vertex(tri: &Triangulation, graph: &Graph, curve: &Curve, i: usize) -> Op
                 };
                 walked[d] += 1;
                 guide.push((q, sign as i8));
-                if !(distance(o, at(q)) <= radius) {
+                if !at_most(distance(o, at(q)), radius) {
                     break;
                 }
             }
@@ -446,7 +446,7 @@ fn fit_vertex(tri: &Triangulation, graph: &Graph, curve: &Curve, i: usize) -> Op
                 // Along the curve's samples only: not across the inside of a sparse curve,
                 // nor from one noise band to the next.
                 let reach = LINK * graph.nearest[q as usize].max(graph.nearest[w as usize]);
-                if !(distance(at(q), at(w)) <= reach) {
+                if !at_most(distance(at(q), at(w)), reach) {
                     continue;
                 }
                 if seen.insert(w) {
@@ -572,7 +572,7 @@ fn principal_frame(
         sx += s.weight * s.at[0];
         sy += s.weight * s.at[1];
     }
-    if count < fewest || !(sw > 0.0) {
+    if count < fewest || !positive(sw) {
         return None;
     }
     let m = [sx / sw, sy / sw];
@@ -587,7 +587,7 @@ fn principal_frame(
     let half_trace = 0.5 * (cxx + cyy);
     let root = (0.25 * (cxx - cyy) * (cxx - cyy) + cxy * cxy).sqrt();
     let (large, small) = (half_trace + root, (half_trace - root).max(0.0));
-    if !(large > 0.0) || small > MAX_ASPECT * large {
+    if !positive(large) || small > MAX_ASPECT * large {
         return None;
     }
     // The eigenvector of the larger eigenvalue, from the better conditioned of the two
@@ -598,7 +598,7 @@ fn principal_frame(
         [cxy, large - cxx]
     };
     let norm = direction[0].hypot(direction[1]);
-    if !(norm > 0.0) {
+    if !positive(norm) {
         return None;
     }
     let t = [direction[0] / norm, direction[1] / norm];
@@ -821,7 +821,7 @@ fn circle_fit(
     // The origin, radially onto the circle.
     let away = [-centre[0], -centre[1]];
     let length = away[0].hypot(away[1]);
-    if !(length > 0.0) {
+    if !positive(length) {
         return None;
     }
     let normal = [away[0] / length, away[1] / length];
@@ -838,6 +838,21 @@ const ROBUST_ITERATIONS: usize = 3;
 const TUKEY: f64 = 4.685;
 /// The median absolute residual times this is the noise's standard deviation (Gaussian).
 const MAD_TO_SIGMA: f64 = 1.4826;
+
+/// A Cholesky pivot must exceed this share of its diagonal entry: below, the quadratic's
+/// normal equations are too ill-conditioned (samples nearly on one vertical of the frame),
+/// and the line's projection is taken.
+const PIVOT: f64 = 1e-12;
+
+/// `x > 0`, false for NaN.
+fn positive(x: f64) -> bool {
+    x > 0.0
+}
+
+/// `x ≤ limit`, false for NaN.
+fn at_most(x: f64, limit: f64) -> bool {
+    x <= limit
+}
 
 /// Newton steps on Taubin's characteristic polynomial (Chernov's bound; it converges in a
 /// few from zero).
@@ -858,12 +873,9 @@ fn solve3(a: [[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
     let mut l = [[0.0f64; 3]; 3];
     for i in 0..3 {
         for j in 0..=i {
-            let mut s = a[i][j];
-            for k in 0..j {
-                s -= l[i][k] * l[j][k];
-            }
+            let s = a[i][j] - (0..j).map(|k| l[i][k] * l[j][k]).sum::<f64>();
             if i == j {
-                if !(s > 1e-12 * a[i][i]) {
+                if !positive(s - PIVOT * a[i][i]) {
                     return None;
                 }
                 l[i][i] = s.sqrt();

@@ -14,7 +14,11 @@
 //! * polygons with sharp corners, several disjoint curves, nested curves, 10–40 % outliers,
 //!   Gaussian noise proportional to the local feature size;
 //! * ε-samples of the SVG drawings of `sampling2d`, and the real point sets whose file order
-//!   gives the ground truth.
+//!   gives the ground truth;
+//! * smoothing (`Options::with_smoothing`): dense noisy bands (ellipse, 5-star, Fourier blob,
+//!   an ellipse with a hole; 300–2000 points a curve, σ 0.5–2 % of the diagonal) against
+//!   the input's own noise and a FitConnect-style projection, clean ε-samples, noisy
+//!   polygons' corners.
 //!
 //! The real data (GPL-3.0 point sets and SVG drawings, see `tests/data/README.md`) is read from
 //! `DATA_DIR`, else from the environment variable `WDM_CRUST_DATA`, else from the repository's

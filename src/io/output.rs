@@ -628,7 +628,16 @@ mod tests {
         assert_eq!(value["points"], 10);
         let edges: Vec<[u32; 2]> = serde_json::from_value(value["edges"].clone()).unwrap();
         assert_eq!(edges, rec.edges());
-        assert_eq!(value["curves"], serde_json::to_value(rec.curves()).unwrap());
+        let curves = value["curves"].as_array().unwrap();
+        assert_eq!(curves.len(), rec.curves().len());
+        for (json, curve) in curves.iter().zip(rec.curves()) {
+            assert_eq!(json["closed"], curve.closed);
+            assert_eq!(json["points"], serde_json::to_value(&curve.points).unwrap());
+            let coords: Vec<[f64; 2]> = serde_json::from_value(json["coords"].clone()).unwrap();
+            assert_eq!(coords, rec.curve_coords(curve));
+        }
+        assert_eq!(value["duplicates"], serde_json::json!([]));
+        assert!(value["warnings"].is_array());
         let axis = &value["medial_axis"];
         let axis_edges: Vec<[u32; 2]> = serde_json::from_value(axis["edges"].clone()).unwrap();
         assert_eq!(axis_edges, rec.medial_axis().edges);

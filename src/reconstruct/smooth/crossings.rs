@@ -309,7 +309,7 @@ mod tests {
 
     #[test]
     fn a_crossing_move_is_undone_and_only_there() {
-        // A square ring of 8 points; point 2 moved across the far side, point 6 a little.
+        // A square ring of 8 points; point 2 moved across the far side, point 7 a little.
         let points = [
             [0.0, 0.0],
             [1.0, 0.0],
@@ -326,13 +326,21 @@ mod tests {
         }];
         let mut moved = vec![None; 8];
         moved[2] = Some([1.0, 2.5]);
-        moved[6] = Some([0.1, 1.9]);
+        moved[7] = Some([0.1, 1.0]);
         undo_crossings(&points, &curves, &mut moved);
         assert!(moved[2].is_none_or(|p| p[1] < 2.0), "{:?}", moved[2]);
-        assert_eq!(moved[6], Some([0.1, 1.9]));
-        // A ring turned clockwise as a whole: every move undone.
-        let mut moved: Vec<Option<[f64; 2]>> = points.iter().map(|&[x, y]| Some([y, x])).collect();
+        assert_eq!(moved[7], Some([0.1, 1.0]));
+        // A ring mirrored as a whole would turn clockwise: the moves are shortened until it
+        // runs counterclockwise again (a quarter of each keeps it a squashed square).
+        let mirrored: Vec<Option<[f64; 2]>> = points.iter().map(|&[x, y]| Some([y, x])).collect();
+        let mut moved = mirrored.clone();
         undo_crossings(&points, &curves, &mut moved);
-        assert!(moved.iter().all(Option::is_none));
+        let at = |i: usize| moved[i].unwrap_or(points[i]);
+        assert_eq!(ring_orientation_by(8, at), Sign::Positive);
+        for i in 0..8 {
+            let full = mirrored[i].unwrap();
+            let d = |q: [f64; 2]| (q[0] - points[i][0]).hypot(q[1] - points[i][1]);
+            assert!(d(at(i)) <= 0.25 * d(full), "{i}: {:?}", moved[i]);
+        }
     }
 }

@@ -125,6 +125,7 @@ def reconstruct(
     peeling: Optional[bool] = None,
     medial_axis: Optional[Literal["pruned", "raw", "none"]] = None,
     peeling_budget: Optional[int] = None,
+    smooth: bool = False,
 ) -> Reconstruction:
     """Reconstructs the curves the points were sampled from, and their medial axis.
 

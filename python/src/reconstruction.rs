@@ -31,6 +31,7 @@ fn options(
     peeling: Option<bool>,
     medial_axis: Option<&str>,
     peeling_budget: Option<i64>,
+    smooth: bool,
 ) -> PyResult<Options> {
     let algorithm = by_name(&ALGORITHMS, Algorithm::name, "algorithm", algorithm)?;
     let mut options = Options::new().with_algorithm(algorithm);
@@ -46,6 +47,7 @@ fn options(
         )?;
         options = options.with_medial_axis(mode);
     }
+    options = options.with_smoothing(smooth);
     if let Some(budget) = peeling_budget {
         let budget = usize::try_from(budget).map_err(|_| {
             PyValueError::new_err(format!(
@@ -120,15 +122,15 @@ struct ReconstructionData {
 
 impl ReconstructionData {
     /// The same data as the command line's JSON; the curves' coordinates are the caller's
-    /// `points`.
-    fn of(rec: &wdm_crust::Reconstruction, points: &[[f64; 2]]) -> Self {
+    /// points, or the fitted ones with smoothing.
+    fn of(rec: &wdm_crust::Reconstruction) -> Self {
         let curves = rec
             .curves()
             .iter()
             .map(|curve| CurveData {
                 closed: curve.closed,
                 points: indices(curve.points.iter().copied()),
-                coords: curve.points.iter().map(|&i| points[i as usize]).collect(),
+                coords: rec.curve_coords(curve),
             })
             .collect();
         let medial_axis = rec.medial_axis();
@@ -148,8 +150,8 @@ impl ReconstructionData {
 ///     closed: True for a closed loop (its last point connects back to the first).
 ///     points: (k,) int64, the point indices along the curve. A closed loop lists each
 ///         point once, counterclockwise, from its smallest index.
-///     coords: (k, 2) float64, the coordinates of those points (for plotting a closed
-///         loop, repeat the first row at the end).
+///     coords: (k, 2) float64, the coordinates of those points, the fitted ones with
+///         `smooth=True` (for plotting a closed loop, repeat the first row at the end).
 #[pyclass(module = "wdm_crust", frozen)]
 pub struct Curve {
     closed: bool,
@@ -365,6 +367,9 @@ impl Reconstruction {
 ///         returned is empty).
 ///     peeling_budget: WDM: the extra passes together may run on at most this many times
 ///         the input's points; None keeps the engine's default (as the command line's).
+///     smooth: fit the curves to the samples (the command line's --smooth): every curve
+///         vertex is placed on a local fit of the noisy samples around it, and each curve's
+///         `coords` are the fitted positions; False (the default) keeps the input points.
 ///
 /// The WDM options that ask a baseline for what it does not do are refused with 'crust'
 /// and 'nn-crust': medial_axis='pruned' or 'raw', peeling=True, any peeling_budget.
@@ -383,7 +388,7 @@ impl Reconstruction {
 ///
 /// The GIL is released while the engine runs.
 #[pyfunction]
-#[pyo3(signature = (points, *, algorithm = "wdm", peeling = None, medial_axis = None, peeling_budget = None))]
+#[pyo3(signature = (points, *, algorithm = "wdm", peeling = None, medial_axis = None, peeling_budget = None, smooth = false))]
 pub fn reconstruct(
     py: Python<'_>,
     points: &Bound<'_, PyAny>,
@@ -391,12 +396,13 @@ pub fn reconstruct(
     peeling: Option<bool>,
     medial_axis: Option<&str>,
     peeling_budget: Option<i64>,
+    smooth: bool,
 ) -> PyResult<Reconstruction> {
-    let options = options(algorithm, peeling, medial_axis, peeling_budget)?;
+    let options = options(algorithm, peeling, medial_axis, peeling_budget, smooth)?;
     let (rec, data) = with_points(points, |points| {
         py.detach(|| {
             let rec = wdm_crust::reconstruct_with(points, &options)?;
-            let data = ReconstructionData::of(&rec, points);
+            let data = ReconstructionData::of(&rec);
             Ok((rec, data))
         })
         .map_err(engine_error)

@@ -16,6 +16,7 @@ RECONSTRUCT_OPTIONS = [
     ({"medial_axis": "raw"}, ["--medial-axis", "raw"]),
     ({"medial_axis": "none"}, ["--medial-axis", "none"]),
     ({"peeling_budget": 0}, ["--peeling-budget", "0"]),
+    ({"smooth": True}, ["--smooth"]),
 ]
 
 
@@ -81,6 +82,22 @@ def test_curve_coords_are_the_points_along_the_curve(name):
     for curve in wdm_crust.reconstruct(points).curves:
         assert curve.coords.shape == (len(curve), 2)
         assert np.array_equal(curve.coords, points[curve.points])
+
+
+def test_smoothed_coords_match_the_cli_and_move_the_vertices(cli):
+    """A dense noisy circle: smooth=True gives the command line's --smooth coordinates,
+    fitted (closer to the circle than the samples), on the same curves."""
+    rng = np.random.default_rng(5)
+    t = rng.uniform(0.0, 2.0 * np.pi, 1000)
+    points = np.column_stack([np.cos(t), np.sin(t)]) + rng.normal(0.0, 0.014, (1000, 2))
+    plain = wdm_crust.reconstruct(points)
+    rec = wdm_crust.reconstruct(points, smooth=True)
+    assert [c.points.tolist() for c in rec.curves] == [c.points.tolist() for c in plain.curves]
+    expected = [c["coords"] for c in cli("reconstruct", points, "--smooth")["curves"]]
+    assert [c.coords.tolist() for c in rec.curves] == expected
+    off = lambda xy: np.abs(np.hypot(xy[:, 0], xy[:, 1]) - 1.0)
+    fitted = np.concatenate([off(c.coords) for c in rec.curves])
+    assert np.sqrt(np.mean(fitted**2)) < 0.6 * np.sqrt(np.mean(off(points) ** 2))
 
 
 def test_the_samples_reach_every_part_of_the_output():

@@ -30,6 +30,7 @@ Examples:
   wdm-crust reconstruct points.txt --algorithm nn-crust --format text
   wdm-crust reconstruct points.txt -o shapes.geojson
   wdm-crust reconstruct big-scan.txt --medial-axis none -o curves.json
+  wdm-crust reconstruct noisy-scan.txt --smooth -o shapes.geojson
 
 JSON output (one line):
   {\"algorithm\": \"wdm\", \"points\": N, \"edges\": [[i, j], ...],
@@ -52,8 +53,8 @@ holes; a curve inside a hole starts a new polygon), properties {\"kind\": \"curv
 \"points\": [...], \"holes\": [[...], ...]}; a LineString per open chain {\"kind\": \"chain\",
 \"points\": [...]}; one MultiLineString for the medial axis {\"kind\": \"medial_axis\"}; a
 MultiPoint of the unassigned points {\"kind\": \"unassigned\", \"points\": [...]} (left out
-when there are none). Rings are closed; coordinates are the input's, written so that they
-read back exactly.
+when there are none). Rings are closed; coordinates are the input's (with --smooth the
+curves' are the fitted ones), written so that they read back exactly.
 
 SVG output: the points, the curves (closed red, open purple), the medial axis (green), the
 unassigned points (grey rings) and a legend, y axis up (--y-down: down, for image
@@ -187,6 +188,13 @@ pub struct ReconstructArgs {
     #[arg(long, value_enum)]
     medial_axis: Option<MedialAxisArg>,
 
+    /// Fit the curves to the samples: every curve vertex is placed on a local fit of the
+    /// noisy samples around it (the JSON's `coords`, the GeoJSON's and the SVG's curves);
+    /// without it the curve vertices are the input points themselves. For dense noisy
+    /// scans; corners stay sharp, clean samples stay put, curves stay simple.
+    #[arg(long)]
+    smooth: bool,
+
     /// SVG underlays, comma-separated: delaunay, voronoi, labels (WDM only).
     #[arg(long, value_enum, value_delimiter = ',', value_name = "LAYERS")]
     show: Vec<Layer>,
@@ -220,6 +228,7 @@ impl ReconstructArgs {
         if let Some(mode) = self.medial_axis {
             options = options.with_medial_axis(mode.into());
         }
+        options = options.with_smoothing(self.smooth);
         let inapplicable = |option: String, conflict: OptionsConflict| {
             CliError::bad_input(format!(
                 "{option} does not apply to --algorithm {}: {}; leave it out, or use \

@@ -61,7 +61,8 @@
 //! "medial_axis":{"vertices":[[x,y],...],"edges":[[a,b],...]},"unassigned":[i,...],
 //! "duplicates":[[dup,kept],...],"warnings":[{"code":"...","message":"...","points":[...]},...]}`
 //! on one line: the fields of [`Reconstruction`] (`edges` with `i < j`, sorted; `curves` as
-//! in [`Curve`], each with the coordinates of its points; the medial axis as in
+//! in [`Curve`], each with the coordinates of its points, the fitted ones with smoothing,
+//! [`Reconstruction::curve_vertex`]; the medial axis as in
 //! [`MedialAxis`], empty for the baseline algorithms; `unassigned` as in
 //! [`Reconstruction::unassigned`]; `duplicates` as for the triangulation; `warnings` as in
 //! [`Reconstruction::warnings`], empty when there is nothing to say).
@@ -343,11 +344,11 @@ struct CurveJson<'a> {
 impl Serialize for CurveJson<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeStruct;
+        /// The curve vertices: the input points, or the fitted ones with smoothing.
         struct Coords<'a>(&'a Reconstruction, &'a [u32]);
         impl Serialize for Coords<'_> {
             fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-                let tri = self.0.triangulation();
-                serializer.collect_seq(self.1.iter().map(|&i| tri.point(i)))
+                serializer.collect_seq(self.1.iter().filter_map(|&i| self.0.curve_vertex(i)))
             }
         }
         let mut curve = serializer.serialize_struct("Curve", 3)?;

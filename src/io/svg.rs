@@ -227,10 +227,11 @@ pub fn write_reconstruction_svg<W: Write>(
         }
         w.open_stroke_group(id, colour, style.curve_width)?;
         for curve in rec.curves().iter().filter(|c| c.closed == closed) {
+            // Through the fitted positions with smoothing.
             let path = curve
                 .points
                 .iter()
-                .map(|&i| canvas.to_px(points[i as usize]));
+                .map(|&i| canvas.to_px(rec.curve_vertex(i).unwrap_or(points[i as usize])));
             w.polyline(path, closed)?;
         }
         w.close_group()?;

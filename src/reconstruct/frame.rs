@@ -109,6 +109,22 @@ impl Frame {
         }
     }
 
+    /// The smoothing's fitted positions `moved` (by local point, in this frame) as the curve
+    /// vertices of the restored triangulation `tri`, in the caller's coordinates: a moved
+    /// point rounded once ([`to_caller`](Self::to_caller)), every other one exactly the
+    /// caller's.
+    pub(super) fn fitted_to_caller(
+        self,
+        tri: &Triangulation,
+        moved: Vec<Option<[f64; 2]>>,
+    ) -> Vec<[f64; 2]> {
+        moved
+            .into_iter()
+            .zip(&tri.points)
+            .map(|(m, &p)| m.map_or(p, |q| self.to_caller(q)))
+            .collect()
+    }
+
     /// A frame point in the caller's coordinates, each coordinate rounded once.
     pub(super) fn to_caller(self, p: [f64; 2]) -> [f64; 2] {
         if self.shift == 0 {

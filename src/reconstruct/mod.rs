@@ -11,7 +11,8 @@
 //! axis off the labels), `corridors` (water that leaked through a gap of a noisy curve),
 //! `ears` (small loops hanging off a curve at one point), `peel` (holes), `detours` (outliers
 //! the crust ran through), `spikes` (outliers woven into a curve), `curves` (assembly),
-//! `result` (what is returned), `diagnose` (the warnings on a result);
+//! `smooth` (on demand: the curve vertices fitted to the samples around them), `result` (what
+//! is returned), `diagnose` (the warnings on a result);
 //! [`crust`] and [`nn_crust`] are the classical baselines on the same exact engine.
 
 mod bits;
@@ -34,6 +35,7 @@ pub mod polygons;
 mod proximity;
 mod result;
 mod segment_walk;
+mod smooth;
 mod spikes;
 pub mod wdm;
 

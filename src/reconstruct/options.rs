@@ -228,6 +228,7 @@ pub struct Options {
     detour_repair: bool,
     open_curves: bool,
     given: Given,
+    smoothing: bool,
 }
 
 impl Default for Options {
@@ -241,6 +242,7 @@ impl Default for Options {
             detour_repair: true,
             open_curves: true,
             given: Given(0),
+            smoothing: false,
         }
     }
 }
@@ -333,6 +335,45 @@ impl Options {
         self.open_curves = open_curves;
         self.given.0 |= WdmSetting::OpenCurves.bit();
         self
+    }
+
+    /// Smoothing (default off; every algorithm): every curve vertex is placed on a local
+    /// fit of the samples around it, the points on no curve among them, and
+    /// [`Reconstruction::curve_coords`](super::Reconstruction::curve_coords) gives the fitted
+    /// positions (the input points without it). For dense noisy scans, where the curve runs
+    /// through a band of samples several spacings wide: the fitted curve lies much closer to
+    /// the true one than the samples do. Corners stay sharp, clean samples stay where they
+    /// are (within a small fraction of their spacing), and the curves stay simple (no
+    /// segment crosses another, decided exactly). The curves' points, the edges, the
+    /// unassigned points and the medial axis are those of the unsmoothed curves
+    /// (docs/design/smoothing.md).
+    ///
+    /// ```
+    /// use wdm_crust::reconstruct::{reconstruct_with, Options};
+    /// // 400 samples of the unit circle, each off it radially by up to 0.02 (about a
+    /// // sample spacing), irregularly.
+    /// let points: Vec<[f64; 2]> = (0..400)
+    ///     .map(|k| {
+    ///         let t = k as f64 * std::f64::consts::TAU / 400.0;
+    ///         let r = 1.0 + 0.02 * (2.4 * k as f64).sin();
+    ///         [r * t.cos(), r * t.sin()]
+    ///     })
+    ///     .collect();
+    /// let rec = reconstruct_with(&points, &Options::new().with_smoothing(true))?;
+    /// let off = |p: &[f64; 2]| (p[0].hypot(p[1]) - 1.0).powi(2);
+    /// let rms = |ps: &[[f64; 2]]| (ps.iter().map(off).sum::<f64>() / ps.len() as f64).sqrt();
+    /// let fitted: Vec<[f64; 2]> = rec.curves().iter().flat_map(|c| rec.curve_coords(c)).collect();
+    /// assert!(rms(&fitted) < 0.7 * rms(&points), "{} {}", rms(&fitted), rms(&points));
+    /// # Ok::<(), wdm_crust::Error>(())
+    /// ```
+    pub fn with_smoothing(mut self, smoothing: bool) -> Self {
+        self.smoothing = smoothing;
+        self
+    }
+
+    /// See [`with_smoothing`](Self::with_smoothing).
+    pub fn smoothing(&self) -> bool {
+        self.smoothing
     }
 
     /// See [`with_open_curves`](Self::with_open_curves).

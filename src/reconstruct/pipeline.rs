@@ -11,6 +11,7 @@ use super::open_curves;
 use super::options::{Algorithm, MedialAxisMode, Options};
 use super::peel::{hole_edges, parity_inside, peel, Peeling};
 use super::result::{untouched_local_points, untouched_points, MedialAxis, Reconstruction};
+use super::smooth;
 use super::wdm::{self, Label, LabelRule};
 use super::{crust, nn_crust};
 use crate::delaunay::Triangulation;
@@ -66,6 +67,9 @@ pub enum Phase {
     /// translation to the caller's indices, and the edges read off them (not held through
     /// the axis, the memory peak).
     MedialAxis,
+    /// Smoothing ([`Options::with_smoothing`]): the curve vertices fitted to the samples
+    /// around them; then the coordinates' way back to the caller's.
+    Smooth,
 }
 
 impl Phase {
@@ -80,6 +84,7 @@ impl Phase {
             Phase::OpenCurves => "open-curves",
             Phase::Curves => "curves",
             Phase::MedialAxis => "medial-axis",
+            Phase::Smooth => "smooth",
         }
     }
 }
@@ -113,8 +118,13 @@ pub fn reconstruct_observed(
         let curves = assemble(&triangulation, &edges);
         let edges = triangulation.to_input_edges(edges);
         let unassigned = untouched_points(&triangulation, &edges);
-        frame.restore(&mut triangulation, points);
         lap(Phase::Curves);
+        let fitted = smoothing(&triangulation, &curves, options);
+        frame.restore(&mut triangulation, points);
+        let fitted = fitted.map(|moved| frame.fitted_to_caller(&triangulation, moved));
+        if options.smoothing() {
+            lap(Phase::Smooth);
+        }
         return Ok(Reconstruction {
             algorithm: options.algorithm(),
             triangulation,
@@ -126,10 +136,11 @@ pub fn reconstruct_observed(
             unassigned,
             passes: 1,
             budget_exhausted: false,
+            fitted,
             warnings: Default::default(),
         });
     }
-    let (labels, edges, curves, medial_axis, peeling, unassigned) = {
+    let (labels, edges, curves, medial_axis, peeling, unassigned, fitted) = {
         let mut vor = triangulation.voronoi();
         lap(Phase::Voronoi);
         // Only the labels go on: the sources and the visit marks are freed here (10 bytes per
@@ -245,9 +256,15 @@ pub fn reconstruct_observed(
         }
         let edges = curves::edges_of(&curves);
         lap(Phase::MedialAxis);
-        (labels, edges, curves, axis, peeling, unassigned)
+        // The last stage, on the final curves; the axis is that of the unsmoothed curves.
+        let fitted = smoothing(&triangulation, &curves, options);
+        (labels, edges, curves, axis, peeling, unassigned, fitted)
     };
     frame.restore(&mut triangulation, points);
+    let fitted = fitted.map(|moved| frame.fitted_to_caller(&triangulation, moved));
+    if options.smoothing() {
+        lap(Phase::Smooth);
+    }
     Ok(Reconstruction {
         algorithm: options.algorithm(),
         triangulation,
@@ -259,8 +276,29 @@ pub fn reconstruct_observed(
         unassigned,
         passes: 1 + peeling.extra_passes,
         budget_exhausted: peeling.budget_exhausted,
+        fitted,
         warnings: Default::default(),
     })
+}
+
+/// With [`Options::with_smoothing`], the fitted positions of the points of `curves` by
+/// local index, in the frame of `tri` (the curves in caller indices).
+fn smoothing(
+    tri: &Triangulation,
+    curves: &[curves::Curve],
+    options: &Options,
+) -> Option<Vec<Option<[f64; 2]>>> {
+    if !options.smoothing() {
+        return None;
+    }
+    let local: Vec<curves::Curve> = curves
+        .iter()
+        .map(|c| curves::Curve {
+            closed: c.closed,
+            points: c.points.iter().map(|&i| tri.local_index(i)).collect(),
+        })
+        .collect();
+    Some(smooth::fitted_positions(tri, &local))
 }
 
 /// The curves of distinct local `edges`, in caller indices (see

@@ -56,7 +56,8 @@ pub struct Polygon {
 
 impl Polygon {
     /// The coordinates of the exterior ring, in ring order (not closed), as the caller
-    /// gave them to the reconstruction `rec` this polygon came from.
+    /// gave them to the reconstruction `rec` this polygon came from (the fitted ones with
+    /// smoothing, [`Reconstruction::curve_vertex`]).
     ///
     /// ```
     /// // A square ring of 24 points around a square hole of 8, two spacings away.
@@ -123,11 +124,17 @@ impl Reconstruction {
             .filter(|c| c.closed)
             .map(|c| c.points.as_slice())
             .collect();
-        nest_into_polygons(&loops, |i| self.triangulation.point(i))
+        // With smoothing the fitted rings (simple and apart, decided exactly) are nested.
+        nest_into_polygons(&loops, |i| {
+            self.curve_vertex(i)
+                .unwrap_or_else(|| self.triangulation.point(i))
+        })
     }
 
     /// The coordinates of the points of `curve` (a curve of this reconstruction), in curve
-    /// order; a closed curve's first point is not repeated at the end.
+    /// order; a closed curve's first point is not repeated at the end. With smoothing
+    /// ([`Options::with_smoothing`](crate::reconstruct::Options::with_smoothing)) the fitted
+    /// positions, otherwise the input points ([`curve_vertex`](Self::curve_vertex)).
     ///
     /// ```
     /// let points = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]];
@@ -140,13 +147,12 @@ impl Reconstruction {
         self.ring_coords(&curve.points)
     }
 
-    /// The coordinates of caller indices (indices beyond the input are skipped).
+    /// The curve-vertex coordinates of caller indices (indices beyond the input are
+    /// skipped).
     fn ring_coords(&self, indices: &[u32]) -> Vec<[f64; 2]> {
-        let n = self.triangulation.point_count();
         indices
             .iter()
-            .filter(|&&i| (i as usize) < n)
-            .map(|&i| self.triangulation.point(i))
+            .filter_map(|&i| self.curve_vertex(i))
             .collect()
     }
 }

@@ -31,6 +31,9 @@ pub struct Reconstruction {
     pub(super) unassigned: Vec<u32>,
     pub(super) passes: usize,
     pub(super) budget_exhausted: bool,
+    /// With smoothing: the fitted position of every distinct point, by the triangulation's
+    /// local index (a point on no curve, or one the fit left, at its input coordinates).
+    pub(super) fitted: Option<Vec<[f64; 2]>>,
     /// [`Self::warnings`], computed on the first call.
     pub(super) warnings: std::sync::OnceLock<Vec<super::Warning>>,
 }
@@ -71,6 +74,26 @@ impl Reconstruction {
     /// the curves enclose nothing.
     pub fn medial_axis_mode(&self) -> Option<MedialAxisMode> {
         self.medial_axis_mode
+    }
+
+    /// Whether the curves were smoothed ([`Options::with_smoothing`](super::Options::with_smoothing)):
+    /// then [`curve_coords`](Self::curve_coords) and [`curve_vertex`](Self::curve_vertex) give
+    /// the fitted positions.
+    pub fn smoothed(&self) -> bool {
+        self.fitted.is_some()
+    }
+
+    /// Where point `i` (a caller index) lies as a curve vertex: its fitted position with
+    /// smoothing, its input coordinates otherwise (those of the point it repeats, for a
+    /// duplicate). `None` beyond the input.
+    pub fn curve_vertex(&self, i: u32) -> Option<[f64; 2]> {
+        if (i as usize) >= self.triangulation.point_count() {
+            return None;
+        }
+        Some(match &self.fitted {
+            Some(fitted) => fitted[self.triangulation.local_index(i) as usize],
+            None => self.triangulation.point(i),
+        })
     }
 
     /// The Delaunay triangulation of all the points.

@@ -151,13 +151,24 @@ SUBNORMAL_BOX = pytest.mark.xfail(
     strict=True, reason="subnormal grid: empty cells; 1e260 cluster: GEOS validity in floating point"
 )
 ULP_APART = ("subnormal-", "near-duplicates-in-a-fine-cluster")
+# Cells of order 1e190: GEOS's orientation and areas are products in doubles, which
+# overflow beyond about 1e154, so it cannot judge them (strict, so that a checker that can
+# shows).
+BEYOND_GEOS = pytest.mark.xfail(
+    strict=True, reason="coordinates of 1e190: GEOS's orientation and areas overflow"
+)
+HUGE = ("flow-junctions-far-apart-in-scale",)
 
 
 def fuzz_params():
-    return [
-        pytest.param(p, marks=SUBNORMAL_BOX) if p.name.startswith(ULP_APART) else p
-        for p in point_files(True)
-    ]
+    def param(p):
+        if p.name.startswith(ULP_APART):
+            return pytest.param(p, marks=SUBNORMAL_BOX)
+        if p.name.startswith(HUGE):
+            return pytest.param(p, marks=BEYOND_GEOS)
+        return p
+
+    return [param(p) for p in point_files(True)]
 
 
 @pytest.mark.parametrize("path", fuzz_params(), ids=lambda p: str(p.relative_to(DATA)))

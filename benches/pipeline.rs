@@ -54,12 +54,15 @@ fn bench_phases(c: &mut Criterion) {
             |b, p| b.iter(|| reconstruct_with(p, &closed_only).expect("valid points")),
         );
         // The warnings on a result (computed on the first call, so on a fresh copy each
-        // time; the copy is the setup, not measured).
+        // time; making the copy and dropping it are not measured).
         let rec = wdm_crust::reconstruct(&points).expect("valid points");
         group.bench_with_input(BenchmarkId::new("warnings", n), &rec, |b, rec| {
             b.iter_batched(
                 || rec.clone(),
-                |fresh| fresh.warnings().len(),
+                |fresh| {
+                    let count = fresh.warnings().len();
+                    (fresh, count)
+                },
                 criterion::BatchSize::LargeInput,
             )
         });

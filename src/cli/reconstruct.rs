@@ -34,16 +34,22 @@ Examples:
 
 JSON output (one line):
   {\"algorithm\": \"wdm\", \"points\": N, \"edges\": [[i, j], ...],
-   \"curves\": [{\"closed\": true, \"points\": [i, j, ...]}, ...],
+   \"curves\": [{\"closed\": true, \"points\": [i, j, ...], \"coords\": [[x, y], ...]}, ...],
    \"medial_axis\": {\"vertices\": [[x, y], ...], \"edges\": [[a, b], ...]},
-   \"unassigned\": [i, ...]}
+   \"unassigned\": [i, ...], \"duplicates\": [[dup, kept], ...],
+   \"warnings\": [{\"code\": \"...\", \"message\": \"...\", \"points\": [i, ...]}, ...]}
   edges are the reconstructed point pairs, i < j, sorted; curves chain them into closed
   loops (counterclockwise, each point once, starting at the smallest index) and open chains
   (from an end or a junction to the next one); the medial axis is the Voronoi edges between
   two inner Voronoi vertices, over its own vertex list (WDM only: empty for crust and
   nn-crust, and with --medial-axis none), pruned of noise branches unless --medial-axis
   raw; unassigned lists the points on no curve (outliers, leftovers of noise), sorted,
-  duplicates not listed.
+  duplicates not listed; coords are the curve's points' coordinates (fitted with --smooth);
+  duplicates pair each repeated point with its first occurrence; warnings say when the
+  result is probably not what was wanted (codes most-unassigned, scatter, long-edge,
+  loop-across-gap, curves-too-close, peeling-budget), empty when there is nothing to say.
+  Warnings are also printed on standard error, and a file written with -o gets a summary
+  line there (--quiet: neither).
 
 Text output: one reconstructed edge `i j` per line, nothing else.
 
@@ -70,7 +76,8 @@ GeoJSON, and anything else JSON.";
 /// Output formats of `reconstruct`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ReconstructFormat {
-    /// `{"algorithm", "points", "edges", "curves", "medial_axis", "unassigned"}` on one line.
+    /// `{"algorithm", "points", "edges", "curves", "medial_axis", "unassigned", "duplicates",
+    /// "warnings"}` on one line.
     Json,
     /// A picture: points, curves, medial axis, legend.
     Svg,

@@ -21,6 +21,24 @@ fn regression_points(name: &str) -> Vec<[f64; 2]> {
         .unwrap_or_else(|e| panic!("{path}: {e}"))
 }
 
+/// The points of `tests/data/regressions/<name>` and the permutation its
+/// `# permutation ...` comment line gives.
+fn points_with_permutation(name: &str) -> (Vec<[f64; 2]>, Vec<usize>) {
+    let path = format!(
+        "{}/tests/data/regressions/{name}",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let perm = text
+        .lines()
+        .find_map(|l| l.strip_prefix("# permutation "))
+        .unwrap_or_else(|| panic!("{path}: no permutation line"))
+        .split_whitespace()
+        .map(|k| k.parse().unwrap())
+        .collect();
+    (regression_points(name), perm)
+}
+
 /// Every check of the `triangulate` and `reconstruct` targets, on `points` and on `points`
 /// reversed.
 fn check_everything(points: &[[f64; 2]]) {
@@ -203,19 +221,7 @@ fn byte_order_mark_before_a_header() {
 /// (`Voronoi::canonical_triangle`).
 #[test]
 fn tiny_points_sharing_a_zorder_key_give_order_independent_positions() {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/regressions/tiny-points-sharing-a-zorder-key.txt"
-    );
-    let points = wdm_crust::io::read_points_from_path(std::path::Path::new(path)).unwrap();
-    let text = std::fs::read_to_string(path).unwrap();
-    let perm: Vec<usize> = text
-        .lines()
-        .find_map(|l| l.strip_prefix("# permutation "))
-        .unwrap()
-        .split_whitespace()
-        .map(|k| k.parse().unwrap())
-        .collect();
+    let (points, perm) = points_with_permutation("tiny-points-sharing-a-zorder-key.txt");
     assert_eq!((points.len(), perm.len()), (507, 507));
     let shuffled = checks::permute(&points, &perm);
     assert_eq!(position_bits(&points), position_bits(&shuffled));
@@ -368,19 +374,7 @@ fn pruned_axis_same_in_any_order_at_subnormal_scale() {
 /// coordinates.
 #[test]
 fn near_duplicates_in_a_fine_cluster_reconstruct_alike_in_any_order() {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/regressions/near-duplicates-in-a-fine-cluster.txt"
-    );
-    let points = wdm_crust::io::read_points_from_path(std::path::Path::new(path)).unwrap();
-    let text = std::fs::read_to_string(path).unwrap();
-    let perm: Vec<usize> = text
-        .lines()
-        .find_map(|l| l.strip_prefix("# permutation "))
-        .unwrap()
-        .split_whitespace()
-        .map(|k| k.parse().unwrap())
-        .collect();
+    let (points, perm) = points_with_permutation("near-duplicates-in-a-fine-cluster.txt");
     assert_eq!((points.len(), perm.len()), (481, 481));
     let shuffled = checks::permute(&points, &perm);
     for options in [

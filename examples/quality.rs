@@ -1623,10 +1623,12 @@ fn print_smoothing_tables() {
          curves, all in % of the diagonal: `raw` through the input points, `smooth` through \
          the fitted ones, `fc` each vertex projected FitConnect-style (a Taubin circle fit of \
          its growing k nearest samples; our reading of the method). right = trials with one \
-         closed curve per true curve and nothing else. ratio = smooth RMS / noise.\n"
+         closed curve per true curve and nothing else. ratio = smooth RMS / noise. wdm ms = the \
+         default reconstruction with smoothing (dense bands are thinned first, \
+         docs/design/thinning.md); unthinned right = the same with thinning off.\n"
     );
-    println!("| input | n | σ % | wdm right | noise | raw RMS | smooth RMS | fc RMS | raw H | smooth H | fc H | ratio | crust right / ratio | nn-crust right / ratio |");
-    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    println!("| input | n | σ % | wdm right | noise | raw RMS | smooth RMS | fc RMS | raw H | smooth H | fc H | ratio | wdm ms | unthinned right | crust right / ratio | nn-crust right / ratio |");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
     let hole = Ellipse::circle(0.5).dense(DENSE);
     let shapes: Vec<(&str, Vec<DenseCurve>)> = vec![
         ("ellipse", vec![Ellipse { a: 2.0, b: 1.0 }.dense(DENSE)]),
@@ -1646,12 +1648,20 @@ fn print_smoothing_tables() {
                 let mut sums = [0.0f64; 7];
                 let mut right = 0;
                 let mut baselines = [(0usize, 0.0f64); 2];
+                let (mut millis, mut unthinned) = (0.0f64, 0usize);
                 for _ in 0..trials {
                     let (points, noise) = dense_band(curves, n, sigma, &mut rng);
                     let options = Options::new().with_smoothing(true);
+                    let clock = Instant::now();
                     let Ok(rec) = reconstruct_with(&points, &options) else {
                         continue;
                     };
+                    millis += clock.elapsed().as_secs_f64() * 1e3 / trials as f64;
+                    if let Ok(plain) = reconstruct_with(&points, &options.with_thinning(false)) {
+                        let closed = plain.curves().iter().filter(|c| c.closed).count();
+                        unthinned +=
+                            usize::from(closed == curves.len() && closed == plain.curves().len());
+                    }
                     let closed = rec.curves().iter().filter(|c| c.closed).count();
                     let is_right = closed == curves.len() && closed == rec.curves().len();
                     right += usize::from(is_right);
@@ -1698,7 +1708,7 @@ fn print_smoothing_tables() {
                 }
                 let [noise, r0, r1, r2, h0, h1, h2] = sums;
                 println!(
-                    "| {name} | {n} | {sigma} | {right}/{trials} | {noise:.2} | {r0:.2} | {r1:.2} | {r2:.2} | {h0:.2} | {h1:.2} | {h2:.2} | {:.2} | {}/{trials} / {:.2} | {}/{trials} / {:.2} |",
+                    "| {name} | {n} | {sigma} | {right}/{trials} | {noise:.2} | {r0:.2} | {r1:.2} | {r2:.2} | {h0:.2} | {h1:.2} | {h2:.2} | {:.2} | {millis:.0} | {unthinned}/{trials} | {}/{trials} / {:.2} | {}/{trials} / {:.2} |",
                     r1 / noise, baselines[0].0, baselines[0].1, baselines[1].0, baselines[1].1
                 );
             }

@@ -116,6 +116,9 @@ fn a_uniform_scatter_and_a_lattice_are_called_a_scatter() {
     }
 }
 
+/// A band many spacings wide, reconstructed as it is (thinning off): most of its points are
+/// on no curve, and the warning says so. The default thins it to one loop through its
+/// middle, and then nothing is to be said about the unassigned points.
 #[test]
 fn a_wide_band_of_noise_leaves_most_points_unassigned_and_says_so() {
     let mut rng = Rng::new(3);
@@ -126,7 +129,16 @@ fn a_wide_band_of_noise_leaves_most_points_unassigned_and_says_so() {
             [r * t.cos(), r * t.sin()]
         })
         .collect();
-    let rec = reconstruct(&band).unwrap();
+    let thinned = reconstruct(&band).unwrap();
+    assert!(thinned.thinned().is_some());
+    assert_eq!(thinned.curves().len(), 1);
+    assert!(thinned.curves()[0].closed);
+    assert!(
+        !codes(&thinned).contains(&WarningCode::MostUnassigned),
+        "{:?}",
+        thinned.warnings()
+    );
+    let rec = reconstruct_with(&band, &Options::new().with_thinning(false)).unwrap();
     assert!(2 * rec.unassigned().len() > band.len());
     let found = codes(&rec);
     assert_eq!(

@@ -47,7 +47,8 @@ JSON output (one line):
   duplicates not listed; coords are the curve's points' coordinates (fitted with --smooth);
   duplicates pair each repeated point with its first occurrence; warnings say when the
   result is probably not what was wanted (codes most-unassigned, scatter, long-edge,
-  loop-across-gap, curves-too-close, peeling-budget), empty when there is nothing to say.
+  loop-across-gap, curves-too-close, peeling-budget), empty when there is nothing to say;
+  \"thinned\": N appears when a dense noisy band was thinned to N representatives.
   Warnings are also printed on standard error, and a file written with -o gets a summary
   line there (--quiet: neither).
 
@@ -202,6 +203,13 @@ pub struct ReconstructArgs {
     #[arg(long)]
     smooth: bool,
 
+    /// WDM: reconstruct a dense noisy band as it is. By default an input whose points form a
+    /// band many sample spacings wide (a dense scan) is thinned to representatives near the
+    /// band's middle and the curves are drawn through them (the JSON's `thinned` counts
+    /// them); every other point is unassigned.
+    #[arg(long)]
+    no_thinning: bool,
+
     /// SVG underlays, comma-separated: delaunay, voronoi, labels (WDM only).
     #[arg(long, value_enum, value_delimiter = ',', value_name = "LAYERS")]
     show: Vec<Layer>,
@@ -236,6 +244,9 @@ impl ReconstructArgs {
             options = options.with_medial_axis(mode.into());
         }
         options = options.with_smoothing(self.smooth);
+        if self.no_thinning {
+            options = options.with_thinning(false);
+        }
         let inapplicable = |option: String, conflict: OptionsConflict| {
             CliError::bad_input(format!(
                 "{option} does not apply to --algorithm {}: {}; leave it out, or use \
@@ -318,15 +329,19 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
     // phases after the labels are printed as one, `extract`, with their split in its note.
     let mut extract_parts: Vec<(Phase, std::time::Duration)> = Vec::new();
     let rec = wdm_crust::reconstruct_observed(&points, &options, &mut |phase, time| {
-        if matches!(phase, Phase::Triangulate | Phase::Voronoi | Phase::Label) {
+        if matches!(
+            phase,
+            Phase::Triangulate | Phase::Thin | Phase::Voronoi | Phase::Label
+        ) {
             timings.phase(phase.name(), String::new);
         } else {
             extract_parts.push((phase, time));
         }
-        if let Some(next) = next_phase(options.algorithm(), phase) {
+        if let Some(next) = next_phase(&options, phase) {
             timings.begin(|| match next {
                 Phase::Voronoi => "building the Voronoi diagram".to_string(),
                 Phase::Label => "labeling by water flow".to_string(),
+                Phase::Thin => "looking for a dense noisy band".to_string(),
                 _ => format!("extracting ({})", options.algorithm().name()),
             });
         }
@@ -398,10 +413,12 @@ fn curve_counts(rec: &wdm_crust::Reconstruction) -> String {
     )
 }
 
-/// The phase after `phase` in the pipeline of `algorithm`.
-fn next_phase(algorithm: Algorithm, phase: Phase) -> Option<Phase> {
-    match (algorithm, phase) {
-        (Algorithm::Wdm, Phase::Triangulate) => Some(Phase::Voronoi),
+/// The phase after `phase` in the pipeline `options` ask for (after thinning that chose
+/// representatives: their triangulation, reported as the Voronoi diagram's beginning).
+fn next_phase(options: &wdm_crust::reconstruct::Options, phase: Phase) -> Option<Phase> {
+    match (options.algorithm(), phase) {
+        (Algorithm::Wdm, Phase::Triangulate) if options.thinning() => Some(Phase::Thin),
+        (Algorithm::Wdm, Phase::Thin | Phase::Triangulate) => Some(Phase::Voronoi),
         (Algorithm::Wdm, Phase::Voronoi) => Some(Phase::Label),
         (Algorithm::Wdm, Phase::Label) => Some(Phase::Extract),
         (_, Phase::Triangulate) => Some(Phase::Extract),

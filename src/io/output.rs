@@ -65,7 +65,8 @@
 //! [`Reconstruction::curve_vertex`]; the medial axis as in
 //! [`MedialAxis`], empty for the baseline algorithms; `unassigned` as in
 //! [`Reconstruction::unassigned`]; `duplicates` as for the triangulation; `warnings` as in
-//! [`Reconstruction::warnings`], empty when there is nothing to say).
+//! [`Reconstruction::warnings`], empty when there is nothing to say); `"thinned": N` only
+//! when a dense noisy band was thinned to N representatives ([`Reconstruction::thinned`]).
 //!
 //! # Reconstruction, text
 //!
@@ -323,6 +324,8 @@ struct ReconstructionJson<'a> {
     unassigned: &'a [u32],
     duplicates: &'a [[u32; 2]],
     warnings: WarningsJson<'a>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    thinned: Option<usize>,
 }
 
 /// The curves, each with the coordinates of its points.
@@ -409,6 +412,7 @@ pub fn write_reconstruction_json<W: Write>(rec: &Reconstruction, out: W) -> io::
         unassigned: rec.unassigned(),
         duplicates: rec.duplicates(),
         warnings: WarningsJson(rec.warnings()),
+        thinned: rec.thinned(),
     };
     serde_json::to_writer(&mut out, &json)?;
     out.write_all(b"\n")?;

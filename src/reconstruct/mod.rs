@@ -7,11 +7,13 @@
 //! ([`Curve`]). Shapes with holes are handled by peeling (see [`Options::with_peeling`]).
 //!
 //! One module per job, in pipeline order: [`options`](Options) (what is asked), `pipeline`
-//! (the orchestration, top to bottom), `frame` (the exactly rescaled coordinates it runs in), [`wdm`] (the water flow), `extract` (crust and medial
+//! (the orchestration, top to bottom), `frame` (the exactly rescaled coordinates it runs in), `thinning` (dense noisy bands to
+//! representatives, before everything else), [`wdm`] (the water flow), `extract` (crust and medial
 //! axis off the labels), `corridors` (water that leaked through a gap of a noisy curve),
 //! `ears` (small loops hanging off a curve at one point), `peel` (holes), `detours` (outliers
 //! the crust ran through), `spikes` (outliers woven into a curve), `curves` (assembly),
-//! `smooth` (on demand: the curve vertices fitted to the samples around them), `result` (what
+//! `smooth` (on demand: the curve vertices fitted to the samples around them),
+//! `delaunay_graph` (adjacency lists for the walks of both), `result` (what
 //! is returned), `diagnose` (the warnings on a result);
 //! [`crust`] and [`nn_crust`] are the classical baselines on the same exact engine.
 
@@ -19,6 +21,7 @@ mod bits;
 mod corridors;
 pub mod crust;
 mod curves;
+mod delaunay_graph;
 mod detours;
 mod diagnose;
 mod ears;
@@ -37,6 +40,7 @@ mod result;
 mod segment_walk;
 mod smooth;
 mod spikes;
+mod thinning;
 pub mod wdm;
 
 pub use curves::Curve;

@@ -229,6 +229,7 @@ pub struct Options {
     open_curves: bool,
     given: Given,
     smoothing: bool,
+    thinning: bool,
 }
 
 impl Default for Options {
@@ -243,6 +244,7 @@ impl Default for Options {
             open_curves: true,
             given: Given(0),
             smoothing: false,
+            thinning: true,
         }
     }
 }
@@ -369,6 +371,49 @@ impl Options {
     pub fn with_smoothing(mut self, smoothing: bool) -> Self {
         self.smoothing = smoothing;
         self
+    }
+
+    /// Thinning of dense noisy bands (default on; WDM only, the baselines ignore it): when
+    /// the points form a band many sample spacings wide (a dense noisy scan), they are
+    /// covered by disks of a few noise widths and each disk is represented by its point
+    /// nearest the disk's centroid; the curves are reconstructed through the
+    /// representatives, and every other point is unassigned. Inputs whose noise is below
+    /// about four spacings along the curve (every ε-sample, the sparse noisy ones) are never
+    /// thinned. [`Reconstruction::thinned`](super::Reconstruction::thinned) tells whether it
+    /// happened (docs/design/thinning.md).
+    ///
+    /// ```
+    /// use wdm_crust::reconstruct::{reconstruct_with, Options};
+    /// // 3000 points in a noisy band around the unit circle (σ = 0.03, about 15 spacings).
+    /// let mut s = 1u64;
+    /// let mut u = move || {
+    ///     s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+    ///     (s >> 11) as f64 / (1u64 << 53) as f64
+    /// };
+    /// let points: Vec<[f64; 2]> = (0..3000)
+    ///     .map(|_| {
+    ///         let t = std::f64::consts::TAU * u();
+    ///         let g = (-2.0 * (1.0 - u()).ln()).sqrt() * (std::f64::consts::TAU * u()).cos();
+    ///         let r = 1.0 + 0.03 * g;
+    ///         [r * t.cos(), r * t.sin()]
+    ///     })
+    ///     .collect();
+    /// let rec = reconstruct_with(&points, &Options::new())?;
+    /// assert!(rec.thinned().is_some());
+    /// assert_eq!(rec.curves().len(), 1);
+    /// assert!(rec.curves()[0].closed);
+    /// let raw = reconstruct_with(&points, &Options::new().with_thinning(false))?;
+    /// assert!(raw.thinned().is_none());
+    /// # Ok::<(), wdm_crust::Error>(())
+    /// ```
+    pub fn with_thinning(mut self, thinning: bool) -> Self {
+        self.thinning = thinning;
+        self
+    }
+
+    /// See [`with_thinning`](Self::with_thinning).
+    pub fn thinning(&self) -> bool {
+        self.thinning
     }
 
     /// See [`with_smoothing`](Self::with_smoothing).

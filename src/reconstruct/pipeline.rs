@@ -12,6 +12,7 @@ use super::options::{Algorithm, MedialAxisMode, Options};
 use super::peel::{hole_edges, parity_inside, peel, Peeling};
 use super::result::{untouched_local_points, untouched_points, MedialAxis, Reconstruction};
 use super::smooth;
+use super::thinning;
 use super::wdm::{self, Label, LabelRule};
 use super::{crust, nn_crust};
 use crate::delaunay::Triangulation;
@@ -70,6 +71,11 @@ pub enum Phase {
     /// Smoothing ([`Options::with_smoothing`]): the curve vertices fitted to the samples
     /// around them; then the coordinates' way back to the caller's.
     Smooth,
+    /// Thinning ([`Options::with_thinning`], WDM): recognising a dense noisy band and
+    /// choosing its representatives. When it chose some, the phases of their reconstruction
+    /// follow (from [`Triangulate`](Self::Triangulate) on), then [`Curves`](Self::Curves)
+    /// again for the way back to all the points.
+    Thin,
 }
 
 impl Phase {
@@ -85,6 +91,7 @@ impl Phase {
             Phase::Curves => "curves",
             Phase::MedialAxis => "medial-axis",
             Phase::Smooth => "smooth",
+            Phase::Thin => "thin",
         }
     }
 }
@@ -106,6 +113,13 @@ pub fn reconstruct_observed(
     // edges come out in the caller's.
     let (mut triangulation, frame) = Frame::triangulate(points)?;
     lap(Phase::Triangulate);
+    if options.algorithm() == Algorithm::Wdm && options.thinning() {
+        let representatives = thinning::representatives(&triangulation);
+        lap(Phase::Thin);
+        if let Some(local) = representatives {
+            return thinned(points, triangulation, frame, &local, options, on_phase);
+        }
+    }
     if options.algorithm() != Algorithm::Wdm {
         let edges = if triangulation.is_degenerate() {
             chain_edges(&triangulation)
@@ -138,6 +152,7 @@ pub fn reconstruct_observed(
             budget_exhausted: false,
             fitted,
             warnings: Default::default(),
+            thinned: None,
         });
     }
     let (labels, edges, curves, medial_axis, peeling, unassigned, fitted) = {
@@ -278,6 +293,84 @@ pub fn reconstruct_observed(
         budget_exhausted: peeling.budget_exhausted,
         fitted,
         warnings: Default::default(),
+        thinned: None,
+    })
+}
+
+/// The reconstruction of a dense band through its `representatives` (local indices of
+/// `tri`, ascending), lifted to all the points: the curves, edges, axis and warnings of the
+/// representatives' reconstruction in the caller's indices, every other point unassigned,
+/// the triangulation of all points, no labels (they belong to the representatives'
+/// Voronoi diagram), the smoothing fitted to all the samples.
+fn thinned(
+    points: &[[f64; 2]],
+    mut tri: Triangulation,
+    frame: Frame,
+    representatives: &[u32],
+    options: &Options,
+    on_phase: &mut dyn FnMut(Phase, std::time::Duration),
+) -> Result<Reconstruction, Error> {
+    let mut ids: Vec<u32> = representatives
+        .iter()
+        .map(|&p| tri.input_index(p))
+        .collect();
+    ids.sort_unstable();
+    let chosen: Vec<[f64; 2]> = ids.iter().map(|&i| points[i as usize]).collect();
+    let inner_options = options.with_thinning(false).with_smoothing(false);
+    let inner = reconstruct_observed(&chosen, &inner_options, on_phase)?;
+    let clock = std::time::Instant::now();
+    // `ids` is ascending, so the translation keeps every order: edges `[i, j]` with `i < j`,
+    // sorted; curves starting where they started.
+    let id = |k: u32| ids[k as usize];
+    let curves: Vec<curves::Curve> = inner
+        .curves
+        .iter()
+        .map(|c| curves::Curve {
+            closed: c.closed,
+            points: c.points.iter().map(|&k| id(k)).collect(),
+        })
+        .collect();
+    let edges: Vec<[u32; 2]> = inner.edges.iter().map(|e| [id(e[0]), id(e[1])]).collect();
+    let mut on_curve = vec![false; points.len()];
+    for &p in curves.iter().flat_map(|c| c.points.iter()) {
+        on_curve[p as usize] = true;
+    }
+    let mut unassigned: Vec<u32> = tri
+        .input_of
+        .iter()
+        .copied()
+        .filter(|&i| !on_curve[i as usize])
+        .collect();
+    unassigned.sort_unstable();
+    let warnings: Vec<super::Warning> = inner
+        .warnings()
+        .iter()
+        .map(|w| super::Warning {
+            code: w.code,
+            message: w.message.clone(),
+            points: w.points.iter().map(|&k| id(k)).collect(),
+        })
+        .collect();
+    let fitted = smoothing(&tri, &curves, options);
+    frame.restore(&mut tri, points);
+    let fitted = fitted.map(|moved| frame.fitted_to_caller(&tri, moved));
+    on_phase(Phase::Curves, clock.elapsed());
+    let cell = std::sync::OnceLock::new();
+    let _ = cell.set(warnings);
+    Ok(Reconstruction {
+        algorithm: options.algorithm(),
+        triangulation: tri,
+        labels: Vec::new(),
+        edges,
+        curves,
+        medial_axis: inner.medial_axis,
+        medial_axis_mode: Some(options.medial_axis()),
+        unassigned,
+        passes: inner.passes,
+        budget_exhausted: inner.budget_exhausted,
+        fitted,
+        warnings: cell,
+        thinned: Some(ids.len()),
     })
 }
 

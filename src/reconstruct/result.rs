@@ -36,9 +36,19 @@ pub struct Reconstruction {
     pub(super) fitted: Option<Vec<[f64; 2]>>,
     /// [`Self::warnings`], computed on the first call.
     pub(super) warnings: std::sync::OnceLock<Vec<super::Warning>>,
+    /// With thinning: how many representatives the curves were reconstructed through.
+    pub(super) thinned: Option<usize>,
 }
 
 impl Reconstruction {
+    /// When the input was a dense noisy band and thinned
+    /// ([`Options::with_thinning`](super::Options::with_thinning)): the number of
+    /// representatives the curves were reconstructed through (every other point is
+    /// unassigned, and [`labels`](Self::labels) is empty).
+    pub fn thinned(&self) -> Option<usize> {
+        self.thinned
+    }
+
     /// The algorithm that produced this result.
     pub fn algorithm(&self) -> Algorithm {
         self.algorithm

@@ -61,12 +61,12 @@
 
 mod crossings;
 
-use std::cmp::Ordering;
 use std::collections::{BinaryHeap, HashSet};
 
 use super::curves::Curve;
+use super::delaunay_graph::{Graph, Waiting};
 use super::lengths::distance;
-use crate::delaunay::{Triangulation, NO_TWIN};
+use crate::delaunay::Triangulation;
 use crate::kernel::{orient, Sign};
 use crate::parallel;
 
@@ -220,75 +220,6 @@ fn zigzags(points: &[[f64; 2]], curve: &Curve) -> bool {
         })
         .count();
     flips as f64 > ZIGZAG_SHARE * middle.len() as f64
-}
-
-/// The Delaunay graph of the triangulation, neighbours by local index.
-struct Graph {
-    offsets: Vec<u32>,
-    neighbours: Vec<u32>,
-    /// Every point's distance to its nearest neighbour (a Delaunay neighbour).
-    nearest: Vec<f64>,
-}
-
-impl Graph {
-    fn new(tri: &Triangulation) -> Graph {
-        let n = tri.points.len();
-        let twins = tri.halfedges();
-        let mut count = vec![0u32; n + 1];
-        let undirected = |e: usize| twins[e] == NO_TWIN || e < twins[e] as usize;
-        for e in (0..twins.len()).filter(|&e| undirected(e)) {
-            count[tri.org(e) as usize + 1] += 1;
-            count[tri.dest(e) as usize + 1] += 1;
-        }
-        for i in 0..n {
-            count[i + 1] += count[i];
-        }
-        let mut fill = count.clone();
-        let mut neighbours = vec![0u32; count[n] as usize];
-        for e in (0..twins.len()).filter(|&e| undirected(e)) {
-            let (a, b) = (tri.org(e), tri.dest(e));
-            neighbours[fill[a as usize] as usize] = b;
-            fill[a as usize] += 1;
-            neighbours[fill[b as usize] as usize] = a;
-            fill[b as usize] += 1;
-        }
-        let nearest = parallel::map_range(n, |p| {
-            let (a, b) = (count[p] as usize, count[p + 1] as usize);
-            neighbours[a..b]
-                .iter()
-                .map(|&q| distance(tri.points[p], tri.points[q as usize]))
-                .fold(f64::INFINITY, f64::min)
-        });
-        Graph {
-            offsets: count,
-            neighbours,
-            nearest,
-        }
-    }
-
-    fn of(&self, p: u32) -> &[u32] {
-        let (a, b) = (self.offsets[p as usize], self.offsets[p as usize + 1]);
-        &self.neighbours[a as usize..b as usize]
-    }
-}
-
-/// A sample waiting in the gathering, nearest first (ties by local index).
-#[derive(PartialEq)]
-struct Waiting(f64, u32);
-
-impl Eq for Waiting {}
-
-impl PartialOrd for Waiting {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-
-impl Ord for Waiting {
-    fn cmp(&self, other: &Self) -> Ordering {
-        // Reversed: the heap pops the nearest.
-        other.0.total_cmp(&self.0).then(other.1.cmp(&self.1))
-    }
 }
 
 /// One fit of one window, in the frame's units: where it puts the vertex, its normal

@@ -1,0 +1,401 @@
+//! Dense noisy bands: the points thinned to representatives before the labelling.
+//!
+//! WDM assumes the samples lie on the curve, at most a fraction of a spacing off it. A dense
+//! scan is the other way round: thousands of points in a band many spacings wide, where the
+//! water flow draws the band's ragged envelope, closes loops inside it or loses a hole.
+//! Such an input is recognised by how its neighbourhoods look (below), covered by disks of a
+//! radius of a few band widths, and each disk's points are represented by one of them: the
+//! one nearest their centroid, which lies near the middle of the band. The representatives
+//! are a sparse sample with little noise, the kind WDM is exact on, and the reconstruction
+//! runs on them; every other point is left unassigned (the smoothing still fits the curves
+//! to all of them).
+//!
+//! **Recognising a band.** Around a probe point its nearest neighbours are taken in order
+//! of distance (a nearest-first walk of the Delaunay graph, exact), and the covariance of
+//! the first `k` is read at `k` = 8, 12, 16, …, 256: on a curve sample it is thin from the
+//! start (the smaller principal variance at most [`MAX_ASPECT`] of the larger); in a band
+//! it is round while the neighbourhood is narrower than the band and turns thin once it is
+//! a few band widths long, at `k` ≈ 7 × (noise / spacing along the curve). The input is a
+//! band when at least half the probes turn thin only at [`BAND_NEIGHBOURS`] or later; the
+//! band's noise is the median over those of the smaller principal deviation where they
+//! turned. A scatter that never turns thin is no band (its probes do not count for it).
+//!
+//! Everything here is a statistic in rounded arithmetic, computed in a fixed order (local
+//! indices, the triangulation's locality order, which depends on the points only), so the
+//! representatives are the same for any input order; which points they are is all that
+//! leaves this module, and the exact engine reconstructs them as given.
+
+use std::collections::{HashMap, HashSet};
+use std::hash::{BuildHasherDefault, Hasher};
+
+use super::delaunay_graph::{Graph, Waiting};
+use super::lengths::distance;
+use crate::delaunay::Triangulation;
+use crate::parallel;
+
+/// Below this many distinct points nothing is thinned: a band needs hundreds of points
+/// (its neighbourhoods hold up to [`LADDER`]'s last size), and small inputs are the
+/// sparse samples WDM is made for.
+pub(super) const MIN_THINNED_POINTS: usize = 400;
+
+/// At most this many probes (spread over the locality order): the decision is a median,
+/// and 512 probes put it within a few percent of its value over all points.
+const PROBES: usize = 512;
+
+/// The probes look at a subsample of at most about this many points (every point kept
+/// with the same chance, by a hash of its local index): a band of a million points is
+/// thousands of spacings wide, and its neighbourhoods turn thin only at sizes no probe can
+/// afford. The subsample's spacing is known (the full one times the sampling rate), and the
+/// noise is the same.
+const SUBSAMPLE: usize = 8192;
+
+/// The neighbourhood sizes at which the covariance is read (steps of about 1.5).
+const LADDER: [usize; 15] = [
+    8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, 768, 1024,
+];
+
+/// A neighbourhood is a piece of curve when its smaller principal variance is at most this
+/// share of its larger (the smoothing's `MAX_ASPECT`): a strip of noise σ over a length
+/// `2r` has variances σ² and r²/3, so it is thin once `r` exceeds about 3.5 σ.
+const MAX_ASPECT: f64 = 0.25;
+
+/// A probe is in a band when its noise (the smaller principal deviation where its
+/// neighbourhood turns thin) is at least this many spacings along the curve (the
+/// neighbourhood's length over its number of points). Below, WDM with its repairs
+/// reconstructs the noisy sample as it is (the sparse noise rows up to one spacing).
+const BAND_SPACINGS: f64 = 1.5;
+
+/// The cover's disks have a radius of this many noise deviations: wide enough that one disk
+/// spans the band (about ±2 σ), so that the representatives run along its middle in a
+/// single file, and no wider, so that curves a few band widths apart stay apart.
+const COVER_RADIUS: f64 = 3.0;
+
+/// A disk with fewer points than this share of the median disk's is not represented: its
+/// points are outliers or the band's frayed edge.
+const MIN_CLUSTER_SHARE: f64 = 0.25;
+
+/// The representatives of a dense noisy band (local indices, ascending), or `None` when
+/// the points are no band.
+pub(super) fn representatives(tri: &Triangulation) -> Option<Vec<u32>> {
+    let n = tri.points.len();
+    if n < MIN_THINNED_POINTS || tri.is_degenerate() {
+        return None;
+    }
+    let sigma = band_noise(tri)?;
+    let radius = COVER_RADIUS * sigma;
+    if !(radius.is_finite() && radius > 0.0) {
+        return None;
+    }
+    Some(cover(&tri.points, radius))
+}
+
+/// The noise of the band (its across deviation, in the frame's units), or `None` when the
+/// points are no band.
+fn band_noise(tri: &Triangulation) -> Option<f64> {
+    let n = tri.points.len();
+    let rate = n.div_ceil(SUBSAMPLE).max(1);
+    let subsample;
+    let (probed, graph) = if rate == 1 {
+        (tri, Graph::adjacency(tri))
+    } else {
+        let kept: Vec<[f64; 2]> = (0..n as u64)
+            .filter(|&i| mix(i) % rate as u64 == 0)
+            .map(|i| tri.points[i as usize])
+            .collect();
+        subsample = crate::delaunay::triangulate(&kept).ok()?;
+        if subsample.is_degenerate() {
+            return None;
+        }
+        (&subsample, Graph::adjacency(&subsample))
+    };
+    let m = probed.points.len();
+    let stride = m.div_ceil(PROBES).max(1);
+    let probes = m.div_ceil(stride);
+    let turns = parallel::map_range(probes, |i| turn(probed, &graph, (i * stride) as u32));
+    let mut banded: Vec<f64> = turns
+        .iter()
+        .flatten()
+        .filter(|t| {
+            // The spacing along the curve of all the points, not only the subsample's.
+            let spacing = 2.0 * t.radius / (t.size * rate) as f64;
+            t.deviation >= BAND_SPACINGS * spacing
+        })
+        .map(|t| t.deviation)
+        .collect();
+    if 2 * banded.len() < probes {
+        return None;
+    }
+    banded.sort_by(f64::total_cmp);
+    Some(banded[banded.len() / 2])
+}
+
+/// SplitMix64's finaliser: a subsample that owes nothing to the locality order's pattern.
+fn mix(i: u64) -> u64 {
+    let mut z = i.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// Where a probe's neighbourhood turned thin.
+struct Turn {
+    /// How many neighbours it holds.
+    size: usize,
+    /// The distance to the farthest of them.
+    radius: f64,
+    /// Its smaller principal deviation: the noise across the curve.
+    deviation: f64,
+}
+
+/// Where the neighbourhood of `p` turns thin; `None` if none up to the ladder's last size
+/// is.
+fn turn(tri: &Triangulation, graph: &Graph, p: u32) -> Option<Turn> {
+    let o = tri.points[p as usize];
+    let mut seen: HashSet<u32, BuildHasherDefault<CellHasher>> = HashSet::default();
+    seen.insert(p);
+    let mut waiting = std::collections::BinaryHeap::new();
+    for &q in graph.of(p) {
+        seen.insert(q);
+        waiting.push(Waiting(distance(o, tri.points[q as usize]), q));
+    }
+    let mut moments = Moments::default();
+    let mut rung = 0;
+    while let Some(Waiting(d, q)) = waiting.pop() {
+        let x = tri.points[q as usize];
+        moments.add([x[0] - o[0], x[1] - o[1]]);
+        if moments.count == LADDER[rung] {
+            let (small, large) = moments.principal();
+            if small <= MAX_ASPECT * large {
+                return Some(Turn {
+                    size: LADDER[rung],
+                    radius: d,
+                    deviation: small.sqrt(),
+                });
+            }
+            rung += 1;
+            if rung == LADDER.len() {
+                return None;
+            }
+        }
+        for &w in graph.of(q) {
+            if seen.insert(w) {
+                waiting.push(Waiting(distance(o, tri.points[w as usize]), w));
+            }
+        }
+    }
+    None
+}
+
+/// Running sums for a covariance.
+#[derive(Default)]
+struct Moments {
+    count: usize,
+    sum: [f64; 2],
+    xx: f64,
+    yy: f64,
+    xy: f64,
+}
+
+impl Moments {
+    fn add(&mut self, d: [f64; 2]) {
+        self.count += 1;
+        self.sum[0] += d[0];
+        self.sum[1] += d[1];
+        self.xx += d[0] * d[0];
+        self.yy += d[1] * d[1];
+        self.xy += d[0] * d[1];
+    }
+
+    /// The smaller and the larger principal variance.
+    fn principal(&self) -> (f64, f64) {
+        let k = self.count as f64;
+        let (mx, my) = (self.sum[0] / k, self.sum[1] / k);
+        let (a, c, b) = (
+            self.xx / k - mx * mx,
+            self.yy / k - my * my,
+            self.xy / k - mx * my,
+        );
+        let half = 0.5 * (a + c);
+        let root = (0.25 * (a - c) * (a - c) + b * b).sqrt();
+        ((half - root).max(0.0), half + root)
+    }
+}
+
+/// A cell of the cover's grid.
+type Cell = (i64, i64);
+
+/// Multiply-and-rotate hashing of grid cells and point indices: the cover looks up nine
+/// cells per point, the probes mark thousands of points, and the keys are no attacker's.
+#[derive(Default)]
+struct CellHasher(u64);
+
+impl Hasher for CellHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(u64::from(b));
+        }
+    }
+
+    fn write_u64(&mut self, v: u64) {
+        self.0 = (self.0.rotate_left(26) ^ v).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+    }
+
+    fn write_i64(&mut self, v: i64) {
+        self.write_u64(v as u64);
+    }
+
+    fn write_u32(&mut self, v: u32) {
+        self.write_u64(u64::from(v));
+    }
+}
+
+type Grid = HashMap<Cell, Vec<u32>, BuildHasherDefault<CellHasher>>;
+
+/// The representatives of the points covered by disks of `radius` (local indices,
+/// ascending).
+///
+/// 1. Seeds, greedily in local order: a point becomes a seed when no seed lies within
+///    `radius`.
+/// 2. Each seed's disk: the point nearest the centroid of the points within `radius` of the
+///    seed. The centroid of a disk that spans the band lies near its middle, wherever in
+///    the band the seed was; so two seeds side by side across the band (they can be, in a
+///    band wider than `radius`) give candidates close together. A disk with fewer points
+///    than [`MIN_CLUSTER_SHARE`] of the median disk's gives none (outliers, frayed edges).
+/// 3. Candidates in seed order, each kept unless a kept one lies within half the radius:
+///    one file of representatives along the band.
+fn cover(points: &[[f64; 2]], radius: f64) -> Vec<u32> {
+    let cell = |p: [f64; 2]| -> Cell {
+        (
+            (p[0] / radius).floor() as i64,
+            (p[1] / radius).floor() as i64,
+        )
+    };
+    let around = |c: Cell| (-1..=1).flat_map(move |i| (-1..=1).map(move |j| (c.0 + i, c.1 + j)));
+    let within = |grid: &Grid, x: [f64; 2], r: f64| -> bool {
+        around(cell(x)).any(|k| {
+            grid.get(&k)
+                .is_some_and(|list| list.iter().any(|&q| distance(x, points[q as usize]) < r))
+        })
+    };
+    let mut seeds = Grid::default();
+    let mut seed_order: Vec<u32> = Vec::new();
+    let mut all = Grid::default();
+    for (p, &x) in points.iter().enumerate() {
+        all.entry(cell(x)).or_default().push(p as u32);
+        if !within(&seeds, x, radius) {
+            seeds.entry(cell(x)).or_default().push(p as u32);
+            seed_order.push(p as u32);
+        }
+    }
+    // Each seed's disk: its size and the point nearest its centroid.
+    let disks = parallel::map_range(seed_order.len(), |k| {
+        let o = points[seed_order[k] as usize];
+        let members: Vec<u32> = around(cell(o))
+            .filter_map(|c| all.get(&c))
+            .flatten()
+            .copied()
+            .filter(|&q| distance(o, points[q as usize]) < radius)
+            .collect();
+        // In local order, relative to the seed: the same sums for any input order.
+        let mut sorted = members;
+        sorted.sort_unstable();
+        let mut sum = [0.0f64; 2];
+        for &q in &sorted {
+            sum[0] += points[q as usize][0] - o[0];
+            sum[1] += points[q as usize][1] - o[1];
+        }
+        let count = sorted.len();
+        let centroid = [o[0] + sum[0] / count as f64, o[1] + sum[1] / count as f64];
+        let nearest = sorted
+            .iter()
+            .map(|&q| (distance(centroid, points[q as usize]), q))
+            .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)))
+            .map_or(seed_order[k], |(_, q)| q);
+        (count, nearest)
+    });
+    let mut sizes: Vec<usize> = disks.iter().map(|d| d.0).collect();
+    sizes.sort_unstable();
+    let median = sizes.get(sizes.len() / 2).copied().unwrap_or(0);
+    let least = ((MIN_CLUSTER_SHARE * median as f64).ceil() as usize).max(2);
+    let mut kept = Grid::default();
+    let mut reps = Vec::new();
+    for &(count, candidate) in &disks {
+        let x = points[candidate as usize];
+        if count >= least && !within(&kept, x, 0.5 * radius) {
+            kept.entry(cell(x)).or_default().push(candidate);
+            reps.push(candidate);
+        }
+    }
+    reps.sort_unstable();
+    reps
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::delaunay::triangulate;
+
+    /// A deterministic stream of uniforms in [0, 1).
+    fn uniforms(seed: u64) -> impl FnMut() -> f64 {
+        let mut s = seed;
+        move || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    fn band(n: usize, sigma: f64, seed: u64) -> Vec<[f64; 2]> {
+        let mut u = uniforms(seed);
+        (0..n)
+            .map(|_| {
+                let t = std::f64::consts::TAU * u();
+                // Box–Muller: a Gaussian offset along the radius.
+                let g = (-2.0 * (1.0 - u()).ln()).sqrt() * (std::f64::consts::TAU * u()).cos();
+                let r = 1.0 + sigma * g;
+                [r * t.cos(), r * t.sin()]
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_wide_band_is_thinned_and_a_clean_sample_is_not() {
+        let clean: Vec<[f64; 2]> = (0..2000)
+            .map(|k| {
+                let t = std::f64::consts::TAU * k as f64 / 2000.0;
+                [t.cos(), t.sin()]
+            })
+            .collect();
+        assert!(representatives(&triangulate(&clean).unwrap()).is_none());
+        // 4000 points, spacing along the circle 0.0016, noise 0.03: about 19 spacings.
+        let tri = triangulate(&band(4000, 0.03, 7)).unwrap();
+        let reps = representatives(&tri).expect("a band");
+        // Disks of 3 σ along a circle of length 2π: between one and two radii apart.
+        let radius = COVER_RADIUS * 0.03;
+        let expected = std::f64::consts::TAU / radius;
+        assert!(
+            (reps.len() as f64) > 0.5 * expected && (reps.len() as f64) < 1.5 * expected,
+            "{} representatives, about {expected:.0} expected",
+            reps.len()
+        );
+        // They lie near the middle of the band.
+        let off: f64 = reps
+            .iter()
+            .map(|&p| (tri.points[p as usize][0].hypot(tri.points[p as usize][1]) - 1.0).powi(2))
+            .sum::<f64>()
+            / reps.len() as f64;
+        assert!(off.sqrt() < 0.7 * 0.03, "RMS {} off the circle", off.sqrt());
+    }
+
+    #[test]
+    fn a_uniform_scatter_is_no_band() {
+        let mut u = uniforms(11);
+        let scatter: Vec<[f64; 2]> = (0..3000).map(|_| [u(), u()]).collect();
+        assert!(representatives(&triangulate(&scatter).unwrap()).is_none());
+    }
+}

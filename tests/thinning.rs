@@ -1,0 +1,245 @@
+//! Thinning of dense noisy bands (`Options::with_thinning`, on by default): a band many
+//! spacings wide comes back as one curve per true curve through representatives near its
+//! middle, holes kept, open curves open; the same for any input order and any exact
+//! power-of-two scale; clean and sparse noisy samples are never thinned.
+
+use std::collections::BTreeSet;
+
+use wdm_crust::reconstruct::{reconstruct_with, Options};
+use wdm_crust::Reconstruction;
+use wdm_crust_testkit::{ClosedCurve, CurveSet, Ellipse, Rng, Star};
+
+/// `n` points along the polyline `path` (closed or not) at uniformly random arc-length
+/// positions, Gaussian noise of `sigma` on each coordinate.
+fn band(path: &[[f64; 2]], closed: bool, n: usize, sigma: f64, rng: &mut Rng) -> Vec<[f64; 2]> {
+    let k = path.len();
+    let pieces: Vec<([f64; 2], [f64; 2])> = (0..if closed { k } else { k - 1 })
+        .map(|i| (path[i], path[(i + 1) % k]))
+        .collect();
+    let lengths: Vec<f64> = pieces
+        .iter()
+        .map(|(a, b)| (b[0] - a[0]).hypot(b[1] - a[1]))
+        .collect();
+    let total: f64 = lengths.iter().sum();
+    (0..n)
+        .map(|_| {
+            let mut t = rng.f64() * total;
+            let mut i = 0;
+            while i + 1 < pieces.len() && t > lengths[i] {
+                t -= lengths[i];
+                i += 1;
+            }
+            let (a, b) = pieces[i];
+            let u = t / lengths[i];
+            [
+                a[0] + u * (b[0] - a[0]) + sigma * rng.normal(),
+                a[1] + u * (b[1] - a[1]) + sigma * rng.normal(),
+            ]
+        })
+        .collect()
+}
+
+fn circle(r: f64, c: [f64; 2], steps: usize) -> Vec<[f64; 2]> {
+    (0..steps)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / steps as f64;
+            [c[0] + r * t.cos(), c[1] + r * t.sin()]
+        })
+        .collect()
+}
+
+fn default(points: &[[f64; 2]]) -> Reconstruction {
+    reconstruct_with(points, &Options::new()).unwrap()
+}
+
+/// (closed curves, open chains).
+fn counts(rec: &Reconstruction) -> (usize, usize) {
+    let closed = rec.curves().iter().filter(|c| c.closed).count();
+    (closed, rec.curves().len() - closed)
+}
+
+fn largest_degree(rec: &Reconstruction) -> usize {
+    let mut degree = vec![0usize; rec.triangulation().point_count()];
+    for e in rec.edges() {
+        degree[e[0] as usize] += 1;
+        degree[e[1] as usize] += 1;
+    }
+    degree.into_iter().max().unwrap_or(0)
+}
+
+#[test]
+fn a_dense_band_gives_one_loop_through_its_middle() {
+    let mut rng = Rng::new(31);
+    for (sigma, n) in [(0.02, 3000), (0.04, 5000)] {
+        let points = band(&circle(1.0, [0.0, 0.0], 400), true, n, sigma, &mut rng);
+        let rec = default(&points);
+        assert!(rec.thinned().is_some(), "σ = {sigma}: not thinned");
+        assert_eq!(counts(&rec), (1, 0), "σ = {sigma}");
+        assert!(largest_degree(&rec) <= 2);
+        // The representatives lie nearer the circle than the samples do.
+        let off = |p: [f64; 2]| (p[0].hypot(p[1]) - 1.0).powi(2);
+        let rms = |ps: &mut dyn Iterator<Item = [f64; 2]>| {
+            let v: Vec<f64> = ps.map(off).collect();
+            (v.iter().sum::<f64>() / v.len() as f64).sqrt()
+        };
+        let on_curve = rms(&mut rec.curves()[0].points.iter().map(|&i| points[i as usize]));
+        let input = rms(&mut points.iter().copied());
+        assert!(
+            on_curve < 0.75 * input,
+            "σ = {sigma}: {on_curve} against {input}"
+        );
+        // Every point is on the curve or unassigned, and no duplicate is listed.
+        let on: usize = rec.curves()[0].points.len();
+        assert_eq!(on + rec.unassigned().len(), points.len());
+        // Nothing is drawn inside out: the axis lies inside the circle.
+        for v in &rec.medial_axis().vertices {
+            assert!(v[0].hypot(v[1]) < 1.0, "axis vertex {v:?} outside");
+        }
+    }
+}
+
+#[test]
+fn a_band_keeps_its_hole_and_its_separate_curves() {
+    let mut rng = Rng::new(32);
+    let mut points = band(&circle(1.0, [0.0, 0.0], 400), true, 3000, 0.02, &mut rng);
+    points.extend(band(
+        &circle(0.5, [0.0, 0.0], 400),
+        true,
+        1500,
+        0.02,
+        &mut rng,
+    ));
+    points.extend(band(
+        &circle(0.6, [3.0, 0.0], 400),
+        true,
+        1800,
+        0.02,
+        &mut rng,
+    ));
+    rng.shuffle(&mut points);
+    let rec = default(&points);
+    assert!(rec.thinned().is_some());
+    assert_eq!(counts(&rec), (3, 0));
+    assert_eq!(rec.polygons().len(), 2, "the annulus and the disk");
+}
+
+#[test]
+fn an_open_band_gives_one_open_chain() {
+    let mut rng = Rng::new(33);
+    let arc: Vec<[f64; 2]> = (0..=300)
+        .map(|k| {
+            let t = 1.5 * std::f64::consts::PI * k as f64 / 300.0;
+            [t.cos(), t.sin()]
+        })
+        .collect();
+    let points = band(&arc, false, 2500, 0.015, &mut rng);
+    let rec = default(&points);
+    assert!(rec.thinned().is_some());
+    assert_eq!(counts(&rec), (0, 1));
+    // Its ends lie near the arc's ends.
+    let chain = &rec.curves()[0].points;
+    let ends = [
+        points[chain[0] as usize],
+        points[*chain.last().unwrap() as usize],
+    ];
+    for truth in [arc[0], arc[300]] {
+        let near = ends
+            .iter()
+            .map(|e| (e[0] - truth[0]).hypot(e[1] - truth[1]))
+            .fold(f64::INFINITY, f64::min);
+        assert!(near < 0.15, "end {truth:?}: nearest chain end {near}");
+    }
+}
+
+/// Edges of `rec` over the points of `original` when `rec` was computed on
+/// `original[order[k]]` at position `k`.
+fn edges_in_original(rec: &Reconstruction, order: &[usize]) -> BTreeSet<[usize; 2]> {
+    rec.edges()
+        .iter()
+        .map(|e| {
+            let (a, b) = (order[e[0] as usize], order[e[1] as usize]);
+            [a.min(b), a.max(b)]
+        })
+        .collect()
+}
+
+#[test]
+fn thinning_depends_neither_on_the_order_nor_on_a_power_of_two_scale() {
+    let mut rng = Rng::new(34);
+    let star = Star { a: 0.25, k: 5 }.dense(4000);
+    let points = band(&star.points, true, 4000, 0.03, &mut rng);
+    let rec = reconstruct_with(&points, &Options::new().with_smoothing(true)).unwrap();
+    assert!(rec.thinned().is_some());
+    let identity: Vec<usize> = (0..points.len()).collect();
+    let edges = edges_in_original(&rec, &identity);
+    for round in 0..3 {
+        let order = rng.permutation(points.len());
+        let permuted: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
+        let other = reconstruct_with(&permuted, &Options::new().with_smoothing(true)).unwrap();
+        assert_eq!(other.thinned(), rec.thinned(), "round {round}");
+        assert_eq!(edges_in_original(&other, &order), edges, "round {round}");
+    }
+    for scale in [0.125, 1024.0] {
+        let scaled: Vec<[f64; 2]> = points
+            .iter()
+            .map(|p| [p[0] * scale, p[1] * scale])
+            .collect();
+        let other = reconstruct_with(&scaled, &Options::new().with_smoothing(true)).unwrap();
+        assert_eq!(other.edges(), rec.edges(), "scale {scale}");
+        for (a, b) in rec.curves().iter().zip(other.curves()) {
+            let fitted = rec.curve_coords(a);
+            for (p, q) in fitted.iter().zip(other.curve_coords(b)) {
+                assert_eq!([p[0] * scale, p[1] * scale], q, "scale {scale}");
+            }
+        }
+    }
+}
+
+#[test]
+fn clean_and_sparse_noisy_samples_are_never_thinned() {
+    let mut rng = Rng::new(35);
+    let shapes = [
+        CurveSet::new(vec![Ellipse { a: 2.0, b: 1.0 }.dense(4000)]),
+        CurveSet::new(vec![Star { a: 0.25, k: 5 }.dense(4000)]),
+    ];
+    for set in &shapes {
+        for eps in [0.02, 0.05, 0.2] {
+            let clean = set.eps_sample(eps, &mut rng);
+            let rec = default(&clean.points);
+            assert!(rec.thinned().is_none(), "clean, ε = {eps}");
+            // Noise up to one spacing (the mean step along the curve): the sample WDM
+            // reconstructs as it is.
+            let order = &clean.curves[0].indices;
+            let spacing = order
+                .windows(2)
+                .map(|w| {
+                    let (a, b) = (clean.points[w[0]], clean.points[w[1]]);
+                    (b[0] - a[0]).hypot(b[1] - a[1])
+                })
+                .sum::<f64>()
+                / (order.len() - 1) as f64;
+            for fraction in [0.3, 0.6, 1.0] {
+                let noisy = clean.with_noise(fraction * spacing, &mut rng);
+                if noisy.points.len() < 400 {
+                    continue;
+                }
+                let rec = default(&noisy.points);
+                assert!(
+                    rec.thinned().is_none(),
+                    "ε = {eps}, noise {fraction} × spacing"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_uniform_scatter_is_not_thinned_and_thinning_can_be_turned_off() {
+    let mut rng = Rng::new(36);
+    let scatter: Vec<[f64; 2]> = (0..3000).map(|_| [rng.f64(), rng.f64()]).collect();
+    assert!(default(&scatter).thinned().is_none());
+    let points = band(&circle(1.0, [0.0, 0.0], 400), true, 3000, 0.03, &mut rng);
+    let off = reconstruct_with(&points, &Options::new().with_thinning(false)).unwrap();
+    assert!(off.thinned().is_none());
+    assert!(!off.labels().is_empty());
+}

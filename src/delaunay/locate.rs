@@ -148,6 +148,40 @@ impl<'a> Locator<'a> {
         Ok(Some(tri.input_index(v)))
     }
 
+    /// A triangle whose closed region holds `q` (an id for [`Triangulation::triangle`]), or
+    /// `None` when `q` is outside the closed convex hull or there are no triangles (all
+    /// points collinear, or fewer than three distinct). On an edge or an input point, the
+    /// triangle is one of those around it, the one the walk ends in. Decided exactly, by the
+    /// same walk as [`locate`](Self::locate).
+    ///
+    /// # Errors
+    /// As [`locate`](Self::locate).
+    ///
+    /// ```
+    /// let points = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
+    /// let tri = wdm_crust::triangulate(&points)?;
+    /// let mut locator = tri.locator();
+    /// let t = locator.triangle_containing([1.0, 3.0])?.expect("inside the square");
+    /// assert!(tri.triangle(t).contains(&3));
+    /// // On the shared diagonal or a corner: a triangle on it.
+    /// let t = locator.triangle_containing([4.0, 4.0])?.expect("a corner");
+    /// assert!(tri.triangle(t).contains(&2));
+    /// assert_eq!(locator.triangle_containing([5.0, 1.0])?, None);
+    /// # Ok::<(), wdm_crust::Error>(())
+    /// ```
+    pub fn triangle_containing(&mut self, q: [f64; 2]) -> Result<Option<usize>, Error> {
+        check_query(q)?;
+        if self.tri.is_degenerate() {
+            return Ok(None);
+        }
+        let walked = self.tri.walk(q, self.start(q));
+        self.remember(walked);
+        Ok(match walked {
+            Walked::Inside(t) => Some(t),
+            Walked::Beyond(_) => None,
+        })
+    }
+
     /// The start of a location walk: the grid's triangle or the last one, whichever has its
     /// first corner nearer (in floating point: only a start).
     fn start(&self, q: [f64; 2]) -> usize {

@@ -61,7 +61,7 @@ def plot(rec, ax=None, *, points=True, medial_axis=True, legend=True):
                 LineCollection(
                     lines[finite],
                     colors=_MEDIAL,
-                    linewidths=0.8,
+                    linewidths=1.1,
                     label=f"medial axis ({len(segments)} segments)",
                     zorder=1,
                 )

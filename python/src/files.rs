@@ -60,7 +60,8 @@ pub fn read_points<'py>(
         options = options.with_format(format);
     }
     let points = py.detach(|| {
-        let file = File::open(&path).map_err(|e| os_error(&e, format!("{name}: cannot open: {e}")))?;
+        let file =
+            File::open(&path).map_err(|e| os_error(&e, format!("{name}: cannot open: {e}")))?;
         read_points_with(BufReader::with_capacity(1 << 16, file), &options)
             .map_err(|e| parse_error(&name, &e))
     })?;

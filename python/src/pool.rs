@@ -2,7 +2,10 @@
 //! line's `--threads N`. Results do not depend on it, only the wall time does.
 
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
-use pyo3::PyResult;
+use pyo3::prelude::*;
+
+use crate::errors::engine_error;
+use crate::points::with_points;
 
 /// The pool of `threads` workers, or `None` (rayon's global pool: all cores, or
 /// `RAYON_NUM_THREADS`) when no number is given.
@@ -32,4 +35,19 @@ pub fn run_in<T: Send>(pool: Option<&rayon::ThreadPool>, job: impl FnOnce() -> T
         Some(pool) => pool.install(job),
         None => job(),
     }
+}
+
+/// Runs the engine's `job` on the points of `points` (see [`with_points`]) without the GIL,
+/// in the pool of `threads` workers; an engine error becomes a `ValueError`.
+pub fn on_points<R: Send>(
+    py: Python<'_>,
+    points: &Bound<'_, PyAny>,
+    threads: Option<i64>,
+    job: impl FnOnce(&[[f64; 2]]) -> Result<R, wdm_crust::Error> + Send,
+) -> PyResult<R> {
+    let pool = pool(threads)?;
+    with_points(points, |points| {
+        py.detach(|| run_in(pool.as_ref(), || job(points)))
+            .map_err(engine_error)
+    })
 }

@@ -11,9 +11,7 @@ use wdm_crust::io::SvgOptions;
 use wdm_crust::reconstruct::{Algorithm, MedialAxisMode, Options, OptionsConflict, WdmSetting};
 
 use crate::arrays::{index_rows, indices, rows_array, vector};
-use crate::errors::engine_error;
-use crate::points::with_points;
-use crate::pool::{pool, run_in};
+use crate::pool::on_points;
 use crate::triangulation::{input_points, Source, Triangulation, TriangulationData};
 
 /// The SVG underlays by their command-line names (`--show`).
@@ -642,16 +640,10 @@ pub fn reconstruct(
     threads: Option<i64>,
 ) -> PyResult<Reconstruction> {
     let options = options(algorithm, peeling, medial_axis, peeling_budget, smooth)?;
-    let pool = pool(threads)?;
-    let (rec, data) = with_points(points, |points| {
-        py.detach(|| {
-            run_in(pool.as_ref(), || {
-                let rec = wdm_crust::reconstruct_with(points, &options)?;
-                let data = ReconstructionData::of(&rec);
-                Ok((rec, data))
-            })
-        })
-        .map_err(engine_error)
+    let (rec, data) = on_points(py, points, threads, |points| {
+        let rec = wdm_crust::reconstruct_with(points, &options)?;
+        let data = ReconstructionData::of(&rec);
+        Ok((rec, data))
     })?;
     Reconstruction::new(py, rec, data)
 }

@@ -10,8 +10,8 @@ use wdm_crust::delaunay::Locator;
 
 use crate::arrays::{index_rows, indices, rows_array, vector};
 use crate::errors::engine_error;
-use crate::points::{with_points, with_rows};
-use crate::pool::{pool, run_in};
+use crate::points::with_rows;
+use crate::pool::{on_points, pool, run_in};
 use crate::voronoi::{Voronoi, VoronoiData};
 
 /// Queries per run of one locator: each run starts from a fresh copy of the same locator,
@@ -184,9 +184,7 @@ impl Triangulation {
         threads: Option<i64>,
     ) -> PyResult<Bound<'py, PyArray1<i64>>> {
         let found = self.query(py, queries, threads, |locator, q| {
-            locator
-                .nearest(q)
-                .map(|p| p.map_or(-1, i64::from))
+            locator.nearest(q).map(|p| p.map_or(-1, i64::from))
         })?;
         Ok(vector(py, found))
     }
@@ -244,7 +242,9 @@ impl Triangulation {
 
 /// The input points of `tri` in the caller's order, duplicates included.
 pub fn input_points(tri: &wdm_crust::Triangulation) -> Vec<[f64; 2]> {
-    (0..tri.point_count() as u32).map(|i| tri.point(i)).collect()
+    (0..tri.point_count() as u32)
+        .map(|i| tri.point(i))
+        .collect()
 }
 
 /// The exact Delaunay triangulation of `points`.
@@ -277,16 +277,10 @@ pub fn triangulate(
     points: &Bound<'_, PyAny>,
     threads: Option<i64>,
 ) -> PyResult<Triangulation> {
-    let pool = pool(threads)?;
-    let (tri, data) = with_points(points, |points| {
-        py.detach(|| {
-            run_in(pool.as_ref(), || {
-                let tri = wdm_crust::triangulate(points)?;
-                let data = TriangulationData::of(&tri);
-                Ok((tri, data))
-            })
-        })
-        .map_err(engine_error)
+    let (tri, data) = on_points(py, points, threads, |points| {
+        let tri = wdm_crust::triangulate(points)?;
+        let data = TriangulationData::of(&tri);
+        Ok((tri, data))
     })?;
     Triangulation::new(py, Source::Own(Arc::new(tri)), data)
 }

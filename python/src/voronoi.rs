@@ -10,9 +10,7 @@ use pyo3::types::PyList;
 use wdm_crust::BoundingBox;
 
 use crate::arrays::{rows_array, vector};
-use crate::errors::engine_error;
-use crate::points::with_points;
-use crate::pool::{pool, run_in};
+use crate::pool::on_points;
 use crate::triangulation::{input_points, Source};
 
 /// The arrays of a Voronoi diagram, computed without the GIL; the cells as one flat list
@@ -194,8 +192,7 @@ impl Voronoi {
             wdm_crust::io::write_voronoi_geojson(&tri.voronoi(), &bbox, &mut out).map(|()| out)
         });
         let out = out.map_err(|e| PyRuntimeError::new_err(format!("writing GeoJSON: {e}")))?;
-        String::from_utf8(out)
-            .map_err(|e| PyRuntimeError::new_err(format!("writing GeoJSON: {e}")))
+        String::from_utf8(out).map_err(|e| PyRuntimeError::new_err(format!("writing GeoJSON: {e}")))
     }
 
     fn __repr__(&self, py: Python<'_>) -> String {
@@ -234,16 +231,10 @@ pub fn voronoi(
     points: &Bound<'_, PyAny>,
     threads: Option<i64>,
 ) -> PyResult<Voronoi> {
-    let pool = pool(threads)?;
-    let (tri, data) = with_points(points, |points| {
-        py.detach(|| {
-            run_in(pool.as_ref(), || {
-                let tri = wdm_crust::triangulate(points)?;
-                let data = VoronoiData::of(&tri.voronoi());
-                Ok((tri, data))
-            })
-        })
-        .map_err(engine_error)
+    let (tri, data) = on_points(py, points, threads, |points| {
+        let tri = wdm_crust::triangulate(points)?;
+        let data = VoronoiData::of(&tri.voronoi());
+        Ok((tri, data))
     })?;
     Voronoi::new(py, Source::Own(Arc::new(tri)), data)
 }

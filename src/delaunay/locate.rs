@@ -35,6 +35,8 @@
 //! triangle to walk: location then checks the chain of points along the line and the
 //! nearest point is found by an exact scan.
 
+use std::sync::Arc;
+
 use super::triangulation::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
 use crate::error::{check_coordinate, Error};
 use crate::kernel::metric::distance_order;
@@ -69,7 +71,8 @@ enum Walked {
 /// Repeated queries on one triangulation. Each walk starts from a coarse grid of start
 /// triangles (about one cell per 8 triangles, built once in O(T) when the locator is made)
 /// or from where the previous walk ended, whichever is nearer: random queries walk a few
-/// triangles each, as queries near each other do.
+/// triangles each, as queries near each other do. A clone shares the grid, so a locator per
+/// thread or per batch of queries costs one grid in all.
 ///
 /// ```
 /// use wdm_crust::delaunay::Location;
@@ -93,7 +96,9 @@ pub struct Locator<'a> {
     last: usize,
     /// A half-edge leaving the last nearest point found.
     last_nearest: usize,
-    grid: StartGrid,
+    /// Shared by the clones, so that a clone (a locator per thread or per batch of queries)
+    /// costs nothing.
+    grid: Arc<StartGrid>,
 }
 
 impl<'a> Locator<'a> {
@@ -103,7 +108,7 @@ impl<'a> Locator<'a> {
             tri,
             last: usize::MAX,
             last_nearest: usize::MAX,
-            grid: StartGrid::new(tri),
+            grid: Arc::new(StartGrid::new(tri)),
         }
     }
 

@@ -106,3 +106,36 @@ def test_geopandas_takes_the_result():
     # A GeoSeries of the polygons alone, from their own __geo_interface__.
     series = geopandas.GeoSeries([shape(p) for p in rec.polygons()])
     assert series.area.iloc[0] == pytest.approx(polygon.area)
+
+
+SVG_OPTIONS = [
+    ({}, {}, []),
+    ({}, {"y_down": True, "show": ["delaunay", "voronoi", "labels"]}, ["--y-down", "--show", "delaunay,voronoi,labels"]),
+    ({"smooth": True}, {"no_points": True}, ["--smooth", "--no-points"]),
+    ({"algorithm": "nn-crust"}, {"show": ["voronoi"]}, ["--algorithm", "nn-crust", "--show", "voronoi"]),
+]
+
+
+@pytest.mark.parametrize("name", ["noisy outline with outliers", "nested circles", "open arc", "collinear"])
+@pytest.mark.parametrize("options,svg,flags", SVG_OPTIONS, ids=repr)
+def test_svg_is_the_cli_picture(cli_text, name, options, svg, flags):
+    points = SAMPLES[name]()
+    expected = cli_text("reconstruct", "--format", "svg", *flags, points=points)
+    assert wdm_crust.reconstruct(points, **options).to_svg(**svg) == expected
+
+
+def test_svg_options_are_checked():
+    rec = wdm_crust.reconstruct(SAMPLES["open arc"](), algorithm="crust", medial_axis="none")
+    with pytest.raises(ValueError, match="^show must list some of 'delaunay', 'voronoi', 'labels', got 'mesh'$"):
+        rec.to_svg(show=["mesh"])
+    with pytest.raises(ValueError, match="^show=\\['labels'\\] does not apply to algorithm='crust'"):
+        rec.to_svg(show=["labels"])
+
+
+def test_threads_change_nothing():
+    points = SAMPLES["uniform with duplicates"]()
+    one, two = wdm_crust.triangulate(points, threads=1), wdm_crust.triangulate(points, threads=2)
+    assert one.triangles.tolist() == two.triangles.tolist()
+    assert wdm_crust.voronoi(points, threads=1).vertices.tolist() == wdm_crust.voronoi(points).vertices.tolist()
+    with pytest.raises(ValueError, match="^threads must be a whole number of at least 1, got -2$"):
+        wdm_crust.reconstruct(points, threads=-2)

@@ -1,5 +1,6 @@
-//! Point location and nearest point against exact brute force (rational arithmetic,
-//! independent of the crate's kernel), on random, grid, clustered and collinear input.
+//! Point location, the containing triangle and the nearest point against exact brute force
+//! (rational arithmetic, independent of the crate's kernel), on random, grid, clustered and
+//! collinear input.
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -138,6 +139,18 @@ fn check_all(points: &[[f64; 2]], rng: &mut Rng) {
         let remembered = locator.locate(q).unwrap();
         let nearest = locator.nearest(q).unwrap();
         check_query(&tri, q, remembered, nearest);
+        // A closed triangle holding q exactly when q is not outside the hull (and there
+        // are triangles).
+        match locator.triangle_containing(q).unwrap() {
+            Some(t) => {
+                assert!(in_closed_triangle(&tri, t, q), "{q:?}: not in triangle {t}");
+                assert_ne!(remembered, Location::Outside);
+            }
+            None => assert!(
+                tri.triangle_count() == 0 || remembered == Location::Outside,
+                "{q:?}: no triangle, but {remembered:?}"
+            ),
+        }
         let hint = rng.below(tri.triangle_count().max(1));
         for other in [tri.locate(q).unwrap(), tri.locate_from(q, hint).unwrap()] {
             // A triangle or vertex is unique; an edge has two half-edges.

@@ -19,10 +19,19 @@ pub fn with_points<R>(
     object: &Bound<'_, PyAny>,
     f: impl FnOnce(&[[f64; 2]]) -> PyResult<R>,
 ) -> PyResult<R> {
-    let array = float64_array(object)?;
+    with_rows(object, "points", f)
+}
+
+/// [`with_points`] for an (m, 2) array-like called `name` in the messages (`"queries"`).
+pub fn with_rows<R>(
+    object: &Bound<'_, PyAny>,
+    name: &str,
+    f: impl FnOnce(&[[f64; 2]]) -> PyResult<R>,
+) -> PyResult<R> {
+    let array = float64_array(object, name)?;
     let readonly = array
         .try_readonly()
-        .map_err(|e| PyValueError::new_err(format!("points: {e}")))?;
+        .map_err(|e| PyValueError::new_err(format!("{name}: {e}")))?;
     // `as_slice` also accepts Fortran order, whose memory order is not (x, y) pairs.
     if array.is_c_contiguous() {
         if let Ok(flat) = readonly.as_slice() {
@@ -41,9 +50,12 @@ pub fn with_points<R>(
 
 /// `object` as a float64 array of shape (n, 2): itself if it already is one, else a
 /// conversion by numpy.
-fn float64_array<'py>(object: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+fn float64_array<'py>(
+    object: &Bound<'py, PyAny>,
+    name: &str,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
     if let Ok(array) = object.cast::<PyArray2<f64>>() {
-        check_shape(array.shape())?;
+        check_shape(array.shape(), name)?;
         return Ok(array.clone());
     }
     let numpy = object.py().import("numpy")?;
@@ -57,18 +69,18 @@ fn float64_array<'py>(object: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArray
     // f: floating point, i/u: integers; not b (bool), c (complex), U/S (text), O (objects).
     if !matches!(dtype.kind(), b'f' | b'i' | b'u') {
         return Err(PyTypeError::new_err(format!(
-            "points must be real numbers, got an array of dtype {}",
+            "{name} must be real numbers, got an array of dtype {}",
             dtype.str()?
         )));
     }
-    check_shape(array.shape())?;
+    check_shape(array.shape(), name)?;
     let converted = array.call_method1("astype", (numpy.getattr("float64")?,))?;
     Ok(converted.cast_into::<PyArray2<f64>>()?)
 }
 
 /// Only (n, 2) is accepted: a single point `[x, y]` or rows of three coordinates could be
 /// misread, so they are refused with the shape that was given.
-fn check_shape(shape: &[usize]) -> PyResult<()> {
+fn check_shape(shape: &[usize], name: &str) -> PyResult<()> {
     if let [_, 2] = shape {
         return Ok(());
     }
@@ -89,6 +101,6 @@ fn check_shape(shape: &[usize]) -> PyResult<()> {
         ""
     };
     Err(PyValueError::new_err(format!(
-        "points must be an (n, 2) array, one (x, y) row per point; got shape {shape}{hint}"
+        "{name} must be an (n, 2) array, one (x, y) row per point; got shape {shape}{hint}"
     )))
 }

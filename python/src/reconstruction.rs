@@ -3,16 +3,19 @@
 use std::sync::Arc;
 
 use numpy::{PyArray1, PyArray2, PyUntypedArrayMethods};
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
-use pyo3::types::{PyList, PyTuple};
+use pyo3::types::{PyDict, PyList, PyTuple};
+use wdm_crust::io::SvgOptions;
 use wdm_crust::reconstruct::{Algorithm, MedialAxisMode, Options, OptionsConflict, WdmSetting};
 
 use crate::arrays::{index_rows, indices, rows_array, vector};
-use crate::errors::engine_error;
-use crate::points::with_points;
-use crate::triangulation::{Source, Triangulation, TriangulationData};
+use crate::pool::on_points;
+use crate::triangulation::{input_points, Source, Triangulation, TriangulationData};
+
+/// The SVG underlays by their command-line names (`--show`).
+const LAYERS: [&str; 3] = ["delaunay", "voronoi", "labels"];
 
 /// The algorithms by their command-line names (`--algorithm`).
 const ALGORITHMS: [Algorithm; 3] = [Algorithm::Wdm, Algorithm::Crust, Algorithm::NnCrust];
@@ -193,6 +196,112 @@ impl Curve {
     }
 }
 
+/// One polygon's rings, computed without the GIL.
+struct PolygonData {
+    exterior_points: Vec<i64>,
+    exterior: Vec<[f64; 2]>,
+    hole_points: Vec<Vec<i64>>,
+    holes: Vec<Vec<[f64; 2]>>,
+}
+
+/// A polygon made of reconstructed closed curves: an exterior ring and the rings of its
+/// holes (the closed curves directly inside it), nested exactly as the command line's
+/// GeoJSON nests them.
+///
+/// Attributes:
+///     exterior: (k, 2) float64, the outer ring counterclockwise, not closed (the first
+///         vertex is not repeated); the curve's coordinates (fitted with `smooth=True`).
+///     holes: list of (k, 2) float64 arrays, the rings of the holes, clockwise, not closed.
+///     exterior_points: (k,) int64, the point indices of the outer ring.
+///     hole_points: list of (k,) int64 arrays, the point indices of each hole.
+///     __geo_interface__: the GeoJSON Polygon geometry (closed rings), as a dict, so that
+///         `shapely.geometry.shape(polygon)` and other GIS tools take it directly.
+#[pyclass(module = "wdm_crust", frozen)]
+pub struct Polygon {
+    exterior_points: Py<PyArray1<i64>>,
+    exterior: Py<PyArray2<f64>>,
+    hole_points: Vec<Py<PyArray1<i64>>>,
+    holes: Vec<Py<PyArray2<f64>>>,
+    /// The rings as given, for `__geo_interface__`.
+    rings: Vec<Vec<[f64; 2]>>,
+}
+
+impl Polygon {
+    fn new(py: Python<'_>, data: PolygonData) -> PyResult<Self> {
+        let mut rings = vec![data.exterior.clone()];
+        rings.extend(data.holes.iter().cloned());
+        Ok(Polygon {
+            exterior_points: vector(py, data.exterior_points).unbind(),
+            exterior: rows_array(py, data.exterior)?.unbind(),
+            hole_points: data
+                .hole_points
+                .into_iter()
+                .map(|ring| vector(py, ring).unbind())
+                .collect(),
+            holes: data
+                .holes
+                .into_iter()
+                .map(|ring| rows_array(py, ring).map(Bound::unbind))
+                .collect::<PyResult<_>>()?,
+            rings,
+        })
+    }
+}
+
+#[pymethods]
+impl Polygon {
+    /// (k, 2) float64: the outer ring, counterclockwise, not closed.
+    #[getter]
+    fn exterior(&self, py: Python<'_>) -> Py<PyArray2<f64>> {
+        self.exterior.clone_ref(py)
+    }
+
+    /// list of (k, 2) float64 arrays: the holes, clockwise, not closed.
+    #[getter]
+    fn holes<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        PyList::new(py, self.holes.iter().map(|h| h.clone_ref(py)))
+    }
+
+    /// (k,) int64: the point indices of the outer ring.
+    #[getter]
+    fn exterior_points(&self, py: Python<'_>) -> Py<PyArray1<i64>> {
+        self.exterior_points.clone_ref(py)
+    }
+
+    /// list of (k,) int64 arrays: the point indices of each hole.
+    #[getter]
+    fn hole_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        PyList::new(py, self.hole_points.iter().map(|h| h.clone_ref(py)))
+    }
+
+    /// The GeoJSON geometry {"type": "Polygon", "coordinates": [ring, ...]}, each ring a
+    /// list of [x, y] closed (its first position repeated last): the geometry of the
+    /// command line's GeoJSON feature for this polygon.
+    #[getter]
+    fn __geo_interface__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let rings = self
+            .rings
+            .iter()
+            .map(|ring| {
+                let positions = ring.iter().chain(ring.first()).map(|&[x, y]| [x, y]);
+                PyList::new(py, positions)
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        let geometry = PyDict::new(py);
+        geometry.set_item("type", "Polygon")?;
+        geometry.set_item("coordinates", PyList::new(py, rings)?)?;
+        Ok(geometry)
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> String {
+        format!(
+            "Polygon(exterior={}, holes={})",
+            self.exterior_points.bind(py).len(),
+            self.holes.len()
+        )
+    }
+}
+
 /// The result of `wdm_crust.reconstruct`.
 ///
 /// Attributes:
@@ -207,7 +316,14 @@ impl Curve {
 ///     passes: how many passes ran (more than one when peeling found nested curves).
 ///     peeling_budget_exhausted: True when peeling stopped at its budget.
 ///     point_count: the number of input points, duplicates included.
+///     points: (n, 2) float64, the input points (a copy).
+///     duplicates: (k, 2) int64 rows [duplicate, kept].
+///     warnings: list of (code, message), as the command line's JSON "warnings".
 ///     triangulation: the Delaunay triangulation of all the points (built on first use).
+///     __geo_interface__: the command line's GeoJSON FeatureCollection, as a dict.
+///
+/// Methods `polygons()`, `to_geojson()` and `to_svg()` give the closed curves as polygons
+/// with holes, the command line's GeoJSON and its SVG picture.
 #[pyclass(module = "wdm_crust", frozen)]
 pub struct Reconstruction {
     inner: Arc<wdm_crust::Reconstruction>,
@@ -326,6 +442,12 @@ impl Reconstruction {
         self.inner.triangulation().point_count()
     }
 
+    /// (n, 2) float64: the input points, duplicates included (a copy).
+    #[getter]
+    fn points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        rows_array(py, input_points(self.inner.triangulation()))
+    }
+
     /// The Delaunay triangulation of all the points, built on first use.
     #[getter]
     fn triangulation(&self, py: Python<'_>) -> PyResult<Py<Triangulation>> {
@@ -335,6 +457,115 @@ impl Reconstruction {
             Py::new(py, Triangulation::new(py, source, data)?)
         })?;
         Ok(tri.clone_ref(py))
+    }
+
+    /// The closed curves as polygons with holes: a closed curve inside no other, or inside
+    /// a hole, is the exterior of a polygon; the closed curves directly inside it are its
+    /// holes. Nested exactly, as the command line's GeoJSON (one Polygon feature each, in
+    /// the same order). Computed on each call.
+    ///
+    /// Returns:
+    ///     list of Polygon.
+    fn polygons(&self, py: Python<'_>) -> PyResult<Vec<Polygon>> {
+        let rec = &self.inner;
+        let data: Vec<PolygonData> = py.detach(|| {
+            rec.polygons()
+                .into_iter()
+                .map(|polygon| PolygonData {
+                    exterior_points: indices(polygon.exterior.iter().copied()),
+                    exterior: polygon.exterior_coords(rec),
+                    hole_points: polygon
+                        .holes
+                        .iter()
+                        .map(|ring| indices(ring.iter().copied()))
+                        .collect(),
+                    holes: polygon.hole_coords(rec),
+                })
+                .collect()
+        });
+        data.into_iter().map(|p| Polygon::new(py, p)).collect()
+    }
+
+    /// The reconstruction as GeoJSON (RFC 7946): the text `wdm-crust reconstruct --format
+    /// geojson` writes on the same points with the same options, byte for byte. A
+    /// FeatureCollection of one Polygon per outer closed curve (holes inside), one
+    /// LineString per open chain, one MultiLineString for the medial axis and one
+    /// MultiPoint of the unassigned points (left out when there are none), with the
+    /// collection's own properties "duplicates" and "warnings".
+    ///
+    /// Returns:
+    ///     str, the GeoJSON document.
+    fn to_geojson(&self, py: Python<'_>) -> PyResult<String> {
+        let rec = &self.inner;
+        let out = py.detach(|| {
+            let mut out = Vec::new();
+            wdm_crust::io::write_reconstruction_geojson(rec, &mut out).map(|()| out)
+        });
+        text(out, "GeoJSON")
+    }
+
+    /// The command line's GeoJSON FeatureCollection (`to_geojson`) as a dict, so that
+    /// `geopandas.GeoDataFrame.from_features(rec)` and other GIS tools take the result
+    /// directly. Computed on each use.
+    #[getter]
+    fn __geo_interface__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let text = self.to_geojson(py)?;
+        py.import("json")?.call_method1("loads", (text,))
+    }
+
+    /// The reconstruction drawn as an SVG picture, the command line's `--format svg`: the
+    /// points, the curves (closed red, open purple), the medial axis (green), the
+    /// unassigned points (grey rings) and a legend.
+    ///
+    /// Args:
+    ///     y_down: the data is in image coordinates (y grows downwards): draw it the right
+    ///         way up (--y-down).
+    ///     show: underlays, any of 'delaunay', 'voronoi', 'labels' (WDM only) (--show).
+    ///     no_points: leave out the input points, dots and rings (--no-points).
+    ///
+    /// Returns:
+    ///     str, the SVG document.
+    ///
+    /// Raises:
+    ///     ValueError: an unknown underlay, or 'labels' for 'crust' or 'nn-crust'.
+    #[pyo3(signature = (*, y_down = false, show = Vec::new(), no_points = false))]
+    fn to_svg(
+        &self,
+        py: Python<'_>,
+        y_down: bool,
+        show: Vec<String>,
+        no_points: bool,
+    ) -> PyResult<String> {
+        let mut options = SvgOptions::default();
+        for layer in &show {
+            match layer.as_str() {
+                "delaunay" => options.delaunay = true,
+                "voronoi" => options.voronoi = true,
+                "labels" => options.labels = true,
+                other => {
+                    let known: Vec<String> = LAYERS.iter().map(|l| format!("'{l}'")).collect();
+                    return Err(PyValueError::new_err(format!(
+                        "show must list some of {}, got '{other}'",
+                        known.join(", ")
+                    )));
+                }
+            }
+        }
+        if options.labels && self.inner.algorithm() != Algorithm::Wdm {
+            return Err(PyValueError::new_err(format!(
+                "show=['labels'] does not apply to algorithm='{}': only WDM labels the \
+                 Voronoi vertices; leave it out, or use algorithm='wdm'",
+                self.algorithm()
+            )));
+        }
+        options.y_down = y_down;
+        options.points = !no_points;
+        let rec = &self.inner;
+        let out = py.detach(|| {
+            let mut out = Vec::new();
+            wdm_crust::io::write_reconstruction_svg(rec, &options, &mut out).map(|()| out)
+        });
+        text(out, "SVG")
     }
 
     fn __repr__(&self, py: Python<'_>) -> String {
@@ -351,6 +582,12 @@ impl Reconstruction {
             self.passes()
         )
     }
+}
+
+/// The text a writer produced into memory.
+fn text(out: std::io::Result<Vec<u8>>, what: &str) -> PyResult<String> {
+    let out = out.map_err(|e| PyRuntimeError::new_err(format!("writing {what}: {e}")))?;
+    String::from_utf8(out).map_err(|e| PyRuntimeError::new_err(format!("writing {what}: {e}")))
 }
 
 /// Reconstructs the curves the points were sampled from, and their medial axis.
@@ -370,6 +607,8 @@ impl Reconstruction {
 ///     smooth: fit the curves to the samples (the command line's --smooth): every curve
 ///         vertex is placed on a local fit of the noisy samples around it, and each curve's
 ///         `coords` are the fitted positions; False (the default) keeps the input points.
+///     threads: worker threads (the command line's --threads); None: all cores, or
+///         RAYON_NUM_THREADS. The result does not depend on their number.
 ///
 /// The WDM options that ask a baseline for what it does not do are refused with 'crust'
 /// and 'nn-crust': medial_axis='pruned' or 'raw', peeling=True, any peeling_budget.
@@ -388,7 +627,8 @@ impl Reconstruction {
 ///
 /// The GIL is released while the engine runs.
 #[pyfunction]
-#[pyo3(signature = (points, *, algorithm = "wdm", peeling = None, medial_axis = None, peeling_budget = None, smooth = false))]
+#[allow(clippy::too_many_arguments)] // the keywords of the command line's options
+#[pyo3(signature = (points, *, algorithm = "wdm", peeling = None, medial_axis = None, peeling_budget = None, smooth = false, threads = None))]
 pub fn reconstruct(
     py: Python<'_>,
     points: &Bound<'_, PyAny>,
@@ -397,15 +637,13 @@ pub fn reconstruct(
     medial_axis: Option<&str>,
     peeling_budget: Option<i64>,
     smooth: bool,
+    threads: Option<i64>,
 ) -> PyResult<Reconstruction> {
     let options = options(algorithm, peeling, medial_axis, peeling_budget, smooth)?;
-    let (rec, data) = with_points(points, |points| {
-        py.detach(|| {
-            let rec = wdm_crust::reconstruct_with(points, &options)?;
-            let data = ReconstructionData::of(&rec);
-            Ok((rec, data))
-        })
-        .map_err(engine_error)
+    let (rec, data) = on_points(py, points, threads, |points| {
+        let rec = wdm_crust::reconstruct_with(points, &options)?;
+        let data = ReconstructionData::of(&rec);
+        Ok((rec, data))
     })?;
     Reconstruction::new(py, rec, data)
 }

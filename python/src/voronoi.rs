@@ -1,13 +1,17 @@
 //! `wdm_crust.voronoi` and the `Voronoi` result.
 
+use std::sync::Arc;
+
 use numpy::{PyArray2, PyUntypedArrayMethods};
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
 use pyo3::types::PyList;
+use wdm_crust::BoundingBox;
 
 use crate::arrays::{rows_array, vector};
-use crate::errors::engine_error;
-use crate::points::with_points;
+use crate::pool::on_points;
+use crate::triangulation::{input_points, Source};
 
 /// The arrays of a Voronoi diagram, computed without the GIL; the cells as one flat list
 /// with offsets (point `i`'s cell is `cell_vertices[cell_offsets[i]..cell_offsets[i + 1]]`).
@@ -58,8 +62,12 @@ impl VoronoiData {
 ///     cells: list of n int64 arrays: the vertices of each point's cell, counterclockwise
 ///         (for a hull point, from its outgoing ray's vertex to its incoming ray's vertex);
 ///         empty for a duplicate, and for every point of collinear input.
+///
+/// Methods `clipped_cells(bbox)` and `to_geojson(bbox)` clip the cells to a box.
 #[pyclass(module = "wdm_crust", frozen)]
 pub struct Voronoi {
+    /// The triangulation the diagram is the dual of (for the clipped cells).
+    source: Source,
     vertices: Py<PyArray2<f64>>,
     edges: Py<PyArray2<i64>>,
     rays: Py<PyArray2<f64>>,
@@ -70,9 +78,10 @@ pub struct Voronoi {
 }
 
 impl Voronoi {
-    /// The Python object holding `data`.
-    pub fn new(py: Python<'_>, data: VoronoiData) -> PyResult<Self> {
+    /// The Python object holding `data`, the diagram of the triangulation in `source`.
+    pub fn new(py: Python<'_>, source: Source, data: VoronoiData) -> PyResult<Self> {
         Ok(Voronoi {
+            source,
             vertices: rows_array(py, data.vertices)?.unbind(),
             edges: rows_array(py, data.edges)?.unbind(),
             rays: rows_array(py, data.rays)?.unbind(),
@@ -116,6 +125,76 @@ impl Voronoi {
         Ok(cells.clone_ref(py))
     }
 
+    /// The cells clipped to a box: polygons that tile it.
+    ///
+    /// Args:
+    ///     bbox: (xmin, ymin, xmax, ymax), or None (the default) for the command line's
+    ///         default box: the points' bounding box enlarged on every side by 10 % of its
+    ///         larger side.
+    ///
+    /// Returns:
+    ///     list of n float64 arrays of shape (k, 2), one per input point (by its index):
+    ///     its cell clipped to the box, counterclockwise, not closed (the first vertex is
+    ///     not repeated), from its lexicographically smallest vertex. The cells of the
+    ///     distinct points tile the box (their areas add up to its area, no two overlap).
+    ///     Empty, shape (0, 2), for a duplicate point (its first occurrence has the cell)
+    ///     and for a cell that meets the box in no area. The same rings as the command
+    ///     line's `voronoi --format geojson --clip ...`.
+    ///
+    /// Raises:
+    ///     ValueError: a box with a NaN or infinite bound, or min not below max; no bbox
+    ///         for points whose default box would overflow float64.
+    #[pyo3(signature = (bbox = None))]
+    fn clipped_cells<'py>(
+        &self,
+        py: Python<'py>,
+        bbox: Option<[f64; 4]>,
+    ) -> PyResult<Bound<'py, PyList>> {
+        let tri = self.source.get();
+        let Some(bbox) = clip_box(tri, bbox)? else {
+            if tri.point_count() > 0 {
+                return Err(PyValueError::new_err(
+                    "the points' default box would overflow float64 (coordinates near \
+                     ±1.8e308): pass bbox=(xmin, ymin, xmax, ymax)",
+                ));
+            }
+            return PyList::new(py, Vec::<Bound<'py, PyArray2<f64>>>::new());
+        };
+        let rings = py.detach(|| tri.voronoi().clipped_cells(&bbox));
+        let arrays = rings
+            .into_iter()
+            .map(|ring| rows_array(py, ring))
+            .collect::<PyResult<Vec<_>>>()?;
+        PyList::new(py, arrays)
+    }
+
+    /// The clipped cells as GeoJSON: the text `wdm-crust voronoi --format geojson` writes
+    /// (with `--clip` for a `bbox`), a FeatureCollection of one Polygon per distinct point
+    /// with properties {"site": i}.
+    ///
+    /// Args:
+    ///     bbox: as `clipped_cells`.
+    ///
+    /// Returns:
+    ///     str, the GeoJSON document (`json.loads` makes it a dict).
+    ///
+    /// Raises:
+    ///     ValueError: as `clipped_cells`.
+    #[pyo3(signature = (bbox = None))]
+    fn to_geojson(&self, py: Python<'_>, bbox: Option<[f64; 4]>) -> PyResult<String> {
+        let tri = self.source.get();
+        let Some(bbox) = clip_box(tri, bbox)? else {
+            // No points, or no default box that f64 can hold: no cells, as on the command line.
+            return Ok("{\"type\":\"FeatureCollection\",\"features\":[]}\n".to_string());
+        };
+        let out = py.detach(|| {
+            let mut out = Vec::new();
+            wdm_crust::io::write_voronoi_geojson(&tri.voronoi(), &bbox, &mut out).map(|()| out)
+        });
+        let out = out.map_err(|e| PyRuntimeError::new_err(format!("writing GeoJSON: {e}")))?;
+        String::from_utf8(out).map_err(|e| PyRuntimeError::new_err(format!("writing GeoJSON: {e}")))
+    }
+
     fn __repr__(&self, py: Python<'_>) -> String {
         format!(
             "Voronoi(vertices={}, edges={}, rays={}, cells={})",
@@ -143,15 +222,33 @@ impl Voronoi {
 /// Raises:
 ///     ValueError, TypeError: as `triangulate`.
 ///
-/// The GIL is released while the engine runs.
+/// The GIL is released while the engine runs, on `threads` worker threads (see
+/// `triangulate`).
 #[pyfunction]
-pub fn voronoi(py: Python<'_>, points: &Bound<'_, PyAny>) -> PyResult<Voronoi> {
-    let data = with_points(points, |points| {
-        py.detach(|| {
-            let tri = wdm_crust::triangulate(points)?;
-            Ok(VoronoiData::of(&tri.voronoi()))
-        })
-        .map_err(engine_error)
+#[pyo3(signature = (points, *, threads = None))]
+pub fn voronoi(
+    py: Python<'_>,
+    points: &Bound<'_, PyAny>,
+    threads: Option<i64>,
+) -> PyResult<Voronoi> {
+    let (tri, data) = on_points(py, points, threads, |points| {
+        let tri = wdm_crust::triangulate(points)?;
+        let data = VoronoiData::of(&tri.voronoi());
+        Ok((tri, data))
     })?;
-    Voronoi::new(py, data)
+    Voronoi::new(py, Source::Own(Arc::new(tri)), data)
+}
+
+/// The box `bbox` names, or the command line's default box around the points of `tri`
+/// (`None` when there are no points: then there are no cells either).
+fn clip_box(
+    tri: &wdm_crust::Triangulation,
+    bbox: Option<[f64; 4]>,
+) -> PyResult<Option<BoundingBox>> {
+    match bbox {
+        Some([xmin, ymin, xmax, ymax]) => BoundingBox::new([xmin, ymin], [xmax, ymax])
+            .map(Some)
+            .map_err(|e| PyValueError::new_err(format!("bbox: {e}"))),
+        None => Ok(BoundingBox::around(&input_points(tri))),
+    }
 }

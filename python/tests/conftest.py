@@ -14,9 +14,16 @@ REPO = Path(__file__).resolve().parents[2]
 CLI = REPO / "target" / "release" / "wdm-crust"
 
 
+def points_text(points):
+    """The points as a point file: repr() of a float is its shortest round-trip form, which
+    the CLI parses back to the same float64."""
+    return "".join(f"{x!r} {y!r}\n" for x, y in np.asarray(points, dtype=float).tolist())
+
+
 @pytest.fixture(scope="session")
-def cli():
-    """Runs `wdm-crust SUBCOMMAND` on points and returns its parsed JSON output."""
+def cli_text():
+    """Runs `wdm-crust ARGS...` (on `points` as standard input, if given) and returns its
+    standard output as text; a failing run fails the test with its message."""
     if not CLI.is_file():
         pytest.fail(
             f"{CLI} is missing: these tests compare the package with the command line; "
@@ -24,19 +31,26 @@ def cli():
             pytrace=False,
         )
 
-    def run(subcommand, points, *args):
-        # repr() of a float is its shortest round-trip form, which the CLI parses back to
-        # the same float64.
-        text = "".join(f"{x!r} {y!r}\n" for x, y in np.asarray(points, dtype=float).tolist())
+    def run(*args, points=None):
         done = subprocess.run(
-            [str(CLI), subcommand, *args],
-            input=text.encode(),
+            [str(CLI), *map(str, args)],
+            input=None if points is None else points_text(points).encode(),
             capture_output=True,
             check=False,
         )
         if done.returncode != 0:
-            raise AssertionError(f"wdm-crust {subcommand} failed: {done.stderr.decode()}")
-        return json.loads(done.stdout)
+            raise AssertionError(f"wdm-crust {' '.join(map(str, args))} failed: {done.stderr.decode()}")
+        return done.stdout.decode()
+
+    return run
+
+
+@pytest.fixture(scope="session")
+def cli(cli_text):
+    """Runs `wdm-crust SUBCOMMAND` on points and returns its parsed JSON output."""
+
+    def run(subcommand, points, *args):
+        return json.loads(cli_text(subcommand, *args, points=points))
 
     return run
 

@@ -17,6 +17,8 @@ RECONSTRUCT_OPTIONS = [
     ({"medial_axis": "none"}, ["--medial-axis", "none"]),
     ({"peeling_budget": 0}, ["--peeling-budget", "0"]),
     ({"smooth": True}, ["--smooth"]),
+    ({"threads": 1}, ["--threads", "1"]),
+    ({"algorithm": "crust", "medial_axis": "none", "threads": 2}, ["--algorithm", "crust", "--medial-axis", "none", "--threads", "2"]),
 ]
 
 

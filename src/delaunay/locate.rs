@@ -35,6 +35,8 @@
 //! triangle to walk: location then checks the chain of points along the line and the
 //! nearest point is found by an exact scan.
 
+use std::sync::Arc;
+
 use super::triangulation::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
 use crate::error::{check_coordinate, Error};
 use crate::kernel::metric::distance_order;
@@ -69,7 +71,8 @@ enum Walked {
 /// Repeated queries on one triangulation. Each walk starts from a coarse grid of start
 /// triangles (about one cell per 8 triangles, built once in O(T) when the locator is made)
 /// or from where the previous walk ended, whichever is nearer: random queries walk a few
-/// triangles each, as queries near each other do.
+/// triangles each, as queries near each other do. A clone shares the grid, so a locator per
+/// thread or per batch of queries costs one grid in all.
 ///
 /// ```
 /// use wdm_crust::delaunay::Location;
@@ -93,7 +96,9 @@ pub struct Locator<'a> {
     last: usize,
     /// A half-edge leaving the last nearest point found.
     last_nearest: usize,
-    grid: StartGrid,
+    /// Shared by the clones, so that a clone (a locator per thread or per batch of queries)
+    /// costs nothing.
+    grid: Arc<StartGrid>,
 }
 
 impl<'a> Locator<'a> {
@@ -103,7 +108,7 @@ impl<'a> Locator<'a> {
             tri,
             last: usize::MAX,
             last_nearest: usize::MAX,
-            grid: StartGrid::new(tri),
+            grid: Arc::new(StartGrid::new(tri)),
         }
     }
 
@@ -146,6 +151,40 @@ impl<'a> Locator<'a> {
         let (v, outgoing) = tri.greedy_nearest(q, start);
         self.last_nearest = outgoing;
         Ok(Some(tri.input_index(v)))
+    }
+
+    /// A triangle whose closed region holds `q` (an id for [`Triangulation::triangle`]), or
+    /// `None` when `q` is outside the closed convex hull or there are no triangles (all
+    /// points collinear, or fewer than three distinct). On an edge or an input point, the
+    /// triangle is one of those around it, the one the walk ends in. Decided exactly, by the
+    /// same walk as [`locate`](Self::locate).
+    ///
+    /// # Errors
+    /// As [`locate`](Self::locate).
+    ///
+    /// ```
+    /// let points = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
+    /// let tri = wdm_crust::triangulate(&points)?;
+    /// let mut locator = tri.locator();
+    /// let t = locator.triangle_containing([1.0, 3.0])?.expect("inside the square");
+    /// assert!(tri.triangle(t).contains(&3));
+    /// // On the shared diagonal or a corner: a triangle on it.
+    /// let t = locator.triangle_containing([4.0, 4.0])?.expect("a corner");
+    /// assert!(tri.triangle(t).contains(&2));
+    /// assert_eq!(locator.triangle_containing([5.0, 1.0])?, None);
+    /// # Ok::<(), wdm_crust::Error>(())
+    /// ```
+    pub fn triangle_containing(&mut self, q: [f64; 2]) -> Result<Option<usize>, Error> {
+        check_query(q)?;
+        if self.tri.is_degenerate() {
+            return Ok(None);
+        }
+        let walked = self.tri.walk(q, self.start(q));
+        self.remember(walked);
+        Ok(match walked {
+            Walked::Inside(t) => Some(t),
+            Walked::Beyond(_) => None,
+        })
     }
 
     /// The start of a location walk: the grid's triangle or the last one, whichever has its

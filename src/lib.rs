@@ -45,7 +45,7 @@
 pub mod delaunay;
 pub mod error;
 pub mod interop;
-#[cfg(feature = "cli")]
+#[cfg(feature = "io")]
 pub mod io;
 mod kernel;
 mod parallel;

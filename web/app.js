@@ -89,6 +89,8 @@ function layers() {
 
 // ---- running the engine: one request at a time, the latest points next ------------------
 
+// From this many points on, a reconstruction shows its progress from the start.
+const LARGE = 50000;
 let running = false;
 let dirty = false;
 let runs = 0;
@@ -107,13 +109,16 @@ async function pump() {
     summary.dataset.state = 'working';
     const started = performance.now();
     const phases = [];
+    // Progress for a large input from the start; for a small one only if it is slow (not
+    // at every step of a drag).
+    const large = n >= LARGE;
     const onProgress = ({ phase, ms }) => {
       phases.push(`${phase} ${ms.toFixed(0)} ms`);
-      if (performance.now() - started > 300) {
+      if (large || performance.now() - started > 300) {
         showProgress(`reconstructing ${n} points…\n${phases.join('\n')}`);
       }
     };
-    const timer = setTimeout(() => showProgress(`reconstructing ${n} points…`), 300);
+    const timer = setTimeout(() => showProgress(`reconstructing ${n} points…`), large ? 0 : 300);
     try {
       const answer = await ask({ type: 'run', coords: snapshot.slice(), choices: choices() }, [], onProgress);
       result = { coords: snapshot, ...answer };
@@ -298,15 +303,22 @@ function draw() {
   // Dense points go under the curves, which they would hide; sparse ones on top.
   const dense = n > 2000;
   if (result && !dense) drawResult(ctx, show);
-  if (show.points) {
-    const radius = dense ? 1 : 2.6;
-    ctx.fillStyle = dense ? '#777777' : '#111111';
+  if (show.points && dense) {
+    // Squares: many thousand arcs would hold up the page for a second.
+    ctx.fillStyle = '#777777';
+    for (let i = 0; i < coords.length; i += 2) {
+      const [sx, sy] = toScreen(coords[i], coords[i + 1]);
+      if (sx < -2 || sy < -2 || sx > size.width + 2 || sy > size.height + 2) continue;
+      ctx.fillRect(sx - 1, sy - 1, 2, 2);
+    }
+  } else if (show.points) {
+    ctx.fillStyle = '#111111';
     ctx.beginPath();
     for (let i = 0; i < coords.length; i += 2) {
       const [sx, sy] = toScreen(coords[i], coords[i + 1]);
       if (sx < -5 || sy < -5 || sx > size.width + 5 || sy > size.height + 5) continue;
-      ctx.moveTo(sx + radius, sy);
-      ctx.arc(sx, sy, radius, 0, 2 * Math.PI);
+      ctx.moveTo(sx + 2.6, sy);
+      ctx.arc(sx, sy, 2.6, 0, 2 * Math.PI);
     }
     ctx.fill();
   }
@@ -343,8 +355,10 @@ function drawResult(ctx, show) {
   const pts = result.coords;
   const point = (i) => toScreen(pts[2 * i], pts[2 * i + 1]);
   const diagonal = Math.hypot(size.width, size.height);
-  ctx.lineCap = 'round';
-  ctx.lineJoin = 'round';
+  // Round joins are costly on paths of many thousand vertices.
+  const dense = pts.length / 2 > 2000;
+  ctx.lineCap = dense ? 'butt' : 'round';
+  ctx.lineJoin = dense ? 'bevel' : 'round';
   if (show.delaunay) {
     segments(ctx, '#c8c8c8', 0.8, (line) => {
       for (let k = 0; k < d.delaunayEdges.length; k += 2) line(point(d.delaunayEdges[k]), point(d.delaunayEdges[k + 1]));
@@ -601,6 +615,9 @@ syncControls();
 window.wdmPage = {
   exportText,
   points: () => coords.slice(),
+  // The result shown is that of the points as they are, and nothing is left to run.
+  idle: () => !running && !dirty && result !== null && result.coords.length === coords.length
+    && result.coords.every((v, i) => Object.is(v, coords[i])),
   screenOf: (i) => {
     const box = canvas.getBoundingClientRect();
     const [sx, sy] = toScreen(coords[2 * i], coords[2 * i + 1]);

@@ -117,7 +117,10 @@ class Page {
     for (;;) {
       const value = await this.evaluate(expression).catch(() => undefined);
       if (value) return value;
-      if (Date.now() - start > timeout) throw new Error(`timed out waiting for ${what}`);
+      if (Date.now() - start > timeout) {
+        const now = await this.evaluate("[document.getElementById('summary').textContent, document.getElementById('progress').textContent]").catch((e) => e.message);
+        throw new Error(`timed out waiting for ${what}; the summary and progress say ${JSON.stringify(now)}`);
+      }
       await sleep(50);
     }
   }
@@ -127,11 +130,12 @@ class Page {
     await this.waitFor("document.readyState === 'complete' && window.wdmPage !== undefined", 'the page');
   }
 
-  // Waits until the summary shows a result after `runs` (the count before an action).
+  // Waits until the summary shows a result after `runs` (the count before an action), of
+  // the points as they are (a pointer move reaches the page at its next frame).
   async settled(runs = 0, timeout = 60000) {
     await this.waitFor(
       `(() => { const s = document.getElementById('summary').dataset;
-        return (s.state === 'done' && Number(s.runs) > ${runs}) || s.state === 'error'; })()`,
+        return (s.state === 'done' && Number(s.runs) > ${runs} && window.wdmPage.idle()) || s.state === 'error'; })()`,
       'the result', timeout,
     );
     return this.state();
@@ -301,6 +305,7 @@ try {
       if (shown.state !== 'done') throw new Error(shown.text);
       await sameAsCommandLine(page, file, []);
       if (!shown.counts.startsWith(`${countsOf(JSON.parse(commandLine(file)))}. `)) throw new Error(shown.counts);
+      await page.screenshot(`example-${name}`);
     });
   }
 
@@ -381,6 +386,8 @@ try {
   await check('dragging a point moves it, and the result is the command line on the moved points', async () => {
     await page.open('?example=bean');
     const before = await page.settled();
+    // After the layout of the result's frame, where the points are drawn.
+    await page.evaluate('new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done)))');
     const [x, y] = await page.evaluate('window.wdmPage.screenOf(0)');
     const [x0, y0] = await page.evaluate('Array.from(window.wdmPage.points().slice(0, 2))');
     await page.mouse('mousePressed', x, y);
@@ -404,6 +411,58 @@ try {
     const ms = await page.evaluate("document.querySelector('#summary .note').textContent");
     console.log(`  family (9990 points): ${ms.trim()} in the page`);
     await page.screenshot('family');
+  });
+
+  await check('a large file shows progress, the page answering meanwhile, and ends as on the command line', async () => {
+    // 200 000 samples of a wavy closed curve, a little jittered, in a scrambled order.
+    const n = 200000;
+    let seed = 12345;
+    const next = () => {
+      seed = (seed * 1103515245 + 12345) % 2147483648;
+      return seed / 2147483648;
+    };
+    const lines = [];
+    for (let k = 0; k < n; k += 1) {
+      const t = ((k * 7919) % n) / n * 2 * Math.PI;
+      const r = 1 + 0.15 * Math.sin(5 * t) + 2e-6 * (next() - 0.5);
+      lines.push(`${r * Math.cos(t)} ${r * Math.sin(t)}`);
+    }
+    const big = path.join(out, 'large.txt');
+    fs.writeFileSync(big, `${lines.join('\n')}\n`);
+    await page.open('?example=bean');
+    const before = await page.settled();
+    await page.chooseFile('#file', big);
+    await page.waitFor("!document.getElementById('progress').hidden && document.getElementById('progress').textContent.includes('reconstructing')", 'the progress box');
+    // The page answers while the engine runs: the answers that came during the run.
+    let slowest = 0;
+    let answered = 0;
+    let seen = '';
+    for (;;) {
+      const start = Date.now();
+      const state = await page.evaluate("[document.getElementById('summary').dataset.state, document.getElementById('progress').textContent]");
+      slowest = Math.max(slowest, Date.now() - start);
+      if (state[0] !== 'working') break;
+      answered += 1;
+      seen = state[1];
+      await sleep(50);
+    }
+    const shown = await page.settled(before.runs, 300000);
+    console.log(`  ${n} points: ${shown.text.match(/\((\d+ ms)\)/)?.[1]} in the page; it answered ${answered} times during the run, `
+      + `the slowest answer (the result drawn) in ${slowest} ms; last progress: ${JSON.stringify(seen)}`);
+    if (shown.points !== n) throw new Error(shown.text);
+    if (answered < 3) throw new Error(`the page answered only ${answered} times during the run`);
+    if (!/triangulate \d+ ms/.test(seen)) throw new Error(`no phase in the progress box: ${JSON.stringify(seen)}`);
+    await sameAsCommandLine(page, big, []);
+    await page.screenshot('large');
+  });
+
+  await check('the picture for the README (docs/web-page.png is a copy of target/web-test/page.png)', async () => {
+    const small = await browser.page(1000, 600);
+    await small.open('?example=bean&show=voronoi,labels');
+    const shown = await small.settled();
+    if (shown.state !== 'done') throw new Error(shown.text);
+    await small.screenshot('page');
+    page.problems.push(...small.problems);
   });
 
   if (page.problems.length > 0) {

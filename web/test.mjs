@@ -350,6 +350,20 @@ try {
     await sameAsCommandLine(page, file, []);
   });
 
+  await check('a point file dropped on the picture is reconstructed as on the command line', async () => {
+    await page.open('?example=bean');
+    const before = await page.settled();
+    const file = 'examples/data/mushroom.p2d';
+    const box = await page.evaluate("(() => { const r = document.getElementById('canvas').getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2]; })()");
+    const data = { items: [], files: [path.resolve(file)], dragOperationsMask: 1 };
+    for (const type of ['dragEnter', 'dragOver', 'drop']) {
+      await page.send('Input.dispatchDragEvent', { type, x: box[0], y: box[1], data });
+    }
+    const shown = await page.settled(before.runs);
+    if (shown.state !== 'done' || shown.points !== 59) throw new Error(`${shown.points} points: ${shown.text}`);
+    await sameAsCommandLine(page, file, []);
+  });
+
   await check("a bad file shows the parser's message, naming the line", async () => {
     const bad = path.join(out, 'bad.txt');
     fs.writeFileSync(bad, '1 2\n3 four\n5 6\n');

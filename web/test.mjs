@@ -242,9 +242,10 @@ function ulps(a, b) {
   return Number(d < 0n ? -d : d);
 }
 
-// The fitted coordinates of smoothing are rounded values computed with `hypot`, which the
-// browser's build takes from Rust's portable libm and the native one from the system's:
-// they may differ in the last bits. Everything else must be equal; those within `most` ulps.
+// The fitted coordinates of smoothing are rounded values, computed with `hypot` among
+// others, which the browser's build takes from Rust's portable libm and the native one from
+// the system's: they may differ in the last bits. Everything else must be equal; those
+// within `most` ulps.
 async function sameUpToFittedCoords(page, file, args, most) {
   const shown = JSON.parse(await page.evaluate("window.wdmPage.exportText('json')"));
   const expected = JSON.parse(commandLine(file, args));

@@ -398,6 +398,25 @@ try {
     await sameAsCommandLine(page, await pagePoints(page, 'clicked.txt'), []);
   });
 
+  await check('from no point to three by clicks, every layer on: each result the command line\'s', async () => {
+    await page.open('?example=bean&show=delaunay,voronoi,labels');
+    let before = await page.settled();
+    await page.evaluate("document.getElementById('clear').click()");
+    let shown = await page.settled(before.runs);
+    if (!shown.counts?.startsWith('0 closed curves, 0 open chains, 0 points on no curve, 0 duplicates. 0 points')) throw new Error(shown.text);
+    const box = await page.evaluate("(() => { const r = document.getElementById('canvas').getBoundingClientRect(); return [r.left, r.top, r.width, r.height]; })()");
+    for (const [u, v] of [[0.3, 0.3], [0.7, 0.4], [0.5, 0.8]]) {
+      before = shown;
+      const [x, y] = [box[0] + u * box[2], box[1] + v * box[3]];
+      await page.mouse('mousePressed', x, y);
+      await page.mouse('mouseReleased', x, y);
+      shown = await page.settled(before.runs);
+      if (shown.state !== 'done') throw new Error(shown.text);
+      await sameAsCommandLine(page, await pagePoints(page, `clicked-${shown.points}.txt`), []);
+    }
+    if (shown.points !== 3) throw new Error(shown.text);
+  });
+
   await check('dragging a point moves it, and the result is the command line on the moved points', async () => {
     await page.open('?example=bean');
     const before = await page.settled();

@@ -35,6 +35,7 @@ fn options(
     medial_axis: Option<&str>,
     peeling_budget: Option<i64>,
     smooth: bool,
+    thinning: bool,
 ) -> PyResult<Options> {
     let algorithm = by_name(&ALGORITHMS, Algorithm::name, "algorithm", algorithm)?;
     let mut options = Options::new().with_algorithm(algorithm);
@@ -50,7 +51,7 @@ fn options(
         )?;
         options = options.with_medial_axis(mode);
     }
-    options = options.with_smoothing(smooth);
+    options = options.with_smoothing(smooth).with_thinning(thinning);
     if let Some(budget) = peeling_budget {
         let budget = usize::try_from(budget).map_err(|_| {
             PyValueError::new_err(format!(
@@ -430,6 +431,14 @@ impl Reconstruction {
         self.inner.passes()
     }
 
+    /// int or None: when the input was a dense noisy band and thinned, the number of
+    /// representatives the curves run through (every other point is unassigned); the
+    /// command line's JSON "thinned".
+    #[getter]
+    fn thinned(&self) -> Option<usize> {
+        self.inner.thinned()
+    }
+
     /// True when peeling stopped at its budget (the unassigned points may hold curves).
     #[getter]
     fn peeling_budget_exhausted(&self) -> bool {
@@ -607,6 +616,11 @@ fn text(out: std::io::Result<Vec<u8>>, what: &str) -> PyResult<String> {
 ///     smooth: fit the curves to the samples (the command line's --smooth): every curve
 ///         vertex is placed on a local fit of the noisy samples around it, and each curve's
 ///         `coords` are the fitted positions; False (the default) keeps the input points.
+///     thinning: WDM: True (the default) thins a dense noisy band (points many sample
+///         spacings wide around their curves) to representatives near its middle and
+///         reconstructs the curves through them, every other point unassigned
+///         (`Reconstruction.thinned` counts them); False reconstructs the points as they
+///         are (the command line's --no-thinning).
 ///     threads: worker threads (the command line's --threads); None: all cores, or
 ///         RAYON_NUM_THREADS. The result does not depend on their number.
 ///
@@ -628,7 +642,7 @@ fn text(out: std::io::Result<Vec<u8>>, what: &str) -> PyResult<String> {
 /// The GIL is released while the engine runs.
 #[pyfunction]
 #[allow(clippy::too_many_arguments)] // the keywords of the command line's options
-#[pyo3(signature = (points, *, algorithm = "wdm", peeling = None, medial_axis = None, peeling_budget = None, smooth = false, threads = None))]
+#[pyo3(signature = (points, *, algorithm = "wdm", peeling = None, medial_axis = None, peeling_budget = None, smooth = false, thinning = true, threads = None))]
 pub fn reconstruct(
     py: Python<'_>,
     points: &Bound<'_, PyAny>,
@@ -637,9 +651,17 @@ pub fn reconstruct(
     medial_axis: Option<&str>,
     peeling_budget: Option<i64>,
     smooth: bool,
+    thinning: bool,
     threads: Option<i64>,
 ) -> PyResult<Reconstruction> {
-    let options = options(algorithm, peeling, medial_axis, peeling_budget, smooth)?;
+    let options = options(
+        algorithm,
+        peeling,
+        medial_axis,
+        peeling_budget,
+        smooth,
+        thinning,
+    )?;
     let (rec, data) = on_points(py, points, threads, |points| {
         let rec = wdm_crust::reconstruct_with(points, &options)?;
         let data = ReconstructionData::of(&rec);

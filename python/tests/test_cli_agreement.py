@@ -17,6 +17,7 @@ RECONSTRUCT_OPTIONS = [
     ({"medial_axis": "none"}, ["--medial-axis", "none"]),
     ({"peeling_budget": 0}, ["--peeling-budget", "0"]),
     ({"smooth": True}, ["--smooth"]),
+    ({"thinning": False}, ["--no-thinning"]),
     ({"threads": 1}, ["--threads", "1"]),
     ({"algorithm": "crust", "medial_axis": "none", "threads": 2}, ["--algorithm", "crust", "--medial-axis", "none", "--threads", "2"]),
 ]
@@ -100,6 +101,23 @@ def test_smoothed_coords_match_the_cli_and_move_the_vertices(cli):
     off = lambda xy: np.abs(np.hypot(xy[:, 0], xy[:, 1]) - 1.0)
     fitted = np.concatenate([off(c.coords) for c in rec.curves])
     assert np.sqrt(np.mean(fitted**2)) < 0.6 * np.sqrt(np.mean(off(points) ** 2))
+
+
+def test_a_dense_band_is_thinned_as_on_the_command_line(cli):
+    """A band many spacings wide: thinned to representatives (the JSON's "thinned"), one
+    loop through them; thinning=False is --no-thinning, the points as they are."""
+    rng = np.random.default_rng(8)
+    t = rng.uniform(0.0, 2.0 * np.pi, 3000)
+    points = np.column_stack([np.cos(t), np.sin(t)]) + rng.normal(0.0, 0.03, (3000, 2))
+    rec = wdm_crust.reconstruct(points)
+    expected = cli("reconstruct", points)
+    assert rec.thinned is not None and rec.thinned == expected["thinned"]
+    assert rec.edges.tolist() == expected["edges"]
+    assert [c.closed for c in rec.curves] == [True]
+    plain = wdm_crust.reconstruct(points, thinning=False)
+    expected = cli("reconstruct", points, "--no-thinning")
+    assert plain.thinned is None and "thinned" not in expected
+    assert plain.edges.tolist() == expected["edges"]
 
 
 def test_the_samples_reach_every_part_of_the_output():

@@ -44,6 +44,29 @@ pub fn reconstruct_with(points: &[[f64; 2]], options: &Options) -> Result<Recons
     reconstruct_observed(points, options, &mut |_, _| {})
 }
 
+/// When the phase being timed began. `wasm32-unknown-unknown` has no clock (`Instant::now`
+/// panics there): there every phase lasts zero.
+struct PhaseClock {
+    #[cfg(not(all(target_arch = "wasm32", target_os = "unknown")))]
+    start: std::time::Instant,
+}
+
+impl PhaseClock {
+    fn start() -> Self {
+        PhaseClock {
+            #[cfg(not(all(target_arch = "wasm32", target_os = "unknown")))]
+            start: std::time::Instant::now(),
+        }
+    }
+
+    fn elapsed(&self) -> std::time::Duration {
+        #[cfg(not(all(target_arch = "wasm32", target_os = "unknown")))]
+        return self.start.elapsed();
+        #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+        return std::time::Duration::ZERO;
+    }
+}
+
 /// A stage of the reconstruction pipeline, as reported to [`reconstruct_observed`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
@@ -98,15 +121,18 @@ impl Phase {
 
 /// [`reconstruct_with`], calling `on_phase` with the wall time of each [`Phase`] as it ends
 /// (for timings and progress reports).
+///
+/// On `wasm32-unknown-unknown`, which has no clock, every duration is zero; the phases are
+/// still reported as they end, so that a caller can time them with a clock of its own.
 pub fn reconstruct_observed(
     points: &[[f64; 2]],
     options: &Options,
     on_phase: &mut dyn FnMut(Phase, std::time::Duration),
 ) -> Result<Reconstruction, Error> {
-    let mut clock = std::time::Instant::now();
+    let mut clock = PhaseClock::start();
     let mut lap = |phase: Phase| {
         on_phase(phase, clock.elapsed());
-        clock = std::time::Instant::now();
+        clock = PhaseClock::start();
     };
     // Everything runs in the frame (the points exactly rescaled, see `frame`) and on the
     // triangulation's local indices (its locality order); the coordinates, curves and
@@ -318,7 +344,7 @@ fn thinned(
     let chosen: Vec<[f64; 2]> = ids.iter().map(|&i| points[i as usize]).collect();
     let inner_options = options.with_thinning(false).with_smoothing(false);
     let inner = reconstruct_observed(&chosen, &inner_options, on_phase)?;
-    let clock = std::time::Instant::now();
+    let clock = PhaseClock::start();
     // `ids` is ascending, so the translation keeps every order: edges `[i, j]` with `i < j`,
     // sorted; curves starting where they started.
     let id = |k: u32| ids[k as usize];

@@ -141,6 +141,9 @@ class Reconstruction:
     def passes(self) -> int:
         """How many passes ran (more than one when peeling found nested curves)."""
     @property
+    def thinned(self) -> Optional[int]:
+        """With a dense noisy band thinned: the number of representatives (the JSON's "thinned")."""
+    @property
     def peeling_budget_exhausted(self) -> bool:
         """True when peeling stopped at its budget."""
     @property
@@ -184,6 +187,7 @@ def reconstruct(
     medial_axis: Optional[Literal["pruned", "raw", "none"]] = None,
     peeling_budget: Optional[int] = None,
     smooth: bool = False,
+    thinning: bool = True,
     threads: Optional[int] = None,
 ) -> Reconstruction:
     """Reconstructs the curves the points were sampled from, and their medial axis.
@@ -193,7 +197,8 @@ def reconstruct(
     not do raise ValueError saying why: medial_axis='pruned' or 'raw', peeling=True, any
     peeling_budget; medial_axis='none' and peeling=False are accepted with every algorithm.
     A peeling_budget with peeling=False raises ValueError too. smooth=True fits the curves
-    to the samples (--smooth); threads is --threads (None: all cores).
+    to the samples (--smooth); thinning=False reconstructs a dense noisy band as it is
+    (--no-thinning); threads is --threads (None: all cores).
     """
 
 def read_points(

@@ -32,13 +32,15 @@ const KNOWN_MERGED_FACE_ORDER_ISSUE: bool = false;
 fuzz_target!(|scene: Scene| {
     let points = scene.points(MAX_POINTS);
     // The oracles check the paper's WDM_MAT and peeling, without the detour repair (which
-    // swaps first-pass edges; its invariants are checked in the pipeline's tests) and
-    // without the open-curve stage (which reads the flow's result); the default, both
-    // included, is checked under permutation and for points on three edges.
+    // swaps first-pass edges; its invariants are checked in the pipeline's tests), without
+    // the open-curve stage (which reads the flow's result) and without thinning (which
+    // reconstructs other points); the default, all included, is checked under permutation
+    // and for points on three edges.
     let raw = Options::new()
         .with_medial_axis(MedialAxisMode::Raw)
         .with_detour_repair(false)
-        .with_open_curves(false);
+        .with_open_curves(false)
+        .with_thinning(false);
     let single_options = raw.with_peeling(false);
     let single = reconstruct_with(&points, &single_options);
     let full = reconstruct_with(&points, &raw);

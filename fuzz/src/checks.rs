@@ -1184,17 +1184,25 @@ pub fn axis_segments(rec: &Reconstruction) -> Vec<[u64; 4]> {
     out
 }
 
-/// Every Voronoi vertex keyed by its sorted sites (mapped through `map`): label and position.
+/// Every Voronoi vertex keyed by its sorted sites (mapped through `map`): label (none when
+/// the result has no labels: a thinned band, whose labels belong to its representatives)
+/// and position.
 fn vertices_by_sites(
     rec: &Reconstruction,
     map: impl Fn(u32) -> u32,
-) -> HashMap<Vec<u32>, (Label, [f64; 2])> {
+) -> HashMap<Vec<u32>, (Option<Label>, [f64; 2])> {
     let vor = rec.triangulation().voronoi();
     (0..vor.vertex_count() as u32)
         .map(|v| {
             let mut sites: Vec<u32> = vor.vertex_sites(v).map(&map).collect();
             sites.sort_unstable();
-            (sites, (rec.labels()[v as usize], vor.vertex_position(v)))
+            (
+                sites,
+                (
+                    rec.labels().get(v as usize).copied(),
+                    vor.vertex_position(v),
+                ),
+            )
         })
         .collect()
 }
@@ -1252,6 +1260,12 @@ pub fn check_permuted(
     ensure!(
         untouched == rec.untouched_points(),
         "permuted input: the unassigned points differ (original indices)"
+    );
+    ensure!(
+        permuted.thinned() == rec.thinned(),
+        "permuted input: thinned to {:?} representatives, original {:?}",
+        permuted.thinned(),
+        rec.thinned()
     );
     let mine = vertices_by_sites(rec, |s| s);
     let theirs = vertices_by_sites(permuted, back);

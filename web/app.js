@@ -72,6 +72,7 @@ function choices() {
     medialAxis: $('medial-axis').value,
     peeling: $('peeling').checked,
     smooth: $('smooth').checked,
+    thinning: $('thinning').checked,
     voronoi: $('layer-voronoi').checked || $('layer-labels').checked,
   };
 }
@@ -561,7 +562,7 @@ async function download(format) {
 function syncControls() {
   const wdm = $('algorithm').value === 'wdm';
   // What the baselines do not do, as the command line refuses it for them.
-  for (const id of ['medial-axis', 'peeling', 'layer-labels']) $(id).disabled = !wdm;
+  for (const id of ['medial-axis', 'peeling', 'thinning', 'layer-labels']) $(id).disabled = !wdm;
 }
 
 for (const example of EXAMPLES) {
@@ -583,7 +584,7 @@ $('file').addEventListener('change', () => {
   if (file) loadFile(file);
 });
 $('clear').addEventListener('click', () => setPoints(new Float64Array(0), 'points', $('y-down').checked));
-for (const id of ['algorithm', 'medial-axis', 'peeling', 'smooth', 'layer-voronoi', 'layer-labels']) {
+for (const id of ['algorithm', 'medial-axis', 'peeling', 'smooth', 'thinning', 'layer-voronoi', 'layer-labels']) {
   $(id).addEventListener('change', () => {
     syncControls();
     schedule();
@@ -599,12 +600,13 @@ for (const format of ['svg', 'geojson', 'json']) {
 new ResizeObserver(resize).observe(canvas);
 
 // The command line's options, as URL parameters: ?example=bean&algorithm=crust&smooth=1
-// &no-peeling=1&medial-axis=raw&show=delaunay,voronoi,labels
+// &no-peeling=1&no-thinning=1&medial-axis=raw&show=delaunay,voronoi,labels
 const params = new URLSearchParams(window.location.search);
 if (params.has('algorithm')) $('algorithm').value = params.get('algorithm');
 if (params.has('medial-axis')) $('medial-axis').value = params.get('medial-axis');
 if (params.get('no-peeling') === '1') $('peeling').checked = false;
 if (params.get('smooth') === '1') $('smooth').checked = true;
+if (params.get('no-thinning') === '1') $('thinning').checked = false;
 for (const layer of (params.get('show') || '').split(',').filter(Boolean)) {
   const box = $(`layer-${layer}`);
   if (box) box.checked = true;

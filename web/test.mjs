@@ -314,6 +314,7 @@ try {
     ['bean', 'examples/data/bean.txt', '&algorithm=crust', ['--algorithm', 'crust']],
     ['bean', 'examples/data/bean.txt', '&algorithm=nn-crust', ['--algorithm', 'nn-crust']],
     ['ventilator', 'tests/data/hnn-crust-sgp16/ventilator.p2d', '&no-peeling=1&medial-axis=none', ['--no-peeling', '--medial-axis', 'none']],
+    ['apple', 'examples/data/apple_2percent_noise.txt', '&no-thinning=1', ['--no-thinning']],
   ];
   for (const [name, file, query, args] of variants) {
     await check(`example ${name} with ${args.join(' ')}: the page's JSON is the command line's`, async () => {

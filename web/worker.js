@@ -43,7 +43,7 @@ function handle(request) {
       let lap = start;
       const outcome = reconstruct(
         coords, choices.algorithm, choices.peeling, choices.medialAxis, choices.smooth,
-        choices.voronoi,
+        choices.thinning, choices.voronoi,
         (phase) => {
           const now = performance.now();
           reply({ type: 'progress', id, phase, ms: now - lap });

@@ -40,6 +40,8 @@ pub struct Choices {
     pub medial_axis: String,
     /// `--smooth`.
     pub smoothing: bool,
+    /// Thinning of dense noisy bands (WDM; off is `--no-thinning`).
+    pub thinning: bool,
 }
 
 /// The library's options for `choices`, set as the command line sets them from the same
@@ -74,6 +76,9 @@ pub fn options(choices: &Choices) -> Result<Options, String> {
         .with_smoothing(choices.smoothing);
     if algorithm == Algorithm::Wdm {
         options = options.with_peeling(choices.peeling).with_medial_axis(mode);
+        if !choices.thinning {
+            options = options.with_thinning(false);
+        }
     }
     options.check().map_err(|conflict| conflict.reason())?;
     Ok(options)
@@ -120,7 +125,7 @@ pub fn summary(rec: &Reconstruction) -> String {
         ),
     };
     format!(
-        "{}, {}, {}, {}. {} by {}: {}, {}, {}{}.",
+        "{}, {}, {}, {}. {} by {}: {}, {}, {}{}{}.",
         counted(closed, "closed curve", "closed curves"),
         counted(rec.curves().len() - closed, "open chain", "open chains"),
         counted(
@@ -135,6 +140,10 @@ pub fn summary(rec: &Reconstruction) -> String {
         axis,
         counted(rec.passes(), "pass", "passes"),
         if rec.smoothed() { ", smoothed" } else { "" },
+        rec.thinned().map_or(String::new(), |n| format!(
+            ", a dense band thinned to {}",
+            counted(n, "representative", "representatives")
+        )),
     )
 }
 
@@ -282,6 +291,7 @@ mod tests {
             peeling: true,
             medial_axis: "pruned".to_string(),
             smoothing: false,
+            thinning: true,
         }
     }
 
@@ -321,13 +331,15 @@ mod tests {
             peeling: false,
             medial_axis: "raw".to_string(),
             smoothing: true,
+            thinning: false,
             ..choices("wdm")
         })
         .unwrap();
         let cli = Options::new()
             .with_peeling(false)
             .with_medial_axis(MedialAxisMode::Raw)
-            .with_smoothing(true);
+            .with_smoothing(true)
+            .with_thinning(false);
         assert_eq!(wdm, cli.with_peeling(false));
         // The baselines take no WDM setting, whatever the controls say.
         let crust = options(&choices("crust")).unwrap();

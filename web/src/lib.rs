@@ -30,12 +30,14 @@ pub fn parse_points(name: &str, bytes: &[u8]) -> Result<Vec<f64>, String> {
 /// # Errors
 /// An unknown choice, or the engine's error about the points.
 #[wasm_bindgen]
+#[allow(clippy::too_many_arguments)] // the page's controls, one argument each
 pub fn reconstruct(
     coords: &[f64],
     algorithm: &str,
     peeling: bool,
     medial_axis: &str,
     smoothing: bool,
+    thinning: bool,
     with_voronoi: bool,
     on_phase: &js_sys::Function,
 ) -> Result<Outcome, String> {
@@ -44,6 +46,7 @@ pub fn reconstruct(
         peeling,
         medial_axis: medial_axis.to_string(),
         smoothing,
+        thinning,
     };
     let options = engine::options(&choices)?;
     let points: Vec<[f64; 2]> = coords.chunks_exact(2).map(|p| [p[0], p[1]]).collect();

@@ -1072,7 +1072,24 @@ pub fn check_default(points: &[[f64; 2]], rec: &Reconstruction) -> Check {
         rec.unassigned(),
         rec.untouched_points()
     );
-    check_plane_drawing(points, rec.edges())?;
+    if rec.thinned().is_some() {
+        // A thinned band is drawn through its representatives, whose edges are Delaunay
+        // edges of the representatives alone: they cross nothing and pass through no curve
+        // point, but may pass through a point the thinning left out (a lattice's).
+        let mut on_curve: Vec<u32> = rec.edges().iter().flatten().copied().collect();
+        on_curve.sort_unstable();
+        on_curve.dedup();
+        let sub: Vec<[f64; 2]> = on_curve.iter().map(|&p| points[p as usize]).collect();
+        let index = |p: u32| on_curve.binary_search(&p).expect("a curve point") as u32;
+        let edges: Vec<[u32; 2]> = rec
+            .edges()
+            .iter()
+            .map(|&[a, b]| [index(a), index(b)])
+            .collect();
+        check_plane_drawing(&sub, &edges)?;
+    } else {
+        check_plane_drawing(points, rec.edges())?;
+    }
     for warning in rec.warnings() {
         ensure!(
             warning.points.iter().all(|&p| (p as usize) < points.len()),

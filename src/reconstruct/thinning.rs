@@ -255,6 +255,27 @@ impl Hasher for CellHasher {
 
 type Grid = HashMap<Cell, Vec<u32>, BuildHasherDefault<CellHasher>>;
 
+/// The cell `c` and its eight neighbours, each once. Far out (a radius tiny against the
+/// coordinates) the cell indices saturate at the ends of `i64`: neighbouring cells may then
+/// coincide, and a point's disk still lies within these cells, since saturation keeps
+/// indices that differ by at most one within one.
+fn neighbourhood(c: Cell) -> impl Iterator<Item = Cell> {
+    let mut cells = [(0i64, 0i64); 9];
+    for (k, slot) in cells.iter_mut().enumerate() {
+        let (i, j) = (k as i64 / 3 - 1, k as i64 % 3 - 1);
+        *slot = (c.0.saturating_add(i), c.1.saturating_add(j));
+    }
+    cells.sort_unstable();
+    let mut count = 1;
+    for k in 1..9 {
+        if cells[k] != cells[count - 1] {
+            cells[count] = cells[k];
+            count += 1;
+        }
+    }
+    cells.into_iter().take(count)
+}
+
 /// The representatives of the points covered by disks of `radius` (local indices,
 /// ascending).
 ///
@@ -274,7 +295,7 @@ fn cover(points: &[[f64; 2]], radius: f64) -> Vec<u32> {
             (p[1] / radius).floor() as i64,
         )
     };
-    let around = |c: Cell| (-1..=1).flat_map(move |i| (-1..=1).map(move |j| (c.0 + i, c.1 + j)));
+    let around = neighbourhood;
     let within = |grid: &Grid, x: [f64; 2], r: f64| -> bool {
         around(cell(x)).any(|k| {
             grid.get(&k)
@@ -397,5 +418,31 @@ mod tests {
         let mut u = uniforms(11);
         let scatter: Vec<[f64; 2]> = (0..3000).map(|_| [u(), u()]).collect();
         assert!(representatives(&triangulate(&scatter).unwrap()).is_none());
+    }
+
+    #[test]
+    fn cells_far_out_saturate_and_are_listed_once() {
+        let corner: Vec<Cell> = neighbourhood((i64::MAX, i64::MIN)).collect();
+        assert_eq!(
+            corner,
+            [
+                (i64::MAX - 1, i64::MIN),
+                (i64::MAX - 1, i64::MIN + 1),
+                (i64::MAX, i64::MIN),
+                (i64::MAX, i64::MIN + 1)
+            ]
+        );
+        assert_eq!(neighbourhood((0, 0)).count(), 9);
+        // Two tight clusters 2e300 apart, a radius 1e-20 of their coordinates: every cell
+        // index saturates, and each cluster is still one disk with one representative.
+        let points: Vec<[f64; 2]> = (0..40)
+            .map(|k| {
+                let spot = if k < 20 { 1e300 } else { 3e300 };
+                [spot + (k % 20) as f64 * 1e278, spot]
+            })
+            .collect();
+        let reps = cover(&points, 1e280);
+        assert_eq!(reps.len(), 2, "{reps:?}");
+        assert!(reps[0] < 20 && reps[1] >= 20);
     }
 }

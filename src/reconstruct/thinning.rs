@@ -359,26 +359,14 @@ fn cover(points: &[[f64; 2]], radius: f64) -> Vec<u32> {
 mod tests {
     use super::*;
     use crate::delaunay::triangulate;
-
-    /// A deterministic stream of uniforms in [0, 1).
-    fn uniforms(seed: u64) -> impl FnMut() -> f64 {
-        let mut s = seed;
-        move || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
+    use wdm_crust_testkit::Rng;
 
     fn band(n: usize, sigma: f64, seed: u64) -> Vec<[f64; 2]> {
-        let mut u = uniforms(seed);
+        let mut rng = Rng::new(seed);
         (0..n)
             .map(|_| {
-                let t = std::f64::consts::TAU * u();
-                // Box–Muller: a Gaussian offset along the radius.
-                let g = (-2.0 * (1.0 - u()).ln()).sqrt() * (std::f64::consts::TAU * u()).cos();
-                let r = 1.0 + sigma * g;
+                let t = std::f64::consts::TAU * rng.f64();
+                let r = 1.0 + sigma * rng.normal();
                 [r * t.cos(), r * t.sin()]
             })
             .collect()
@@ -415,8 +403,8 @@ mod tests {
 
     #[test]
     fn a_uniform_scatter_is_no_band() {
-        let mut u = uniforms(11);
-        let scatter: Vec<[f64; 2]> = (0..3000).map(|_| [u(), u()]).collect();
+        let mut rng = Rng::new(11);
+        let scatter: Vec<[f64; 2]> = (0..3000).map(|_| [rng.f64(), rng.f64()]).collect();
         assert!(representatives(&triangulate(&scatter).unwrap()).is_none());
     }
 

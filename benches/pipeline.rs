@@ -1,13 +1,14 @@
-//! Phases of the reconstruction pipeline on curve samples, the reconstruction of one input at
-//! three exact power-of-two scales, and the exact predicates.
+//! Phases of the reconstruction pipeline on curve samples, the fitted (`--smooth`) output on
+//! clean samples and on dense noisy bands, the reconstruction of one input at three exact
+//! power-of-two scales, and the exact predicates.
 //!
-//! `cargo bench --bench pipeline` (filter with e.g. `-- pipeline/`, `-- scaled/` or
-//! `-- predicates/`).
+//! `cargo bench --bench pipeline` (filter with e.g. `-- pipeline/`, `-- fitted/`, `-- scaled/`
+//! or `-- predicates/`).
 
 mod common;
 
 use common::baselines::{incircle_unguarded, orient_unguarded, robust_incircle, robust_orient};
-use common::{curve_points, sizes, Rng};
+use common::{band_points, curve_points, sizes, Rng};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use wdm_crust::predicates::{
     circumcenter, circumcenter_exact, incircle, incircle_added_slack, orient2d,
@@ -66,6 +67,41 @@ fn bench_phases(c: &mut Criterion) {
                 criterion::BatchSize::LargeInput,
             )
         });
+    }
+    group.finish();
+}
+
+/// What the fitted output costs, at 10^5 and 10^6 points: the default reconstruction and the
+/// same with smoothing, on the clean curve sample of the phases above and on a dense noisy band
+/// around the same curve (σ = 1 % of the diagonal: thinned to representatives first), each
+/// beside its own triangulation so that the ratios read off one run.
+fn bench_fitted(c: &mut Criterion) {
+    let mut group = c.benchmark_group("fitted");
+    group.sample_size(10);
+    let smoothed = Options::new().with_smoothing(true);
+    for n in [100_000, 1_000_000] {
+        group.throughput(Throughput::Elements(n as u64));
+        let inputs = [
+            ("curve", curve_points(n, &mut Rng::new(7))),
+            ("band", band_points(n, 0.01, &mut Rng::new(7))),
+        ];
+        for (name, points) in &inputs {
+            group.bench_with_input(
+                BenchmarkId::new(format!("{name}/triangulate"), n),
+                points,
+                |b, p| b.iter(|| wdm_crust::triangulate(p).expect("valid points")),
+            );
+            group.bench_with_input(
+                BenchmarkId::new(format!("{name}/reconstruct"), n),
+                points,
+                |b, p| b.iter(|| wdm_crust::reconstruct(p).expect("valid points")),
+            );
+            group.bench_with_input(
+                BenchmarkId::new(format!("{name}/reconstruct_smoothed"), n),
+                points,
+                |b, p| b.iter(|| reconstruct_with(p, &smoothed).expect("valid points")),
+            );
+        }
     }
     group.finish();
 }
@@ -268,5 +304,11 @@ fn thin_triangles(rng: &mut Rng, n: usize) -> Vec<[[f64; 2]; 3]> {
         .collect()
 }
 
-criterion_group!(benches, bench_phases, bench_scales, bench_predicates);
+criterion_group!(
+    benches,
+    bench_phases,
+    bench_fitted,
+    bench_scales,
+    bench_predicates
+);
 criterion_main!(benches);

@@ -117,6 +117,26 @@ pub fn curve_points(n: usize, rng: &mut Rng) -> Vec<[f64; 2]> {
     pts
 }
 
+/// `n` points of a dense noisy band around the same star: evenly spread along it, Gaussian
+/// noise of `sigma` times the curve's bounding-box diagonal on each coordinate (a contour scan
+/// or a traced raster: the band is many sample spacings wide), shuffled.
+pub fn band_points(n: usize, sigma: f64, rng: &mut Rng) -> Vec<[f64; 2]> {
+    // The star spans [-1.3, 1.3] × [-0.91, 0.91]: diagonal about 3.17.
+    let noise = sigma * 3.17;
+    let mut pts: Vec<[f64; 2]> = (0..n)
+        .map(|_| {
+            let t = TAU * rng.uniform();
+            let r = 1.0 + 0.3 * (5.0 * t).cos();
+            [
+                r * t.cos() + noise * rng.normal(),
+                0.7 * r * t.sin() + noise * rng.normal(),
+            ]
+        })
+        .collect();
+    rng.shuffle(&mut pts);
+    pts
+}
+
 /// 10^3 … 10^6, and 10^7 when `WDM_BENCH_HUGE` is set (minutes per run).
 pub fn sizes() -> Vec<usize> {
     let mut sizes = vec![1_000, 10_000, 100_000, 1_000_000];

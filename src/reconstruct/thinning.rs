@@ -26,9 +26,8 @@
 //! leaves this module, and the exact engine reconstructs them as given.
 
 use std::collections::{HashMap, HashSet};
-use std::hash::{BuildHasherDefault, Hasher};
 
-use super::delaunay_graph::{Graph, Waiting};
+use super::delaunay_graph::{FastHash, Graph, Waiting};
 use super::lengths::distance;
 use crate::delaunay::Triangulation;
 use crate::parallel;
@@ -151,7 +150,7 @@ struct Turn {
 /// is.
 fn turn(tri: &Triangulation, graph: &Graph, p: u32) -> Option<Turn> {
     let o = tri.points[p as usize];
-    let mut seen: HashSet<u32, BuildHasherDefault<CellHasher>> = HashSet::default();
+    let mut seen: HashSet<u32, FastHash> = HashSet::default();
     seen.insert(p);
     let mut waiting = std::collections::BinaryHeap::new();
     for &q in graph.of(p) {
@@ -224,36 +223,7 @@ impl Moments {
 /// A cell of the cover's grid.
 type Cell = (i64, i64);
 
-/// Multiply-and-rotate hashing of grid cells and point indices: the cover looks up nine
-/// cells per point, the probes mark thousands of points, and the keys are no attacker's.
-#[derive(Default)]
-struct CellHasher(u64);
-
-impl Hasher for CellHasher {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.write_u64(u64::from(b));
-        }
-    }
-
-    fn write_u64(&mut self, v: u64) {
-        self.0 = (self.0.rotate_left(26) ^ v).wrapping_mul(0x9e37_79b9_7f4a_7c15);
-    }
-
-    fn write_i64(&mut self, v: i64) {
-        self.write_u64(v as u64);
-    }
-
-    fn write_u32(&mut self, v: u32) {
-        self.write_u64(u64::from(v));
-    }
-}
-
-type Grid = HashMap<Cell, Vec<u32>, BuildHasherDefault<CellHasher>>;
+type Grid = HashMap<Cell, Vec<u32>, FastHash>;
 
 /// The cell `c` and its eight neighbours, each once. Far out (a radius tiny against the
 /// coordinates) the cell indices saturate at the ends of `i64`: neighbouring cells may then

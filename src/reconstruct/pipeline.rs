@@ -102,7 +102,8 @@ pub enum Phase {
 }
 
 impl Phase {
-    /// Lower-case name, as printed by `--timings`.
+    /// The phase's lower-case name (`"triangulate"`, `"medial-axis"`, ...), also its
+    /// [`Display`](std::fmt::Display): what timing and progress reports print.
     pub fn name(self) -> &'static str {
         match self {
             Phase::Triangulate => "triangulate",
@@ -116,6 +117,12 @@ impl Phase {
             Phase::Smooth => "smooth",
             Phase::Thin => "thin",
         }
+    }
+}
+
+impl std::fmt::Display for Phase {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
     }
 }
 

@@ -1,6 +1,10 @@
-//! The command line: one module per subcommand plus the shared pieces (input, output,
-//! errors, timings). A new subcommand is a new module with an `Args` struct and a `run`
-//! function, and one more variant of [`Command`].
+//! The `wdm-crust` command line: argument parsing and dispatch here, the work in the
+//! `wdm_crust` library (its file formats are `wdm_crust::io`). See `wdm-crust --help`.
+//!
+//! One module per subcommand plus the shared pieces (input, output, errors, timings). A new
+//! subcommand is a new module with an `Args` struct and a `run` function, and one more
+//! variant of [`Command`].
+#![forbid(unsafe_code)]
 
 mod error;
 mod input;
@@ -18,7 +22,7 @@ use std::process::ExitCode;
 use clap::error::ErrorKind;
 use clap::{Parser, Subcommand};
 
-pub use error::CliError;
+use error::CliError;
 
 /// Shown after the top-level help.
 const FORMATS_HELP: &str = "\
@@ -94,7 +98,7 @@ impl Command {
 
 /// Parses the command line, runs the subcommand and turns the outcome into an exit code,
 /// with at most one line on standard error for a failure.
-pub fn run() -> ExitCode {
+fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => return clap_exit(&e),

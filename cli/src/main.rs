@@ -6,6 +6,7 @@
 //! variant of [`Command`].
 #![forbid(unsafe_code)]
 
+mod common;
 mod error;
 mod input;
 mod output;
@@ -80,18 +81,18 @@ impl Command {
     /// The subcommand's `--quiet`.
     fn quiet(&self) -> bool {
         match self {
-            Command::Triangulate(args) => args.quiet,
-            Command::Voronoi(args) => args.quiet,
-            Command::Reconstruct(args) => args.quiet,
+            Command::Triangulate(args) => args.common.quiet,
+            Command::Voronoi(args) => args.common.quiet,
+            Command::Reconstruct(args) => args.common.quiet,
         }
     }
 
     /// The subcommand's `--threads`.
     fn threads(&self) -> threads::ThreadsArg {
         match self {
-            Command::Triangulate(args) => args.threads,
-            Command::Voronoi(args) => args.threads,
-            Command::Reconstruct(args) => args.threads,
+            Command::Triangulate(args) => args.common.threads,
+            Command::Voronoi(args) => args.common.threads,
+            Command::Reconstruct(args) => args.common.threads,
         }
     }
 }

@@ -51,33 +51,12 @@ use super::bits::Bits;
 use super::curves::Adjacency;
 use super::proximity::closer;
 use super::spikes::drop_woven_spikes;
+use super::thresholds::detours::{
+    MAX_ANCHORS, MAX_DETOUR_POINTS, MIN_UNASSIGNED_FOR_SPIKES, ROUNDS,
+};
 use crate::kernel::metric::{dot_sign, length_order};
 use crate::kernel::Sign;
 use crate::voronoi::Voronoi;
-
-/// The most inner points of a detour a swap removes. Measured on the outlier rows of
-/// `examples/quality.rs` (recall at 40 / 70 % outliers): 8, 12, 16, 24 inner points gave
-/// 89.3 / 80.5, 90.2 / 78.6, 90.2 / 80.6, 89.8 / 77.2 %; longer bounds let true stretches
-/// go.
-const MAX_DETOUR_POINTS: usize = 16;
-
-/// The most points on a curve one group may touch for its pairs to be tried (a bound on the
-/// work: a group of noise leftovers along a whole curve touches many). Outliers inside the
-/// shape link several stretches into one group: 6 instead of 12 cost 4 points of recall at
-/// 70 % outliers; 64 gave the same rows as 24.
-const MAX_ANCHORS: usize = 24;
-
-/// The most rounds of steps 1–2: one reached 85.5 / 73.6 % recall at 40 / 70 % outliers,
-/// three 90.2 / 80.6 %, five 90.2 / 80.4 %.
-const ROUNDS: usize = 3;
-
-/// The least share of unassigned points for step 4 (spikes) to run: a sample with fewer
-/// points off the curves shows no outliers to look for (as one with none: then the repair
-/// does not run at all). It bounds the cost on large, nearly clean inputs (the benches'
-/// noisy curve leaves 3 of 10^6 points off, and its noise of a tenth of a spacing has tens
-/// of turns sharp enough to pass for spikes); 0, 0.5 % and 1 % gave the same rows of
-/// `examples/quality.rs`.
-const MIN_UNASSIGNED_FOR_SPIKES: f64 = 0.01;
 
 /// What the repair changes: edges to add and edges to remove, each sorted.
 pub(super) struct Repair {

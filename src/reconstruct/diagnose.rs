@@ -26,27 +26,10 @@ use std::fmt;
 use super::lengths::distance;
 use super::proximity::closer;
 use super::result::Reconstruction;
+use super::thresholds::warnings::{CLOSE_CURVE_STEPS, GAP_EDGE_DOUBLINGS, LONG_EDGE_DOUBLINGS};
 use crate::delaunay::{prev_in_triangle, NO_TWIN};
 use crate::kernel::metric::{length_order, scaled_length_order};
 use crate::predicates::{incircle, CirclePosition};
-
-/// An edge is *long* when it is more than `2^LONG_EDGE_DOUBLINGS` times each of the (up to
-/// four) curve edges within two steps of it. The open-curve stage already opens a loop at such a chord, and its
-/// chains never take an edge that long; what remains is a chord of the baselines, or of a
-/// loop whose neighbours are as sparse as the gap.
-pub const LONG_EDGE_DOUBLINGS: u32 = 3;
-
-/// A closed loop whose longest edge is more than `2^GAP_EDGE_DOUBLINGS` times its next
-/// longest (and not long already) may close across the gap of an open curve. Noise and
-/// uneven sampling vary the edges of a right loop, but its two longest edges stay within
-/// a small factor of each other; a chord joining the ends of an open curve is alone.
-pub const GAP_EDGE_DOUBLINGS: u32 = 2;
-
-/// Two curve points closer than their curve edges are *too close* when they lie on
-/// different curves or more than this many steps apart along one curve. A sharp corner of
-/// angle θ brings the points of its two sides within one step of each other up to about
-/// `1 / sin(θ/2)` steps apart along the curve (11 at 10°, 23 at 5°): well inside the bound.
-pub const CLOSE_CURVE_STEPS: usize = 32;
 
 /// What a warning is about; [`name`](Self::name) is its stable code.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]

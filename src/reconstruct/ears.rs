@@ -39,7 +39,8 @@
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
-use super::peel::{edges_near, lies_apart, median_length, MIN_LOOP_POINTS};
+use super::peel::{edges_near, lies_apart, median_length};
+use super::thresholds::peel::MIN_LOOP_POINTS;
 use super::wdm::Label;
 use crate::delaunay::NO_TWIN;
 use crate::predicates::compare_circumradius;

@@ -41,6 +41,7 @@ mod segment_walk;
 mod smooth;
 mod spikes;
 mod thinning;
+mod thresholds;
 pub mod wdm;
 
 pub use curves::Curve;

@@ -10,51 +10,13 @@ use super::lengths::distance;
 use super::medial_axis::parity_from_infinity;
 use super::options::Options;
 use super::segment_walk::crosses_a_curve;
+use super::thresholds::peel::{
+    APART, LINK, MAX_MEDIAN_TURN, MIN_CHAIN_POINTS, MIN_GROUP, MIN_LOOP_POINTS, NEAR_CURVE,
+    SPARSER_LOOP,
+};
 use super::wdm;
 use crate::delaunay::triangulate;
 use crate::voronoi::Voronoi;
-
-/// How close to a curve already found a left-over point may lie and still be taken for a
-/// sample of another curve: its distance to a curve edge, in units of that edge's length.
-/// The leftovers of a noise band sit within about the noise amplitude of the curve, which
-/// is of the order of the sample spacing, while a curve separate from it (a hole) lies at
-/// least about 1/ε sample spacings away for an ε-sample (ε < 1): see [`peel`].
-const NEAR_CURVE: f64 = 1.5;
-
-/// How much sparser than the curves found before it a later pass's loop may be sampled: the
-/// median of its edge lengths, in units of the median over the curves found before. A
-/// nested curve in a scan is sampled like the rest of it; a loop drawn through scattered
-/// outliers inside a shape has edges of the outliers' spacing, many sample spacings long.
-const SPARSER_LOOP: f64 = 3.0;
-
-/// How far apart two left-over points may lie and still be linked into one group
-/// ([`isolated_leftovers`]), in units of the longer of their nearest-neighbour distances:
-/// [`SPARSER_LOOP`], the sparsest sampling a kept loop may have relative to its
-/// surroundings.
-const LINK: f64 = SPARSER_LOOP;
-
-/// The fewest left-over points of a group that takes part in a later pass
-/// ([`isolated_leftovers`]): three, the fewest that bound anything.
-const MIN_GROUP: usize = 3;
-
-/// The largest median turning angle of a later pass's curve: 20°, about the turn per
-/// sample of an ε-sample with ε = 0.35 (see [`is_a_curve`]).
-const MAX_MEDIAN_TURN: f64 = 20.0 * std::f64::consts::PI / 180.0;
-
-/// The fewest points of a closed loop a later pass keeps: a closed curve turns by 2π, and an
-/// ε-sample of it by about ε per sample, so a loop of fewer than 7 points is no ε-sample for
-/// any ε < 1 (see [`is_a_curve`]).
-pub(super) const MIN_LOOP_POINTS: usize = 7;
-
-/// How far, in its own sample spacings, a loop closed by a chord ([`close_by_chord`]) must
-/// keep from the curves found before: two curves of an ε-sample (ε < 1) lie at least twice
-/// the local feature size apart, and a sample spacing is at most ε times it, so a loop
-/// closer than 2 of its spacings to an earlier curve is no separate curve of the sample
-/// (see [`lies_apart`]).
-const APART: f64 = 2.0;
-
-/// The fewest points of an open chain a later pass keeps (see [`is_a_curve`]).
-const MIN_CHAIN_POINTS: usize = 8;
 
 /// Reruns WDM_CRUST on the points no curve has taken, to find nested curves (holes),
 /// until a pass finds no new closed curve, fewer than three points remain, or the next pass

@@ -170,15 +170,14 @@
 mod cavity;
 mod first_use;
 mod noise;
-mod parity;
 mod pruning;
 
 use self::cavity::Cavity;
-pub(super) use self::parity::parity_from_infinity;
 use super::bits::{Bits, RankedBits};
 use super::curves::Curve;
 use super::frame::Frame;
 use super::lengths::distance;
+use super::parity::parity_from_infinity;
 use super::result::MedialAxis;
 use super::segment_walk::faces_across;
 use super::thresholds::medial_axis::{

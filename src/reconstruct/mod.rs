@@ -17,33 +17,30 @@
 //! is returned), `diagnose` (the warnings on a result);
 //! [`crust`] and [`nn_crust`] are the classical baselines on the same exact engine.
 
+mod baselines;
 mod bits;
-mod corridors;
-pub mod crust;
 mod curves;
 mod delaunay_graph;
-mod detours;
 mod diagnose;
-mod ears;
 mod extract;
 mod frame;
 mod lengths;
 mod medial_axis;
-pub mod nn_crust;
 mod open_curves;
 mod options;
-mod peel;
+mod parity;
 mod pipeline;
 pub mod polygons;
 mod proximity;
+mod repairs;
 mod result;
 mod segment_walk;
 mod smooth;
-mod spikes;
 mod thinning;
 mod thresholds;
 pub mod wdm;
 
+pub use baselines::{crust, nn_crust};
 pub use curves::Curve;
 pub use diagnose::{Warning, WarningCode};
 pub use extract::EdgeClass;

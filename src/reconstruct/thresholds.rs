@@ -20,7 +20,7 @@ pub(crate) mod peel {
     /// sample spacings away for an ε-sample (ε < 1): see `peel::peel`.
     ///
     /// Measurement: `NEAR_CURVE` 2: animal drawings recall 88.4 against 89.6 %, multi-curve
-    /// drawings 92.0 against 92.5 %. Used by `reconstruct/peel.rs`.
+    /// drawings 92.0 against 92.5 %. Used by `reconstruct/repairs/peel.rs`.
     pub(crate) const NEAR_CURVE: f64 = 1.5;
 
     /// How much sparser than the curves found before it a later pass's loop may be sampled: the
@@ -29,7 +29,7 @@ pub(crate) mod peel {
     /// inside a shape has edges of the outliers' spacing, many sample spacings long.
     ///
     /// Measurement: 2×: drawings recall 88.7 %, a real scan loses a loop. Used by
-    /// `reconstruct/peel.rs`.
+    /// `reconstruct/repairs/peel.rs`.
     pub(crate) const SPARSER_LOOP: f64 = 3.0;
 
     /// How far apart two left-over points may lie and still be linked into one group
@@ -38,7 +38,7 @@ pub(crate) mod peel {
     /// loop may have relative to its surroundings.
     ///
     /// Measurement: by the shorter distance instead: with a hole 39 / 45 / 57 right of 100 (noise
-    /// 0.5 / 0.7 / 1). Used by `reconstruct/peel.rs`.
+    /// 0.5 / 0.7 / 1). Used by `reconstruct/repairs/peel.rs`.
     pub(crate) const LINK: f64 = SPARSER_LOOP;
 
     /// The fewest left-over points of a group that takes part in a later pass
@@ -46,13 +46,13 @@ pub(crate) mod peel {
     /// that bound anything.
     ///
     /// Measurement: 7: survey noise 0.5 with a hole right 100 → 90 %. Used by
-    /// `reconstruct/peel.rs`.
+    /// `reconstruct/repairs/peel.rs`.
     pub(crate) const MIN_GROUP: usize = 3;
 
     /// The largest median turning angle of a later pass's curve: 20°, about the turn per sample of
     /// an ε-sample with ε = 0.35 (see `peel::is_a_curve`).
     ///
-    /// Measurement: no alternative recorded. Used by `reconstruct/peel.rs`.
+    /// Measurement: no alternative recorded. Used by `reconstruct/repairs/peel.rs`.
     pub(crate) const MAX_MEDIAN_TURN: f64 = 20.0 * std::f64::consts::PI / 180.0;
 
     /// The fewest points of a closed loop a later pass keeps: a closed curve turns by 2π, and an
@@ -60,7 +60,7 @@ pub(crate) mod peel {
     /// any ε < 1 (see `peel::is_a_curve`).
     ///
     /// Measurement: 3: one curve at noise 1 right 90 against 95 %; 10–70 % outliers 93 / 87 / 70 /
-    /// 63 against 97 / 93 / 83 / 80 %. Used by `reconstruct/peel.rs` and `reconstruct/ears.rs`.
+    /// 63 against 97 / 93 / 83 / 80 %. Used by `reconstruct/repairs/peel.rs` and `reconstruct/repairs/ears.rs`.
     pub(crate) const MIN_LOOP_POINTS: usize = 7;
 
     /// How far, in its own sample spacings, a loop closed by a chord
@@ -70,13 +70,13 @@ pub(crate) mod peel {
     /// to an earlier curve is no separate curve of the sample (see
     /// `peel::lies_apart`).
     ///
-    /// Measurement: without it: 70 % outliers right 63 against 80 %. Used by `reconstruct/peel.rs`.
+    /// Measurement: without it: 70 % outliers right 63 against 80 %. Used by `reconstruct/repairs/peel.rs`.
     pub(crate) const APART: f64 = 2.0;
 
     /// The fewest points of an open chain a later pass keeps (see
     /// `peel::is_a_curve`).
     ///
-    /// Measurement: no alternative recorded. Used by `reconstruct/peel.rs`.
+    /// Measurement: no alternative recorded. Used by `reconstruct/repairs/peel.rs`.
     pub(crate) const MIN_CHAIN_POINTS: usize = 8;
 }
 
@@ -85,14 +85,14 @@ pub(crate) mod corridors {
     /// A crust edge this many times the median crust edge may be a corridor wall.
     ///
     /// Measurement: walls on the failing trials 4.5–25 median edges; rare on clean samples. Used by
-    /// `reconstruct/corridors.rs`.
+    /// `reconstruct/repairs/corridors.rs`.
     pub(crate) const CHORD: f64 = 4.0;
 
     /// A wall is at least this many times longer than the width of the way the water came by.
     ///
     /// Measurement: walls 2.9–12× the width on the failing trials; on clean samples a long crust
     /// edge's outer vertex is reached by a way at least half as wide. Used by
-    /// `reconstruct/corridors.rs`.
+    /// `reconstruct/repairs/corridors.rs`.
     pub(crate) const NARROW: f64 = 2.0;
 }
 
@@ -102,7 +102,7 @@ pub(crate) mod detours {
     /// `examples/quality.rs` (recall at 40 / 70 % outliers): 8, 12, 16, 24 inner points gave 89.3 /
     /// 80.5, 90.2 / 78.6, 90.2 / 80.6, 89.8 / 77.2 %; longer bounds let true stretches go.
     ///
-    /// Used by `reconstruct/detours.rs`.
+    /// Used by `reconstruct/repairs/detours.rs`.
     pub(crate) const MAX_DETOUR_POINTS: usize = 16;
 
     /// The most points on a curve one group may touch for its pairs to be tried (a bound on the
@@ -110,13 +110,13 @@ pub(crate) mod detours {
     /// shape link several stretches into one group: 6 instead of 12 cost 4 points of recall at 70 %
     /// outliers; 64 gave the same rows as 24.
     ///
-    /// Used by `reconstruct/detours.rs`.
+    /// Used by `reconstruct/repairs/detours.rs`.
     pub(crate) const MAX_ANCHORS: usize = 24;
 
     /// The most rounds of steps 1–2: one reached 85.5 / 73.6 % recall at 40 / 70 % outliers, three
     /// 90.2 / 80.6 %, five 90.2 / 80.4 %.
     ///
-    /// Used by `reconstruct/detours.rs`.
+    /// Used by `reconstruct/repairs/detours.rs`.
     pub(crate) const ROUNDS: usize = 3;
 
     /// The least share of unassigned points for step 4 (spikes) to run: a sample with fewer points
@@ -125,7 +125,7 @@ pub(crate) mod detours {
     /// of 10^6 points off, and its noise of a tenth of a spacing has tens of turns sharp enough to
     /// pass for spikes); 0, 0.5 % and 1 % gave the same rows of `examples/quality.rs`.
     ///
-    /// Used by `reconstruct/detours.rs`.
+    /// Used by `reconstruct/repairs/detours.rs`.
     pub(crate) const MIN_UNASSIGNED_FOR_SPIKES: f64 = 0.01;
 }
 
@@ -135,31 +135,31 @@ pub(crate) mod spikes {
     /// recall at 10 / 20 / 40 / 70 % outliers: 60° 98.0 / 95.7 / 92.3 / 82.8; 90° (an exact
     /// dot-product sign for one point) 97.7 / 95.2 / 91.2 / 81.7 without pairs.
     ///
-    /// Used by `reconstruct/spikes.rs`.
+    /// Used by `reconstruct/repairs/spikes.rs`.
     pub(crate) const MIN_SPIKE_TURN: f64 = std::f64::consts::FRAC_PI_3;
 
     /// How many times a spike must turn more than each point of the run around it, without it. 3
     /// instead of 4 gained 0.2–0.5 points of recall on the outlier rows and lost samples of the
     /// survey's noisy curves (noise 0.3 spacing: "on" 96.9 → 96.7 %).
     ///
-    /// Used by `reconstruct/spikes.rs`.
+    /// Used by `reconstruct/repairs/spikes.rs`.
     pub(crate) const LOCAL_CONTRAST: f64 = 4.0;
 
     /// How many times a spike must turn more than the median point of the curves. 3 instead of 4:
     /// survey noise 0.3 spacing "on" 96.9 → 96.8 %, the real `drill.txt` 96.5 → 96.0 %.
     ///
-    /// Used by `reconstruct/spikes.rs`.
+    /// Used by `reconstruct/repairs/spikes.rs`.
     pub(crate) const GLOBAL_CONTRAST: f64 = 4.0;
 
     /// Both contrasts are this much higher for a spike of two points (1: survey noise 0.3 spacing
     /// "on" 96.9 → 96.5 %, the real `vase.txt` 98.1 → 97.2 %).
     ///
-    /// Used by `reconstruct/spikes.rs`.
+    /// Used by `reconstruct/repairs/spikes.rs`.
     pub(crate) const PAIR_FACTOR: f64 = 1.5;
 
     /// The most points whose turns estimate the median (a bound on its cost on large inputs).
     ///
-    /// Measurement: a bound on cost. Used by `reconstruct/spikes.rs`.
+    /// Measurement: a bound on cost. Used by `reconstruct/repairs/spikes.rs`.
     pub(crate) const MEDIAN_SAMPLE: usize = 8192;
 }
 

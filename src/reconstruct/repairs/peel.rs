@@ -2,20 +2,20 @@
 //! and which inner Voronoi vertices those holes take away from the medial axis. All point
 //! indices here are local to the full triangulation.
 
-use super::bits::Bits;
-use super::curves::{assemble_named, Adjacency, Curve, SomeAdjacency};
 use super::ears::{repair_ears, Ears};
-use super::extract::wdm_crust_edges;
-use super::lengths::distance;
-use super::medial_axis::parity_from_infinity;
-use super::options::Options;
-use super::segment_walk::crosses_a_curve;
-use super::thresholds::peel::{
+use crate::delaunay::triangulate;
+use crate::reconstruct::bits::Bits;
+use crate::reconstruct::curves::{assemble_named, Adjacency, Curve, SomeAdjacency};
+use crate::reconstruct::extract::wdm_crust_edges;
+use crate::reconstruct::lengths::distance;
+use crate::reconstruct::options::Options;
+use crate::reconstruct::parity::parity_from_infinity;
+use crate::reconstruct::segment_walk::crosses_a_curve;
+use crate::reconstruct::thresholds::peel::{
     APART, LINK, MAX_MEDIAN_TURN, MIN_CHAIN_POINTS, MIN_GROUP, MIN_LOOP_POINTS, NEAR_CURVE,
     SPARSER_LOOP,
 };
-use super::wdm;
-use crate::delaunay::triangulate;
+use crate::reconstruct::wdm;
 use crate::voronoi::Voronoi;
 
 /// Reruns WDM_CRUST on the points no curve has taken, to find nested curves (holes),
@@ -42,7 +42,7 @@ use crate::voronoi::Voronoi;
 /// Points excluded by these rules stay without edges: the reconstruction reports them as
 /// unassigned. On clean samples nothing changes: a hole's samples are far from the outer
 /// curve relative to the sample spacing, and its loop is all the pass finds.
-pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Options) -> Peeling {
+pub(crate) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Options) -> Peeling {
     let tri = full.triangulation();
     let points = &tri.points;
     let n = points.len();
@@ -138,7 +138,7 @@ fn first_pass_may_run(full: &Voronoi<'_>, edges: &[[u32; 2]]) -> bool {
 /// The `edges` at the Delaunay neighbours of `points`: what [`near_a_curve`] and
 /// [`lies_apart`] read of the curves around those points, without an adjacency of every
 /// edge (a pass over all points).
-pub(super) fn edges_near(full: &Voronoi<'_>, points: &[u32], edges: &[[u32; 2]]) -> SomeAdjacency {
+pub(crate) fn edges_near(full: &Voronoi<'_>, points: &[u32], edges: &[[u32; 2]]) -> SomeAdjacency {
     let mut asked = Bits::new(full.triangulation().points.len());
     for &p in points {
         for q in full.delaunay_neighbours_local(p) {
@@ -361,7 +361,7 @@ fn is_a_curve(points: &[[f64; 2]], curve: &Curve, scale: f64) -> bool {
 ///
 /// Only the earlier curves' edges at the neighbours `q` with `counts(q)` are looked at (the
 /// islets of `ears.rs` leave out their own points).
-pub(super) fn lies_apart<'a>(
+pub(crate) fn lies_apart<'a>(
     full: &Voronoi<'_>,
     earlier: impl Fn(u32) -> &'a [(u32, u32)],
     curve: &[u32],
@@ -391,7 +391,7 @@ fn turning_angle(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
 
 /// The median length of `edges` (0 for none). A rounded length: it only sets the scale of a
 /// rule's threshold, never an exact decision.
-pub(super) fn median_length(points: &[[f64; 2]], edges: &[[u32; 2]]) -> f64 {
+pub(crate) fn median_length(points: &[[f64; 2]], edges: &[[u32; 2]]) -> f64 {
     let mut lengths: Vec<f64> = edges
         .iter()
         .map(|&[a, b]| distance(points[a as usize], points[b as usize]))
@@ -443,13 +443,13 @@ fn near_a_curve<'a>(full: &Voronoi<'_>, curve: impl Fn(u32) -> &'a [(u32, u32)],
 }
 
 /// How peeling ended.
-pub(super) struct Peeling {
-    pub(super) extra_passes: usize,
-    pub(super) budget_exhausted: bool,
+pub(crate) struct Peeling {
+    pub(crate) extra_passes: usize,
+    pub(crate) budget_exhausted: bool,
 }
 
 impl Peeling {
-    pub(super) fn done(extra_passes: usize) -> Peeling {
+    pub(crate) fn done(extra_passes: usize) -> Peeling {
         Peeling {
             extra_passes,
             budget_exhausted: false,
@@ -472,7 +472,7 @@ impl Peeling {
 ///
 /// The curves (the final ones), `not_first_pass` (which tells the curves' edges the first
 /// pass did not find) and the result are in local indices.
-pub(super) fn hole_edges(
+pub(crate) fn hole_edges(
     vor: &Voronoi<'_>,
     curves: &[Curve],
     not_first_pass: impl Fn(&[u32; 2]) -> bool,
@@ -497,7 +497,7 @@ pub(super) fn hole_edges(
 /// Every Voronoi vertex: is it separated from infinity by an odd number of the given edges
 /// (searched from the rays)? Well defined only for a set of closed loops, see
 /// [`hole_edges`].
-pub(super) fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
+pub(crate) fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
     let tri = vor.triangulation();
     // Crust neighbours of every point (two for most): a lookup touches one short row
     // instead of a binary search over all edges.

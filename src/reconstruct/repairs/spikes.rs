@@ -40,16 +40,16 @@
 //! degrees of `a` and `b` (2) and takes the spike's points from 2 to 0, like a swap.
 
 use super::detours::{EditedCurves, Swap};
-use super::thresholds::spikes::{
+use crate::kernel::{orient, Sign};
+use crate::reconstruct::thresholds::spikes::{
     GLOBAL_CONTRAST, LOCAL_CONTRAST, MEDIAN_SAMPLE, MIN_SPIKE_TURN, PAIR_FACTOR,
 };
-use crate::kernel::{orient, Sign};
 use crate::voronoi::Voronoi;
 
 /// Drops every woven spike (module docs) from `curves`; how many points were dropped.
 /// `median` is the median turn of the curves, computed on first need and kept for later
 /// calls (the rounds of the repair change few points).
-pub(super) fn drop_woven_spikes(
+pub(crate) fn drop_woven_spikes(
     vor: &Voronoi<'_>,
     curves: &mut EditedCurves,
     median: &mut Option<f64>,
@@ -226,7 +226,9 @@ fn median_turn(points: &[[f64; 2]], curves: &EditedCurves) -> f64 {
 mod tests {
     use super::*;
     use crate::delaunay::triangulate;
-    use crate::reconstruct::detours::tests::{assert_repaired_alike_in_any_order, repaired};
+    use crate::reconstruct::repairs::detours::tests::{
+        assert_repaired_alike_in_any_order, repaired,
+    };
     use std::f64::consts::TAU;
 
     /// `k` points on the ellipse with half-axes 1 and `b`, counterclockwise from angle 0.

@@ -46,9 +46,9 @@
 
 mod insertion;
 
-use super::extract::chain_edges;
 use crate::delaunay::Triangulation;
 use crate::kernel::Sign;
+use crate::reconstruct::extract::chain_edges;
 
 use self::insertion::Dt;
 use crate::kernel::mixed::MixedPoints;

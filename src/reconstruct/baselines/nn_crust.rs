@@ -22,9 +22,9 @@
 //! Equal distances are broken by the coordinates of the candidates (smaller `x`, then smaller
 //! `y`), never by input index, so the result does not depend on the order of the input.
 
-use super::extract::chain_edges;
-use super::proximity::DelaunayGraph;
 use crate::delaunay::Triangulation;
+use crate::reconstruct::extract::chain_edges;
+use crate::reconstruct::proximity::DelaunayGraph;
 
 /// NN-crust edges of the distinct points of `tri`, `[i, j]` with `i < j`, sorted.
 ///
@@ -70,10 +70,10 @@ pub(crate) fn nn_crust_edges_local(tri: &Triangulation) -> Vec<[u32; 2]> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::proximity::closer;
     use super::*;
     use crate::kernel::metric::{distance_order, dot_sign};
     use crate::kernel::Sign;
+    use crate::reconstruct::proximity::closer;
     use num_rational::BigRational;
     use std::cmp::Ordering;
 

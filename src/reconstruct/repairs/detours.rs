@@ -47,27 +47,27 @@
 use std::cmp::Reverse;
 use std::collections::{BTreeMap, BTreeSet, BinaryHeap, HashMap};
 
-use super::bits::Bits;
-use super::curves::Adjacency;
-use super::proximity::closer;
 use super::spikes::drop_woven_spikes;
-use super::thresholds::detours::{
-    MAX_ANCHORS, MAX_DETOUR_POINTS, MIN_UNASSIGNED_FOR_SPIKES, ROUNDS,
-};
 use crate::kernel::metric::{dot_sign, length_order};
 use crate::kernel::Sign;
+use crate::reconstruct::bits::Bits;
+use crate::reconstruct::curves::Adjacency;
+use crate::reconstruct::proximity::closer;
+use crate::reconstruct::thresholds::detours::{
+    MAX_ANCHORS, MAX_DETOUR_POINTS, MIN_UNASSIGNED_FOR_SPIKES, ROUNDS,
+};
 use crate::voronoi::Voronoi;
 
 /// What the repair changes: edges to add and edges to remove, each sorted.
-pub(super) struct Repair {
+pub(crate) struct Repair {
     /// The reattached stretches.
-    pub(super) added: Vec<[u32; 2]>,
+    pub(crate) added: Vec<[u32; 2]>,
     /// The detours.
-    pub(super) removed: Vec<[u32; 2]>,
+    pub(crate) removed: Vec<[u32; 2]>,
 }
 
 impl Repair {
-    pub(super) fn none() -> Repair {
+    pub(crate) fn none() -> Repair {
         Repair {
             added: Vec::new(),
             removed: Vec::new(),
@@ -75,7 +75,7 @@ impl Repair {
     }
 
     /// Applies the repair to the edges it was computed on.
-    pub(super) fn apply(&self, edges: &mut Vec<[u32; 2]>) {
+    pub(crate) fn apply(&self, edges: &mut Vec<[u32; 2]>) {
         if let Some(largest) = self.removed.iter().map(|e| e[0]).max() {
             // A bit test on the smaller end first: a search of `removed` for every edge was
             // most of the time.
@@ -92,7 +92,7 @@ impl Repair {
 
 /// The repair (module docs) of `edges` (distinct, `[min, max]`, any order), as edges to add
 /// and to remove.
-pub(super) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
+pub(crate) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
     let n = vor.triangulation().points.len();
     let mut on_curve = vec![false; n];
     for &[a, b] in edges {
@@ -133,9 +133,9 @@ pub(super) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
 }
 
 /// A swap: the stretch's edges replace the detour's.
-pub(super) struct Swap {
-    pub(super) stretch: Vec<[u32; 2]>,
-    pub(super) detour: Vec<[u32; 2]>,
+pub(crate) struct Swap {
+    pub(crate) stretch: Vec<[u32; 2]>,
+    pub(crate) detour: Vec<[u32; 2]>,
 }
 
 /// A group of step 1 as its edges, sorted.
@@ -387,7 +387,7 @@ fn detour_to(chains: &[Vec<u32>], b: u32) -> Option<Vec<[u32; 2]>> {
 /// The curve edges with the swaps made so far: the original edges, and the current
 /// neighbours of every point a swap touched (a flag per point says which, so that walking
 /// untouched curves costs no lookup).
-pub(super) struct EditedCurves {
+pub(crate) struct EditedCurves {
     original: Adjacency,
     touched: Vec<bool>,
     current: BTreeMap<u32, Vec<u32>>,
@@ -396,7 +396,7 @@ pub(super) struct EditedCurves {
 }
 
 impl EditedCurves {
-    pub(super) fn new(n: usize, edges: &[[u32; 2]]) -> Self {
+    pub(crate) fn new(n: usize, edges: &[[u32; 2]]) -> Self {
         EditedCurves {
             original: Adjacency::new(n, edges),
             touched: vec![false; n],
@@ -407,7 +407,7 @@ impl EditedCurves {
     }
 
     /// The current curve neighbours of `p`, when there are exactly two.
-    pub(super) fn two_neighbours(&self, p: u32) -> Option<[u32; 2]> {
+    pub(crate) fn two_neighbours(&self, p: u32) -> Option<[u32; 2]> {
         if self.touched[p as usize] {
             match self.current[&p].as_slice() {
                 &[x, y] => Some([x, y]),
@@ -439,7 +439,7 @@ impl EditedCurves {
             .or_insert_with(|| original.neighbours(p).iter().map(|&(_, q)| q).collect())
     }
 
-    pub(super) fn swap(&mut self, swap: &Swap) {
+    pub(crate) fn swap(&mut self, swap: &Swap) {
         for &[a, b] in &swap.detour {
             if !self.added.remove(&[a, b]) {
                 self.removed.insert([a, b]);
@@ -454,7 +454,7 @@ impl EditedCurves {
         }
     }
 
-    pub(super) fn into_repair(self) -> Repair {
+    pub(crate) fn into_repair(self) -> Repair {
         Repair {
             added: self.added.into_iter().collect(),
             removed: self.removed.into_iter().collect(),
@@ -596,7 +596,7 @@ impl UnionFind {
 }
 
 #[cfg(test)]
-pub(super) mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::delaunay::triangulate;
     use std::f64::consts::TAU;

@@ -30,15 +30,15 @@ use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 use super::ears::degrees;
-use super::extract::wdm_crust_edges;
-use super::thresholds::corridors::{CHORD, NARROW};
-use super::wdm::Label;
 use crate::delaunay::NO_TWIN;
+use crate::reconstruct::extract::wdm_crust_edges;
+use crate::reconstruct::thresholds::corridors::{CHORD, NARROW};
+use crate::reconstruct::wdm::Label;
 use crate::voronoi::{EdgeEnd, Voronoi};
 
 /// Relabels the corridors of `labels` inner (see the module docs) and recomputes `edges`, the
 /// crust of `labels`, when any is found. Returns the number of vertices relabelled.
-pub(super) fn repair_corridors(
+pub(crate) fn repair_corridors(
     vor: &Voronoi<'_>,
     labels: &mut [Label],
     edges: &mut Vec<[u32; 2]>,

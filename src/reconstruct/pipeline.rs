@@ -1,15 +1,17 @@
 //! The reconstruction, top to bottom: triangulate, dual, label, extract, peel, assemble.
 
 use super::curves;
-use super::extract::{chain_edges, medial_axis, wdm_crust_edges};
+use super::curves::chain_edges;
+use super::extract::{medial_axis, wdm_crust_edges};
 use super::frame::Frame;
 use super::medial_axis::pruned_medial_axis;
 use super::open_curves;
 use super::options::{Algorithm, MedialAxisMode, Options};
 use super::repairs::corridors::repair_corridors;
-use super::repairs::detours::{repair_detours, Repair};
+use super::repairs::detours::repair_detours;
 use super::repairs::ears::{drop_islets, repair_ears, Ears};
 use super::repairs::peel::{hole_edges, parity_inside, peel, Peeling};
+use super::repairs::shared::Repair;
 use super::result::{untouched_local_points, untouched_points, MedialAxis, Reconstruction};
 use super::smooth;
 use super::thinning;

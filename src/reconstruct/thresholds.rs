@@ -33,17 +33,15 @@ pub(crate) mod peel {
     pub(crate) const SPARSER_LOOP: f64 = 3.0;
 
     /// How far apart two left-over points may lie and still be linked into one group
-    /// (`peel::isolated_leftovers`), in units of the
-    /// longer of their nearest-neighbour distances: [`SPARSER_LOOP`], the sparsest sampling a kept
-    /// loop may have relative to its surroundings.
+    /// (`peel::isolated_leftovers`), in units of the longer of their nearest-neighbour distances:
+    /// [`SPARSER_LOOP`], the sparsest sampling a kept loop may have relative to its surroundings.
     ///
     /// Measurement: by the shorter distance instead: with a hole 39 / 45 / 57 right of 100 (noise
     /// 0.5 / 0.7 / 1). Used by `reconstruct/repairs/peel.rs`.
     pub(crate) const LINK: f64 = SPARSER_LOOP;
 
     /// The fewest left-over points of a group that takes part in a later pass
-    /// (`peel::isolated_leftovers`): three, the fewest
-    /// that bound anything.
+    /// (`peel::isolated_leftovers`): three, the fewest that bound anything.
     ///
     /// Measurement: 7: survey noise 0.5 with a hole right 100 → 90 %. Used by
     /// `reconstruct/repairs/peel.rs`.
@@ -60,21 +58,21 @@ pub(crate) mod peel {
     /// any ε < 1 (see `peel::is_a_curve`).
     ///
     /// Measurement: 3: one curve at noise 1 right 90 against 95 %; 10–70 % outliers 93 / 87 / 70 /
-    /// 63 against 97 / 93 / 83 / 80 %. Used by `reconstruct/repairs/peel.rs` and `reconstruct/repairs/ears.rs`.
+    /// 63 against 97 / 93 / 83 / 80 %. Used by `reconstruct/repairs/peel.rs` and
+    /// `reconstruct/repairs/ears.rs`.
     pub(crate) const MIN_LOOP_POINTS: usize = 7;
 
-    /// How far, in its own sample spacings, a loop closed by a chord
-    /// (`peel::close_by_chord`) must keep from the curves
-    /// found before: two curves of an ε-sample (ε < 1) lie at least twice the local feature size
-    /// apart, and a sample spacing is at most ε times it, so a loop closer than 2 of its spacings
-    /// to an earlier curve is no separate curve of the sample (see
-    /// `peel::lies_apart`).
+    /// How far, in its own sample spacings, a loop closed by a chord (`peel::close_by_chord`) must
+    /// keep from the curves found before: two curves of an ε-sample (ε < 1) lie at least twice the
+    /// local feature size apart, and a sample spacing is at most ε times it, so a loop closer than
+    /// 2 of its spacings to an earlier curve is no separate curve of the sample (see
+    /// `shared::lies_apart`).
     ///
-    /// Measurement: without it: 70 % outliers right 63 against 80 %. Used by `reconstruct/repairs/peel.rs`.
+    /// Measurement: without it: 70 % outliers right 63 against 80 %. Used by
+    /// `reconstruct/repairs/shared.rs` (peeling's loops and the islets of `ears.rs`).
     pub(crate) const APART: f64 = 2.0;
 
-    /// The fewest points of an open chain a later pass keeps (see
-    /// `peel::is_a_curve`).
+    /// The fewest points of an open chain a later pass keeps (see `peel::is_a_curve`).
     ///
     /// Measurement: no alternative recorded. Used by `reconstruct/repairs/peel.rs`.
     pub(crate) const MIN_CHAIN_POINTS: usize = 8;
@@ -209,8 +207,8 @@ pub(crate) mod open_curves {
 /// Thinning: dense noisy bands to representatives (`docs/design/thinning.md`).
 pub(crate) mod thinning {
     /// Below this many distinct points nothing is thinned: a band needs hundreds of points (its
-    /// neighbourhoods hold up to `thinning::LADDER`'s last size), and
-    /// small inputs are the sparse samples WDM is made for.
+    /// neighbourhoods hold up to `thinning::LADDER`'s last size), and small inputs are the sparse
+    /// samples WDM is made for.
     ///
     /// Measurement: no alternative recorded. Used by `reconstruct/thinning.rs`.
     pub(crate) const MIN_THINNED_POINTS: usize = 400;
@@ -280,10 +278,8 @@ pub(crate) mod medial_axis {
     /// Measurement: superellipse trunk gap 6.4 → 2.5 %. Used by `reconstruct/medial_axis.rs`.
     pub(crate) const CLEAN_PRUNE_ANGLE_DEGREES: f64 = 30.0;
 
-    /// The relative oscillation
-    /// (`medial_axis::noise::noise::loop_estimates`) below
-    /// which a face's samples are clean: about that of Gaussian noise of 0.02 × the spacing (see
-    /// the module docs).
+    /// The relative oscillation (`medial_axis::noise::noise::loop_estimates`) below which a face's
+    /// samples are clean: about that of Gaussian noise of 0.02 × the spacing (see the module docs).
     ///
     /// Measurement: 0.015–0.03: same noisy rows; 0.06: whiskers at σ = 0.1 (star 9/12). Used by
     /// `reconstruct/medial_axis.rs`.
@@ -294,9 +290,8 @@ pub(crate) mod medial_axis {
     /// Measurement: no alternative recorded. Used by `reconstruct/medial_axis.rs`.
     pub(crate) const NEIGHBOURHOOD: usize = 64;
 
-    /// How many times the noise amplitude of its samples
-    /// (`medial_axis::noise`) a leaf's ball may stick out of a much
-    /// larger ball that then covers it (see the module docs).
+    /// How many times the noise amplitude of its samples (`medial_axis::noise`) a leaf's ball may
+    /// stick out of a much larger ball that then covers it (see the module docs).
     ///
     /// Measurement: 2 / 4 / 6 / 8: star 10 / 12 / 12 / 12, two shapes 9 / 11 / 11 / 12 of 12. Used
     /// by `reconstruct/medial_axis.rs`.
@@ -322,18 +317,16 @@ pub(crate) mod medial_axis {
     /// Used by `reconstruct/medial_axis/noise.rs`.
     pub(crate) const BLOCK: usize = 4096;
 
-    /// How many leaves ahead of the one being tested
-    /// `medial_axis::pruning::Lookahead` fetches: a fetch needs
-    /// about as long as a few tests, and what is fetched too early leaves the first-level cache
-    /// again. At 10^7 noisy points (one thread) 2, 4, 6, 8, 12 and 16 took the pruning from 2.16 s
-    /// without to 1.32, 1.20, 1.13, 1.11, 1.44 and 1.44 s.
+    /// How many leaves ahead of the one being tested `medial_axis::pruning::Lookahead` fetches: a
+    /// fetch needs about as long as a few tests, and what is fetched too early leaves the
+    /// first-level cache again. At 10^7 noisy points (one thread) 2, 4, 6, 8, 12 and 16 took the
+    /// pruning from 2.16 s without to 1.32, 1.20, 1.13, 1.11, 1.44 and 1.44 s.
     ///
     /// Used by `reconstruct/medial_axis/pruning.rs`.
     pub(crate) const LOOKAHEAD: usize = 8;
 
-    /// How far past the last leaf it found
-    /// `medial_axis::pruning::Lookahead` looks for the next, per
-    /// leaf tested: where the leaves are sparse, a search to the end of the set for every leaf
+    /// How far past the last leaf it found `medial_axis::pruning::Lookahead` looks for the next,
+    /// per leaf tested: where the leaves are sparse, a search to the end of the set for every leaf
     /// would cost more than it saves.
     ///
     /// Used by `reconstruct/medial_axis/pruning.rs`.

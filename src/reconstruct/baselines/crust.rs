@@ -48,7 +48,7 @@ mod insertion;
 
 use crate::delaunay::Triangulation;
 use crate::kernel::Sign;
-use crate::reconstruct::extract::chain_edges;
+use crate::reconstruct::curves::chain_edges;
 
 use self::insertion::Dt;
 use crate::kernel::mixed::MixedPoints;

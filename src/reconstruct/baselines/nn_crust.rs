@@ -23,7 +23,7 @@
 //! `y`), never by input index, so the result does not depend on the order of the input.
 
 use crate::delaunay::Triangulation;
-use crate::reconstruct::extract::chain_edges;
+use crate::reconstruct::curves::chain_edges;
 use crate::reconstruct::proximity::DelaunayGraph;
 
 /// NN-crust edges of the distinct points of `tri`, `[i, j]` with `i < j`, sorted.

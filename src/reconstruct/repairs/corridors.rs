@@ -29,7 +29,7 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use super::ears::degrees;
+use super::shared::degrees;
 use crate::delaunay::NO_TWIN;
 use crate::reconstruct::extract::wdm_crust_edges;
 use crate::reconstruct::thresholds::corridors::{CHORD, NARROW};

@@ -47,48 +47,16 @@
 use std::cmp::Reverse;
 use std::collections::{BTreeMap, BTreeSet, BinaryHeap, HashMap};
 
+use super::shared::{EditedCurves, Repair, Swap};
 use super::spikes::drop_woven_spikes;
 use crate::kernel::metric::{dot_sign, length_order};
 use crate::kernel::Sign;
-use crate::reconstruct::bits::Bits;
 use crate::reconstruct::curves::Adjacency;
 use crate::reconstruct::proximity::closer;
 use crate::reconstruct::thresholds::detours::{
     MAX_ANCHORS, MAX_DETOUR_POINTS, MIN_UNASSIGNED_FOR_SPIKES, ROUNDS,
 };
 use crate::voronoi::Voronoi;
-
-/// What the repair changes: edges to add and edges to remove, each sorted.
-pub(crate) struct Repair {
-    /// The reattached stretches.
-    pub(crate) added: Vec<[u32; 2]>,
-    /// The detours.
-    pub(crate) removed: Vec<[u32; 2]>,
-}
-
-impl Repair {
-    pub(crate) fn none() -> Repair {
-        Repair {
-            added: Vec::new(),
-            removed: Vec::new(),
-        }
-    }
-
-    /// Applies the repair to the edges it was computed on.
-    pub(crate) fn apply(&self, edges: &mut Vec<[u32; 2]>) {
-        if let Some(largest) = self.removed.iter().map(|e| e[0]).max() {
-            // A bit test on the smaller end first: a search of `removed` for every edge was
-            // most of the time.
-            let mut ends = Bits::new(largest as usize + 1);
-            for &[a, _] in &self.removed {
-                ends.set(a as usize);
-            }
-            let may_be_removed = |a: u32| a <= largest && ends.get(a as usize);
-            edges.retain(|e| !may_be_removed(e[0]) || self.removed.binary_search(e).is_err());
-        }
-        edges.extend_from_slice(&self.added);
-    }
-}
 
 /// The repair (module docs) of `edges` (distinct, `[min, max]`, any order), as edges to add
 /// and to remove.
@@ -130,12 +98,6 @@ pub(crate) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
         }
     }
     edited.map_or_else(Repair::none, EditedCurves::into_repair)
-}
-
-/// A swap: the stretch's edges replace the detour's.
-pub(crate) struct Swap {
-    pub(crate) stretch: Vec<[u32; 2]>,
-    pub(crate) detour: Vec<[u32; 2]>,
 }
 
 /// A group of step 1 as its edges, sorted.
@@ -382,84 +344,6 @@ fn detour_to(chains: &[Vec<u32>], b: u32) -> Option<Vec<[u32; 2]>> {
             .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
             .collect(),
     )
-}
-
-/// The curve edges with the swaps made so far: the original edges, and the current
-/// neighbours of every point a swap touched (a flag per point says which, so that walking
-/// untouched curves costs no lookup).
-pub(crate) struct EditedCurves {
-    original: Adjacency,
-    touched: Vec<bool>,
-    current: BTreeMap<u32, Vec<u32>>,
-    removed: BTreeSet<[u32; 2]>,
-    added: BTreeSet<[u32; 2]>,
-}
-
-impl EditedCurves {
-    pub(crate) fn new(n: usize, edges: &[[u32; 2]]) -> Self {
-        EditedCurves {
-            original: Adjacency::new(n, edges),
-            touched: vec![false; n],
-            current: BTreeMap::new(),
-            removed: BTreeSet::new(),
-            added: BTreeSet::new(),
-        }
-    }
-
-    /// The current curve neighbours of `p`, when there are exactly two.
-    pub(crate) fn two_neighbours(&self, p: u32) -> Option<[u32; 2]> {
-        if self.touched[p as usize] {
-            match self.current[&p].as_slice() {
-                &[x, y] => Some([x, y]),
-                _ => None,
-            }
-        } else {
-            match self.original.neighbours(p) {
-                &[(_, x), (_, y)] => Some([x, y]),
-                _ => None,
-            }
-        }
-    }
-
-    /// Which points have a curve edge now, given which had one in the original edges.
-    fn on_curve(&self, original: &[bool]) -> Vec<bool> {
-        let mut on_curve = original.to_vec();
-        for (&p, neighbours) in &self.current {
-            on_curve[p as usize] = !neighbours.is_empty();
-        }
-        on_curve
-    }
-
-    /// The current neighbours of `p`, to edit.
-    fn neighbours_mut(&mut self, p: u32) -> &mut Vec<u32> {
-        let original = &self.original;
-        self.touched[p as usize] = true;
-        self.current
-            .entry(p)
-            .or_insert_with(|| original.neighbours(p).iter().map(|&(_, q)| q).collect())
-    }
-
-    pub(crate) fn swap(&mut self, swap: &Swap) {
-        for &[a, b] in &swap.detour {
-            if !self.added.remove(&[a, b]) {
-                self.removed.insert([a, b]);
-            }
-            self.neighbours_mut(a).retain(|&q| q != b);
-            self.neighbours_mut(b).retain(|&q| q != a);
-        }
-        for &[a, b] in &swap.stretch {
-            self.added.insert([a, b]);
-            self.neighbours_mut(a).push(b);
-            self.neighbours_mut(b).push(a);
-        }
-    }
-
-    pub(crate) fn into_repair(self) -> Repair {
-        Repair {
-            added: self.added.into_iter().collect(),
-            removed: self.removed.into_iter().collect(),
-        }
-    }
 }
 
 /// Candidate edges of step 1 (module docs), sorted.

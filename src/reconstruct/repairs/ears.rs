@@ -39,7 +39,7 @@
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
-use super::peel::{edges_near, lies_apart, median_length};
+use super::shared::{degrees, edges_near, lies_apart, median_length};
 use crate::delaunay::NO_TWIN;
 use crate::predicates::compare_circumradius;
 use crate::reconstruct::thresholds::peel::MIN_LOOP_POINTS;
@@ -222,17 +222,6 @@ fn small_loops(point_count: usize, edges: &[[u32; 2]]) -> Vec<Vec<u32>> {
         }
     }
     loops
-}
-
-/// The crust degree of every point (saturating at 255). Degrees are even: the labels change an
-/// even number of times around a cell.
-pub(crate) fn degrees(point_count: usize, edges: &[[u32; 2]]) -> Vec<u8> {
-    let mut degree = vec![0u8; point_count];
-    for &[a, b] in edges {
-        degree[a as usize] = degree[a as usize].saturating_add(1);
-        degree[b as usize] = degree[b as usize].saturating_add(1);
-    }
-    degree
 }
 
 /// An inner component, whole when small; a large one only as far as it was explored.

@@ -7,4 +7,5 @@ pub(crate) mod corridors;
 pub(crate) mod detours;
 pub(crate) mod ears;
 pub(crate) mod peel;
+pub(crate) mod shared;
 mod spikes;

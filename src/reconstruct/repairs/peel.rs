@@ -3,17 +3,16 @@
 //! indices here are local to the full triangulation.
 
 use super::ears::{repair_ears, Ears};
+use super::shared::{edges_near, lies_apart, median_length, segment_distance};
 use crate::delaunay::triangulate;
-use crate::reconstruct::bits::Bits;
-use crate::reconstruct::curves::{assemble_named, Adjacency, Curve, SomeAdjacency};
+use crate::reconstruct::curves::{assemble_named, Adjacency, Curve};
 use crate::reconstruct::extract::wdm_crust_edges;
 use crate::reconstruct::lengths::distance;
 use crate::reconstruct::options::Options;
 use crate::reconstruct::parity::parity_from_infinity;
 use crate::reconstruct::segment_walk::crosses_a_curve;
 use crate::reconstruct::thresholds::peel::{
-    APART, LINK, MAX_MEDIAN_TURN, MIN_CHAIN_POINTS, MIN_GROUP, MIN_LOOP_POINTS, NEAR_CURVE,
-    SPARSER_LOOP,
+    LINK, MAX_MEDIAN_TURN, MIN_CHAIN_POINTS, MIN_GROUP, MIN_LOOP_POINTS, NEAR_CURVE, SPARSER_LOOP,
 };
 use crate::reconstruct::wdm;
 use crate::voronoi::Voronoi;
@@ -133,24 +132,6 @@ fn first_pass_may_run(full: &Voronoi<'_>, edges: &[[u32; 2]]) -> bool {
         .collect();
     let isolated = isolated_leftovers(full, &rest);
     rest.len() - isolated.len() >= 3
-}
-
-/// The `edges` at the Delaunay neighbours of `points`: what [`near_a_curve`] and
-/// [`lies_apart`] read of the curves around those points, without an adjacency of every
-/// edge (a pass over all points).
-pub(crate) fn edges_near(full: &Voronoi<'_>, points: &[u32], edges: &[[u32; 2]]) -> SomeAdjacency {
-    let mut asked = Bits::new(full.triangulation().points.len());
-    for &p in points {
-        for q in full.delaunay_neighbours_local(p) {
-            asked.set(q as usize);
-        }
-    }
-    let near: Vec<[u32; 2]> = edges
-        .iter()
-        .copied()
-        .filter(|&[a, b]| asked.get(a as usize) || asked.get(b as usize))
-        .collect();
-    SomeAdjacency::new(&near)
 }
 
 /// The left-over points that lie apart from every other left-over point: in connected
@@ -354,65 +335,12 @@ fn is_a_curve(points: &[[f64; 2]], curve: &Curve, scale: f64) -> bool {
     *turns.select_nth_unstable_by(mid, f64::total_cmp).1 <= MAX_MEDIAN_TURN
 }
 
-/// Does the loop `curve` keep at least [`APART`] of its own sample spacings (`spacing`,
-/// its median edge) from the curves found before (`earlier`)? Measured from each of its
-/// points to the earlier curves' edges at the point's Delaunay neighbours (where the
-/// nearest curve is when no other point lies between).
-///
-/// Only the earlier curves' edges at the neighbours `q` with `counts(q)` are looked at (the
-/// islets of `ears.rs` leave out their own points).
-pub(crate) fn lies_apart<'a>(
-    full: &Voronoi<'_>,
-    earlier: impl Fn(u32) -> &'a [(u32, u32)],
-    curve: &[u32],
-    spacing: f64,
-    counts: impl Fn(u32) -> bool,
-) -> bool {
-    let points = &full.triangulation().points;
-    let at = |i: u32| points[i as usize];
-    curve.iter().all(|&p| {
-        full.delaunay_neighbours_local(p)
-            .filter(|&q| counts(q))
-            .all(|q| {
-                earlier(q)
-                    .iter()
-                    .all(|&(_, r)| segment_distance(at(p), at(q), at(r)) >= APART * spacing)
-            })
-    })
-}
-
 /// The angle (radians, in `[0, π]`) by which the path `a → b → c` turns at `b`.
 fn turning_angle(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
     let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
     (u[0] * v[1] - u[1] * v[0])
         .atan2(u[0] * v[0] + u[1] * v[1])
         .abs()
-}
-
-/// The median length of `edges` (0 for none). A rounded length: it only sets the scale of a
-/// rule's threshold, never an exact decision.
-pub(crate) fn median_length(points: &[[f64; 2]], edges: &[[u32; 2]]) -> f64 {
-    let mut lengths: Vec<f64> = edges
-        .iter()
-        .map(|&[a, b]| distance(points[a as usize], points[b as usize]))
-        .collect();
-    if lengths.is_empty() {
-        return 0.0;
-    }
-    let mid = lengths.len() / 2;
-    *lengths.select_nth_unstable_by(mid, f64::total_cmp).1
-}
-
-/// Distance from `p` to the segment `ab`.
-fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let len2 = dx * dx + dy * dy;
-    let t = if len2 > 0.0 {
-        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    distance(p, [a[0] + t * dx, a[1] + t * dy])
 }
 
 /// Is `p` a leftover of a curve's noise band: closer to a curve edge at one of its Delaunay

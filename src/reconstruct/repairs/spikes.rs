@@ -39,7 +39,7 @@
 //! edited so far, so neither the input order nor the thread count matters. A drop keeps the
 //! degrees of `a` and `b` (2) and takes the spike's points from 2 to 0, like a swap.
 
-use super::detours::{EditedCurves, Swap};
+use super::shared::{EditedCurves, Swap};
 use crate::kernel::{orient, Sign};
 use crate::reconstruct::thresholds::spikes::{
     GLOBAL_CONTRAST, LOCAL_CONTRAST, MEDIAN_SAMPLE, MIN_SPIKE_TURN, PAIR_FACTOR,

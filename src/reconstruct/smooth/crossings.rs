@@ -3,8 +3,8 @@
 //! and a closed curve still runs counterclockwise. Where a test fails the moves of the
 //! points involved are undone, until nothing fails.
 
+use super::super::curves::ring_orientation_by;
 use super::super::curves::Curve;
-use super::super::polygons::ring_orientation_by;
 use super::super::thresholds::smooth::{MAX_ROUNDS, SHORTENED, STAGES};
 use crate::kernel::{orient, Sign};
 

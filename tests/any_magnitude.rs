@@ -11,6 +11,9 @@ use wdm_crust::predicates::circumcenter_exact;
 use wdm_crust::reconstruct::{Algorithm, LabelRule, MedialAxisMode, Options, Reconstruction};
 use wdm_crust::{reconstruct_with, triangulate, Triangulation};
 
+mod exact;
+use exact::{incircle, orient, rational as rat};
+
 type P = [f64; 2];
 
 /// A deterministic stream of uniform numbers in `[0, 1)` (a 64-bit LCG's high bits).
@@ -216,26 +219,6 @@ fn five_hundred_points_at_1e_minus_100_and_1e150() {
 // ----------------------------------------------------------------------------------------
 // Input that no single power of two brings into the adaptive predicates' range, against a
 // rational reference.
-
-fn rat(x: f64) -> BigRational {
-    BigRational::from_float(x).expect("finite")
-}
-
-fn orient(a: P, b: P, c: P) -> BigRational {
-    (rat(a[0]) - rat(c[0])) * (rat(b[1]) - rat(c[1]))
-        - (rat(a[1]) - rat(c[1])) * (rat(b[0]) - rat(c[0]))
-}
-
-/// Positive iff `d` is strictly inside the circle through the counterclockwise `a, b, c`.
-fn incircle(a: P, b: P, c: P, d: P) -> BigRational {
-    let row = |p: P| {
-        let (x, y) = (rat(p[0]) - rat(d[0]), rat(p[1]) - rat(d[1]));
-        let lift = &x * &x + &y * &y;
-        (x, y, lift)
-    };
-    let ((ax, ay, al), (bx, by, bl), (cx, cy, cl)) = (row(a), row(b), row(c));
-    &al * (&bx * &cy - &by * &cx) - &bl * (&ax * &cy - &ay * &cx) + &cl * (&ax * &by - &ay * &bx)
-}
 
 /// The triangulation is Delaunay by brute force in rationals: every triangle
 /// counterclockwise with no point strictly inside its circle, and as many triangles as

@@ -8,12 +8,14 @@
 
 use std::path::Path;
 
-use num_rational::BigRational;
-use num_traits::{Signed, Zero};
+use num_traits::Signed;
 use serde_json::Value;
 use wdm_crust::predicates::{orient2d, Orientation};
 use wdm_crust::Reconstruction;
 use wdm_crust_testkit::{svg_dense_curves, CurveSet, DenseCurve, Rng};
+
+mod exact;
+use exact::twice_area;
 
 const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data");
 
@@ -43,16 +45,6 @@ fn indices(v: &Value) -> Vec<u32> {
         .iter()
         .map(|i| i.as_u64().unwrap() as u32)
         .collect()
-}
-
-/// Exact twice the signed area of a closed ring.
-fn twice_area(ring: &[[f64; 2]]) -> BigRational {
-    let exact = |x: f64| BigRational::from_float(x).unwrap();
-    let mut sum = BigRational::zero();
-    for w in ring.windows(2) {
-        sum += exact(w[0][0]) * exact(w[1][1]) - exact(w[1][0]) * exact(w[0][1]);
-    }
-    sum
 }
 
 /// Exact: `t` strictly inside the closed ring (which `t` is not on).

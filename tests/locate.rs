@@ -10,20 +10,8 @@ use wdm_crust::delaunay::Location;
 use wdm_crust::{triangulate, Triangulation};
 use wdm_crust_testkit::Rng;
 
-fn exact(x: f64) -> BigRational {
-    BigRational::from_float(x).expect("finite")
-}
-
-/// The exact orientation determinant of `a → b → c`, as a rational.
-fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> BigRational {
-    let [ax, ay, bx, by, cx, cy] = [a[0], a[1], b[0], b[1], c[0], c[1]].map(exact);
-    (&bx - &ax) * (&cy - &ay) - (&by - &ay) * (&cx - &ax)
-}
-
-fn squared_distance(p: [f64; 2], q: [f64; 2]) -> BigRational {
-    let (dx, dy) = (exact(p[0]) - exact(q[0]), exact(p[1]) - exact(q[1]));
-    &dx * &dx + &dy * &dy
-}
+mod exact;
+use exact::{orient, squared_distance};
 
 /// `q` in the closed triangle `t` (counterclockwise)?
 fn in_closed_triangle(tri: &Triangulation, t: usize, q: [f64; 2]) -> bool {

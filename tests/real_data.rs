@@ -47,9 +47,9 @@ fn ordered_sets_reach_their_recall_and_precision() {
     // found first, such as the crab's legs) count as misses.
     let cases = [
         // Mushroom's gills lie within 1.5 cap spacings of the sparse cap: peeling takes most
-        // of them for noise leftovers and reports them unassigned (see reconstruct/peel.rs);
+        // of them for noise leftovers and reports them unassigned (see reconstruct/repairs/peel.rs);
         // a later pass draws a 7-point loop through the others since its ear is dropped
-        // (reconstruct/ears.rs; before: recall 0.49, precision 0.88).
+        // (reconstruct/repairs/ears.rs; before: recall 0.49, precision 0.88).
         ("hnn-crust-sgp16/mushroom.p2d", 0.53, 0.80),
         ("fitconnect/data/apple_2percent_noise.txt", 0.51, 0.70),
         ("fitconnect/data/butterfly_2percent_noise.txt", 0.66, 0.79),

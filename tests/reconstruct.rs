@@ -749,7 +749,7 @@ fn a_noisy_hole_stays_a_closed_curve() {
     }
 }
 
-/// Ears (`reconstruct/ears.rs`): a small loop of the crust hanging off the curve at one
+/// Ears (`reconstruct/repairs/ears.rs`): a small loop of the crust hanging off the curve at one
 /// point of degree 4 split the curve into open chains. Seeds that had one before the repair
 /// (`examples/noise_failures.rs`): the star at noise 1 spacing, seeds 25, 48, 87 (an ear in
 /// the first pass), and the ellipse with a hole, seed 8 (an ear in the hole's own pass, which
@@ -782,7 +782,7 @@ fn ears_no_longer_split_noisy_curves() {
     }
 }
 
-/// Islets (`reconstruct/ears.rs`): a loop of three to six points of a noise band standing
+/// Islets (`reconstruct/repairs/ears.rs`): a loop of three to six points of a noise band standing
 /// alone beside the curve, which the first pass left inner. The ellipse with a hole at noise 1
 /// spacing, seed 250 (`examples/noise_failures.rs`, 300 trials), had a 4-point one beside the
 /// outer curve and came out with three loops. Now the first pass is the outer curve alone,
@@ -838,7 +838,7 @@ fn unassigned_points_are_the_points_on_no_curve() {
     assert!(unassigned.iter().all(|&i| (i as usize) < points.len() - 10));
 }
 
-/// Corridors (`reconstruct/corridors.rs`): the first pass's water leaked through a gap of the
+/// Corridors (`reconstruct/repairs/corridors.rs`): the first pass's water leaked through a gap of the
 /// outer curve's noise band into the region around the hole, and its loop ran along the wet
 /// corridor to the hole and back by two long chords; the hole's other samples were then left
 /// to a pass that could not close them. Seeds of the ellipse with a hole that did so

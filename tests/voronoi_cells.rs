@@ -9,11 +9,10 @@ use proptest::prelude::*;
 use wdm_crust::{triangulate, BoundingBox};
 use wdm_crust_testkit::Rng;
 
-type Q = BigRational;
+mod exact;
+use exact::{rational as q, twice_area};
 
-fn q(x: f64) -> Q {
-    Q::from_float(x).expect("finite")
-}
+type Q = BigRational;
 
 /// `|x − a|² − |x − b|²`.
 fn power(x: &[Q; 2], a: &[Q; 2], b: &[Q; 2]) -> Q {
@@ -124,15 +123,6 @@ fn brute_force_cell(points: &[[f64; 2]], site: usize, bbox: &BoundingBox) -> Vec
         .unwrap_or(0);
     ring.rotate_left(start);
     ring
-}
-
-/// Twice the signed area of a ring, exactly.
-fn twice_area(ring: &[[f64; 2]]) -> Q {
-    let v: Vec<[Q; 2]> = ring.iter().map(|p| p.map(q)).collect();
-    (0..v.len()).fold(Q::zero(), |acc, i| {
-        let (a, b) = (&v[i], &v[(i + 1) % v.len()]);
-        acc + (&a[0] * &b[1] - &a[1] * &b[0])
-    })
 }
 
 /// Half a unit in the last place of `x`, exactly.

@@ -34,7 +34,7 @@ use crate::error::{scan_points, Error};
 ///
 /// Every finite coordinate is accepted, subnormals and values near `f64::MAX` included, and
 /// the result is exact for all of them: input whose magnitudes lie outside the adaptive
-/// predicates' range ([`crate::error::MIN_MAGNITUDE`] ..= [`crate::error::MAX_MAGNITUDE`]) is
+/// predicates' range (non-zero magnitudes 2^-142 ..= 2^201) is
 /// triangulated on a copy scaled by a power of two (exact, and the triangles are the same),
 /// or, where no single power of two brings all of it into that range (`1e-300` beside
 /// `1e300`), with predicates that fall back to wide-exponent integer arithmetic. The

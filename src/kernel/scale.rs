@@ -89,9 +89,8 @@ pub(crate) fn log2_floor(x: f64) -> i32 {
 }
 
 /// The exponents `floor(log2 |x|)` of non-zero coordinates for which the adaptive
-/// predicates of `robust` are exact (no underflow or overflow in their expansions): the
-/// bounds of [`crate::error::MIN_MAGNITUDE`] and, one binade short, of
-/// [`crate::error::MAX_MAGNITUDE`].
+/// predicates of `robust` are exact (no underflow or overflow in their expansions):
+/// magnitudes 2^-142 ..= 2^201, the upper bound one binade short.
 pub(super) const ADAPTIVE_EXPONENTS: (i32, i32) = (-142, 200);
 
 /// The smallest non-zero and the largest coordinate magnitude of a set of finite points:

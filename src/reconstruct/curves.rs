@@ -1,7 +1,9 @@
 //! Assembly of reconstructed edges into curves: closed loops and open chains.
 
-use super::polygons::ring_orientation_by;
-use crate::kernel::Sign;
+use std::cmp::Ordering;
+
+use crate::delaunay::Triangulation;
+use crate::kernel::{orient, Sign};
 use crate::parallel;
 
 /// One reconstructed curve.
@@ -128,6 +130,42 @@ pub(crate) fn edges_of(curves: &[Curve]) -> Vec<[u32; 2]> {
 }
 
 /// [`assemble_named`] with the indices as names.
+/// The exact orientation of the simple polygon `ring`: `Positive` when counterclockwise.
+///
+/// At the lexicographically smallest vertex the polygon is convex, so the turn there is the
+/// polygon's orientation. Its two neighbours are both lexicographically larger; they are
+/// collinear with it only if they lie on one ray from it, where the two edges would overlap,
+/// which a simple polygon rules out. `Zero` therefore only for degenerate rings (fewer than
+/// three points, or not simple).
+pub(crate) fn ring_orientation(ring: &[[f64; 2]]) -> Sign {
+    ring_orientation_by(ring.len(), |i| ring[i])
+}
+
+/// [`ring_orientation`] of the ring whose `i`-th of `n` points is `at(i)`.
+pub(crate) fn ring_orientation_by(n: usize, at: impl Fn(usize) -> [f64; 2]) -> Sign {
+    if n < 3 {
+        return Sign::Zero;
+    }
+    let lowest = (0..n)
+        .min_by(|&i, &j| lexicographic(at(i), at(j)))
+        .unwrap_or(0);
+    orient(at((lowest + n - 1) % n), at(lowest), at((lowest + 1) % n))
+}
+
+/// By value (`-0.0` equals `0.0`, which `total_cmp` would not say); coordinates are finite.
+fn lexicographic(a: [f64; 2], b: [f64; 2]) -> Ordering {
+    let by = |x: f64, y: f64| x.partial_cmp(&y).unwrap_or(Ordering::Equal);
+    by(a[0], b[0]).then(by(a[1], b[1]))
+}
+
+/// Collinear or tiny input: the chain along the line is the reconstruction (local indices).
+pub(crate) fn chain_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
+    tri.hull
+        .windows(2)
+        .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
+        .collect()
+}
+
 #[cfg(test)]
 pub fn assemble(point_count: usize, edges: &[[u32; 2]], points: &[[f64; 2]]) -> Vec<Curve> {
     assemble_named(point_count, edges, points, |p| p)

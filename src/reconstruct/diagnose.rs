@@ -21,96 +21,35 @@
 //! with their measurements in `docs/design/thresholds.md`.
 
 use std::cmp::Ordering;
-use std::fmt;
 
 use super::lengths::distance;
 use super::proximity::closer;
-use super::result::Reconstruction;
+use super::result::{Reconstruction, Warning, WarningCode};
+use super::thresholds::warnings::{CLOSE_CURVE_STEPS, GAP_EDGE_DOUBLINGS, LONG_EDGE_DOUBLINGS};
 use crate::delaunay::{prev_in_triangle, NO_TWIN};
 use crate::kernel::metric::{length_order, scaled_length_order};
 use crate::predicates::{incircle, CirclePosition};
 
-/// An edge is *long* when it is more than `2^LONG_EDGE_DOUBLINGS` times each of the (up to
-/// four) curve edges within two steps of it. The open-curve stage already opens a loop at such a chord, and its
-/// chains never take an edge that long; what remains is a chord of the baselines, or of a
-/// loop whose neighbours are as sparse as the gap.
-pub const LONG_EDGE_DOUBLINGS: u32 = 3;
-
-/// A closed loop whose longest edge is more than `2^GAP_EDGE_DOUBLINGS` times its next
-/// longest (and not long already) may close across the gap of an open curve. Noise and
-/// uneven sampling vary the edges of a right loop, but its two longest edges stay within
-/// a small factor of each other; a chord joining the ends of an open curve is alone.
-pub const GAP_EDGE_DOUBLINGS: u32 = 2;
-
-/// Two curve points closer than their curve edges are *too close* when they lie on
-/// different curves or more than this many steps apart along one curve. A sharp corner of
-/// angle θ brings the points of its two sides within one step of each other up to about
-/// `1 / sin(θ/2)` steps apart along the curve (11 at 10°, 23 at 5°): well inside the bound.
-pub const CLOSE_CURVE_STEPS: usize = 32;
-
-/// What a warning is about; [`name`](Self::name) is its stable code.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-#[non_exhaustive]
-pub enum WarningCode {
-    /// Most points are on no curve, or no curve was found.
-    MostUnassigned,
-    /// The points look like a scatter, a filled area or a wide band of noise.
-    Scatter,
-    /// A curve edge far longer than the curve edges beside it.
-    LongEdge,
-    /// A closed loop may close across the gap of an open curve.
-    LoopAcrossGap,
-    /// Curves come within the sample spacing of each other.
-    CurvesTooClose,
-    /// Peeling stopped at its budget.
-    PeelingBudget,
-}
-
-impl WarningCode {
-    /// Every code, in the order the warnings are listed.
-    pub const ALL: [WarningCode; 6] = [
-        WarningCode::MostUnassigned,
-        WarningCode::Scatter,
-        WarningCode::LongEdge,
-        WarningCode::LoopAcrossGap,
-        WarningCode::CurvesTooClose,
-        WarningCode::PeelingBudget,
-    ];
-
-    /// The stable code: what the JSON, the GeoJSON and Python carry.
-    pub fn name(self) -> &'static str {
-        match self {
-            WarningCode::MostUnassigned => "most-unassigned",
-            WarningCode::Scatter => "scatter",
-            WarningCode::LongEdge => "long-edge",
-            WarningCode::LoopAcrossGap => "loop-across-gap",
-            WarningCode::CurvesTooClose => "curves-too-close",
-            WarningCode::PeelingBudget => "peeling-budget",
-        }
-    }
-}
-
-impl fmt::Display for WarningCode {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-/// A sign that the result is probably not what was wanted, with what to try.
-#[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub struct Warning {
-    /// What it is about.
-    pub code: WarningCode,
-    /// One sentence for a person: what was seen, where, and what to try.
-    pub message: String,
-    /// The points it is about (caller indices; for an edge its two ends), at most a few.
-    pub points: Vec<u32>,
-}
-
-impl fmt::Display for Warning {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} [{}]", self.message, self.code)
+impl Reconstruction {
+    /// The signs that this result is probably not what was wanted (most points on no curve,
+    /// a scatter rather than curves, an edge far longer than its neighbours, a loop closed
+    /// across a gap, curves closer than the spacing, peeling stopped at its budget), each
+    /// with what to try; empty when there is nothing to say. Computed on the first call, in
+    /// time linear in the points (about a tenth of the reconstruction's), then kept.
+    ///
+    /// ```
+    /// let points: Vec<[f64; 2]> = (0..64)
+    ///     .map(|k| {
+    ///         let t = k as f64 * std::f64::consts::TAU / 64.0;
+    ///         [t.cos(), t.sin()]
+    ///     })
+    ///     .collect();
+    /// let rec = wdm_crust::reconstruct(&points)?;
+    /// assert!(rec.warnings().is_empty());
+    /// # Ok::<(), wdm_crust::Error>(())
+    /// ```
+    pub fn warnings(&self) -> &[Warning] {
+        self.warnings.get_or_init(|| warnings(self))
     }
 }
 

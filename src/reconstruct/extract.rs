@@ -133,14 +133,6 @@ pub(super) fn medial_axis(
     axis
 }
 
-/// Collinear or tiny input: the chain along the line is the reconstruction (local indices).
-pub(crate) fn chain_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
-    tri.hull
-        .windows(2)
-        .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

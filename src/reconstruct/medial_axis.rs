@@ -170,17 +170,20 @@
 mod cavity;
 mod first_use;
 mod noise;
-mod parity;
 mod pruning;
 
 use self::cavity::Cavity;
-pub(super) use self::parity::parity_from_infinity;
 use super::bits::{Bits, RankedBits};
 use super::curves::Curve;
 use super::frame::Frame;
 use super::lengths::distance;
+use super::parity::parity_from_infinity;
 use super::result::MedialAxis;
 use super::segment_walk::faces_across;
+use super::thresholds::medial_axis::{
+    CLEAN_OSCILLATION, CLEAN_PRUNE_ANGLE_DEGREES, NEIGHBOURHOOD, NOISE_RADIUS_RATIO,
+    NOISE_TOLERANCE, PRUNE_ANGLE_DEGREES,
+};
 use crate::delaunay::triangulate;
 use crate::delaunay::{prev_in_triangle, Triangulation, NO_TWIN};
 use crate::kernel::metric::dot_sign;
@@ -189,34 +192,9 @@ use crate::parallel;
 use crate::prefetch::prefetch;
 use crate::voronoi::{rounded_circumcenter, smallest_corner, Voronoi};
 
-/// The object angle `θ` of the pruning rule: a leaf is removed when some ball near it grows
-/// out of its ball at least at the rate `cos(θ/2)` of the distance (see the module docs).
-const PRUNE_ANGLE_DEGREES: f64 = 60.0;
-
-/// The object angle of the rule for a leaf whose samples do not zig-zag ([`CLEAN_OSCILLATION`]):
-/// no noise there can grow a whisker, so only branches narrower than this go (see the
-/// module docs).
-const CLEAN_PRUNE_ANGLE_DEGREES: f64 = 30.0;
-
-/// The relative oscillation ([`noise::loop_estimates`]) below which a face's samples are
-/// clean: about that of Gaussian noise of 0.02 × the spacing (see the module docs).
-const CLEAN_OSCILLATION: f32 = 0.02;
-
 /// The `slack` of a clean ball ([`Ball`]): the angle [`CLEAN_PRUNE_ANGLE_DEGREES`] applies,
 /// and no noise slack.
 const CLEAN: f32 = -1.0;
-
-/// How many vertices (along its branch, then beyond the junction) a leaf is compared with.
-const NEIGHBOURHOOD: usize = 64;
-
-/// How many times the noise amplitude of its samples ([`noise`]) a leaf's ball may stick
-/// out of a much larger ball that then covers it (see the module docs).
-const NOISE_TOLERANCE: f64 = 8.0;
-
-/// How much larger than a leaf's ball a ball must be to cover it within the noise slack:
-/// the slack never applies between balls of similar size, which follow each other along
-/// every branch (see the module docs).
-const NOISE_RADIUS_RATIO: f64 = 2.0;
 
 /// The pruned medial axis of the closed curves among `curves` (local indices of the
 /// points of `vor`); empty when there are none. See the module docs. `vor` is in `frame`;

@@ -6,48 +6,48 @@
 //! edges joining two inner vertices (the medial axis), assemble the crust into curves
 //! ([`Curve`]). Shapes with holes are handled by peeling (see [`Options::with_peeling`]).
 //!
-//! One module per job, in pipeline order: [`options`](Options) (what is asked), `pipeline`
-//! (the orchestration, top to bottom), `frame` (the exactly rescaled coordinates it runs in), `thinning` (dense noisy bands to
-//! representatives, before everything else), [`wdm`] (the water flow), `extract` (crust and medial
-//! axis off the labels), `corridors` (water that leaked through a gap of a noisy curve),
-//! `ears` (small loops hanging off a curve at one point), `peel` (holes), `detours` (outliers
-//! the crust ran through), `spikes` (outliers woven into a curve), `curves` (assembly),
-//! `smooth` (on demand: the curve vertices fitted to the samples around them),
-//! `delaunay_graph` (adjacency lists for the walks of both), `result` (what
-//! is returned), `diagnose` (the warnings on a result);
-//! [`crust`] and [`nn_crust`] are the classical baselines on the same exact engine.
+//! One module per job, in wings that follow the pipeline (ARCHITECTURE.md has the map):
+//! [`options`](Options) (what is asked), `pipeline` (the orchestration, top to bottom),
+//! `frame` (the exactly rescaled coordinates it runs in), `thinning` (dense noisy bands to
+//! representatives, before everything else); the paper's algorithm, [`wdm`] (the water flow)
+//! and `extract` (crust and medial axis off the labels); `repairs` (`corridors`: water that
+//! leaked through a gap of a noisy curve; `ears`: small loops hanging off a curve at one
+//! point; `peel`: holes; `detours`: outliers the crust ran through; `spikes`: outliers woven
+//! into a curve; `shared`: what more than one of them reads); `curves` (assembly), `smooth`
+//! (on demand: the curve vertices fitted to the samples around them), the medial axis,
+//! `delaunay_graph` (adjacency lists for the walks of both), `result` (what is returned),
+//! `diagnose` (the warnings on a result), `thresholds` (every tuned constant with the
+//! measurement that chose it); `baselines`: [`crust`] and [`nn_crust`], the classical
+//! baselines on the same exact engine.
 
+mod baselines;
 mod bits;
-mod corridors;
-pub mod crust;
 mod curves;
 mod delaunay_graph;
-mod detours;
 mod diagnose;
-mod ears;
 mod extract;
 mod frame;
 mod lengths;
 mod medial_axis;
-pub mod nn_crust;
 mod open_curves;
 mod options;
-mod peel;
+mod parity;
 mod pipeline;
 pub mod polygons;
 mod proximity;
+mod repairs;
 mod result;
 mod segment_walk;
 mod smooth;
-mod spikes;
 mod thinning;
+mod thresholds;
 pub mod wdm;
 
+pub use baselines::{crust, nn_crust};
 pub use curves::Curve;
-pub use diagnose::{Warning, WarningCode};
 pub use extract::EdgeClass;
 pub use options::{Algorithm, MedialAxisMode, Options, OptionsConflict, WdmSetting};
 pub use pipeline::{reconstruct, reconstruct_observed, reconstruct_with, Phase};
 pub use polygons::Polygon;
-pub use result::{MedialAxis, Reconstruction};
+pub use result::{MedialAxis, Reconstruction, Warning, WarningCode};
 pub use wdm::{Label, LabelRule, WaterFlow};

@@ -51,34 +51,13 @@
 use std::cmp::Ordering;
 
 use super::proximity::{closer, DelaunayGraph, Proposal};
+use super::thresholds::open_curves::{
+    CHORD_DOUBLINGS, GAP_DOUBLINGS, ISOLATION_DOUBLINGS, JOIN_DOUBLINGS, MIN_CHAIN_POINTS,
+    MIN_CLOSED_POINTS,
+};
 use crate::delaunay::Triangulation;
 use crate::kernel::metric::{length_order, scaled_length_order};
 use crate::voronoi::Voronoi;
-
-/// A loop edge longer than `2^CHORD_DOUBLINGS` times the two loop edges on each side of it
-/// is a chord across an open curve, not a step along a closed one.
-pub(crate) const CHORD_DOUBLINGS: u32 = 3;
-
-/// A proposed chain edge longer than `2^GAP_DOUBLINGS` times the nearest-neighbour distance
-/// at each of its two ends bridges a gap between two curves.
-pub(crate) const GAP_DOUBLINGS: u32 = 3;
-
-/// The fewest points of an open chain or a loop made of proposals; smaller pieces are junk.
-pub(crate) const MIN_CHAIN_POINTS: usize = 5;
-
-/// A join of two chain ends is at most `2^JOIN_DOUBLINGS` times the step at each of them
-/// (the longer of its last two edges): a break that noise made in one curve, not the gap
-/// between two.
-pub(crate) const JOIN_DOUBLINGS: u32 = 2;
-
-/// The fewest points of a loop that proximity closes: a closed curve turns by 2π, an
-/// ε-sample by about ε a sample, so fewer than 7 points are no ε-sample for ε < 1 (the
-/// bound of peeling's loops).
-pub(crate) const MIN_CLOSED_POINTS: usize = 7;
-
-/// A point of a chain is isolated when everything off its chain is farther than
-/// `2^ISOLATION_DOUBLINGS` times its longer step along the chain.
-pub(crate) const ISOLATION_DOUBLINGS: u32 = 1;
 
 const NONE: u32 = u32::MAX;
 

@@ -22,13 +22,21 @@ pub enum Algorithm {
 }
 
 impl Algorithm {
-    /// The name used on the command line and in JSON output.
+    /// The stable name (`"wdm"`, `"crust"`, `"nn-crust"`), also its
+    /// [`Display`](fmt::Display): the `"algorithm"` of the JSON output and what the
+    /// bindings accept.
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Wdm => "wdm",
             Algorithm::Crust => "crust",
             Algorithm::NnCrust => "nn-crust",
         }
+    }
+}
+
+impl fmt::Display for Algorithm {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
     }
 }
 
@@ -61,13 +69,20 @@ pub enum MedialAxisMode {
 }
 
 impl MedialAxisMode {
-    /// The name used on the command line (`--medial-axis pruned|raw`).
+    /// The stable name (`"pruned"`, `"raw"`, `"none"`), also its
+    /// [`Display`](fmt::Display): what the bindings accept.
     pub fn name(self) -> &'static str {
         match self {
             MedialAxisMode::Pruned => "pruned",
             MedialAxisMode::Raw => "raw",
             MedialAxisMode::Omitted => "none",
         }
+    }
+}
+
+impl fmt::Display for MedialAxisMode {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
     }
 }
 
@@ -100,7 +115,8 @@ impl WdmSetting {
         WdmSetting::OpenCurves,
     ];
 
-    /// The setting in words: `"medial axis"`, `"peeling budget"`, ...
+    /// The setting in words (`"medial axis"`, `"peeling budget"`, ...), also its
+    /// [`Display`](fmt::Display).
     pub fn name(self) -> &'static str {
         match self {
             WdmSetting::Peeling => "peeling",
@@ -114,6 +130,12 @@ impl WdmSetting {
 
     fn bit(self) -> u8 {
         1 << (self as u8)
+    }
+}
+
+impl fmt::Display for WdmSetting {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
     }
 }
 
@@ -167,9 +189,7 @@ impl fmt::Display for OptionsConflict {
         match self {
             OptionsConflict::WdmOnly { setting, algorithm } => write!(
                 f,
-                "the {} setting does not apply to {}: {}",
-                setting.name(),
-                algorithm.name(),
+                "the {setting} setting does not apply to {algorithm}: {}",
                 self.reason()
             ),
             OptionsConflict::BudgetWithoutPeeling => write!(

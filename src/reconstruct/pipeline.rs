@@ -1,15 +1,17 @@
 //! The reconstruction, top to bottom: triangulate, dual, label, extract, peel, assemble.
 
-use super::corridors::repair_corridors;
 use super::curves;
-use super::detours::{repair_detours, Repair};
-use super::ears::{drop_islets, repair_ears, Ears};
-use super::extract::{chain_edges, medial_axis, wdm_crust_edges};
+use super::curves::chain_edges;
+use super::extract::{medial_axis, wdm_crust_edges};
 use super::frame::Frame;
 use super::medial_axis::pruned_medial_axis;
 use super::open_curves;
 use super::options::{Algorithm, MedialAxisMode, Options};
-use super::peel::{hole_edges, parity_inside, peel, Peeling};
+use super::repairs::corridors::repair_corridors;
+use super::repairs::detours::repair_detours;
+use super::repairs::ears::{drop_islets, repair_ears, Ears};
+use super::repairs::peel::{hole_edges, parity_inside, peel, Peeling};
+use super::repairs::shared::Repair;
 use super::result::{untouched_local_points, untouched_points, MedialAxis, Reconstruction};
 use super::smooth;
 use super::thinning;
@@ -17,6 +19,7 @@ use super::wdm::{self, Label, LabelRule};
 use super::{crust, nn_crust};
 use crate::delaunay::Triangulation;
 use crate::error::Error;
+use crate::voronoi::Voronoi;
 
 /// WDM_CRUST and WDM_MAT of `points` with the default [`Options`].
 ///
@@ -102,7 +105,8 @@ pub enum Phase {
 }
 
 impl Phase {
-    /// Lower-case name, as printed by `--timings`.
+    /// The phase's lower-case name (`"triangulate"`, `"medial-axis"`, ...), also its
+    /// [`Display`](std::fmt::Display): what timing and progress reports print.
     pub fn name(self) -> &'static str {
         match self {
             Phase::Triangulate => "triangulate",
@@ -116,6 +120,12 @@ impl Phase {
             Phase::Smooth => "smooth",
             Phase::Thin => "thin",
         }
+    }
+}
+
+impl std::fmt::Display for Phase {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
     }
 }
 
@@ -146,43 +156,121 @@ pub fn reconstruct_observed(
             return thinned(points, triangulation, frame, &local, options, on_phase);
         }
     }
-    if options.algorithm() != Algorithm::Wdm {
-        let edges = if triangulation.is_degenerate() {
-            chain_edges(&triangulation)
-        } else if options.algorithm() == Algorithm::Crust {
-            crust::crust_edges_local(&triangulation)
-        } else {
-            nn_crust::nn_crust_edges_local(&triangulation)
-        };
-        lap(Phase::Extract);
-        let curves = assemble(&triangulation, &edges);
-        let edges = triangulation.to_input_edges(edges);
-        let unassigned = untouched_points(&triangulation, &edges);
-        lap(Phase::Curves);
-        let fitted = smoothing(&triangulation, &curves, options);
-        frame.restore(&mut triangulation, points);
-        let fitted = fitted.map(|moved| frame.fitted_to_caller(&triangulation, moved));
-        if options.smoothing() {
-            lap(Phase::Smooth);
-        }
-        return Ok(Reconstruction {
-            algorithm: options.algorithm(),
-            triangulation,
-            labels: Vec::new(),
-            edges,
-            curves,
-            medial_axis: MedialAxis::default(),
-            medial_axis_mode: None,
-            unassigned,
-            passes: 1,
-            budget_exhausted: false,
-            fitted,
-            warnings: Default::default(),
-            thinned: None,
-        });
+    let (outcome, fitted) = if options.algorithm() == Algorithm::Wdm {
+        let outcome = wdm_crust(&triangulation, frame, options, &mut lap);
+        // The last stage, on the final curves; the axis is that of the unsmoothed curves.
+        let fitted = smoothing(&triangulation, &outcome.curves, options);
+        (outcome, fitted)
+    } else {
+        let outcome = baseline(&triangulation, options, &mut lap);
+        let fitted = smoothing(&triangulation, &outcome.curves, options);
+        (outcome, fitted)
+    };
+    frame.restore(&mut triangulation, points);
+    let fitted = fitted.map(|moved| frame.fitted_to_caller(&triangulation, moved));
+    if options.smoothing() {
+        lap(Phase::Smooth);
     }
-    let (labels, edges, curves, medial_axis, peeling, unassigned, fitted) = {
-        let mut vor = triangulation.voronoi();
+    Ok(Reconstruction {
+        algorithm: options.algorithm(),
+        triangulation,
+        labels: outcome.labels,
+        edges: outcome.edges,
+        curves: outcome.curves,
+        medial_axis: outcome.medial_axis,
+        medial_axis_mode: (options.algorithm() == Algorithm::Wdm).then_some(options.medial_axis()),
+        unassigned: outcome.unassigned,
+        passes: 1 + outcome.peeling.extra_passes,
+        budget_exhausted: outcome.peeling.budget_exhausted,
+        fitted,
+        warnings: Default::default(),
+        thinned: None,
+    })
+}
+
+/// What a run of one algorithm leaves for the [`Reconstruction`]: the curves, edges and
+/// unassigned points in the caller's indices, the labels and the axis over the Voronoi
+/// diagram's vertices.
+struct Outcome {
+    labels: Vec<Label>,
+    edges: Vec<[u32; 2]>,
+    curves: Vec<curves::Curve>,
+    medial_axis: MedialAxis,
+    unassigned: Vec<u32>,
+    peeling: Peeling,
+}
+
+/// A baseline (crust, NN-crust): its edges assembled into curves; one pass, no labels, no
+/// axis.
+fn baseline(tri: &Triangulation, options: &Options, lap: &mut dyn FnMut(Phase)) -> Outcome {
+    let edges = if tri.is_degenerate() {
+        chain_edges(tri)
+    } else if options.algorithm() == Algorithm::Crust {
+        crust::crust_edges_local(tri)
+    } else {
+        nn_crust::nn_crust_edges_local(tri)
+    };
+    lap(Phase::Extract);
+    let curves = assemble(tri, &edges);
+    let edges = tri.to_input_edges(edges);
+    let unassigned = untouched_points(tri, &edges);
+    lap(Phase::Curves);
+    Outcome {
+        labels: Vec::new(),
+        edges,
+        curves,
+        medial_axis: MedialAxis::default(),
+        unassigned,
+        peeling: Peeling::done(0),
+    }
+}
+
+/// WDM_CRUST and its medial axis, step by step.
+fn wdm_crust(
+    tri: &Triangulation,
+    frame: Frame,
+    options: &Options,
+    lap: &mut dyn FnMut(Phase),
+) -> Outcome {
+    let mut run = WdmRun::first_pass(tri, options, lap);
+    run.repairs(options);
+    run.peeling(options);
+    lap(Phase::Peel);
+    let assembly = run.assembly(options, lap);
+    lap(Phase::Curves);
+    let outcome = run.axis(assembly, options, frame);
+    lap(Phase::MedialAxis);
+    outcome
+}
+
+/// A WDM run between its steps, in the frame and on the triangulation's local indices.
+struct WdmRun<'t> {
+    tri: &'t Triangulation,
+    vor: Voronoi<'t>,
+    labels: Vec<Label>,
+    /// The edges so far: the first pass's, then the repairs' and peeling's changes.
+    edges: Vec<[u32; 2]>,
+    /// What the detour repair changed.
+    repair: Repair,
+    /// How many edges there were after the repairs: those after them are peeling's.
+    repaired_len: usize,
+    peeling: Peeling,
+}
+
+/// The curves of a WDM run in local indices (until the axis has read them), its unassigned
+/// points, and for the raw axis the edges of the later passes and those of the holes.
+struct Assembly {
+    curves: Vec<curves::Curve>,
+    unassigned: Vec<u32>,
+    later_pass: Vec<[u32; 2]>,
+    holes: Vec<[u32; 2]>,
+}
+
+impl<'t> WdmRun<'t> {
+    /// The Voronoi diagram, the water flow's labels and the paper's edges, with the repairs
+    /// of the labels (corridors, ears, islets).
+    fn first_pass(tri: &'t Triangulation, options: &Options, lap: &mut dyn FnMut(Phase)) -> Self {
+        let mut vor = tri.voronoi();
         lap(Phase::Voronoi);
         // Only the labels go on: the sources and the visit marks are freed here (10 bytes per
         // point at the memory peak, which is later).
@@ -194,8 +282,8 @@ pub fn reconstruct_observed(
             vor.forget_positions();
         }
         lap(Phase::Label);
-        let mut edges = if triangulation.is_degenerate() {
-            chain_edges(&triangulation)
+        let edges = if tri.is_degenerate() {
+            chain_edges(tri)
         } else {
             let mut edges = wdm_crust_edges(&vor, &labels);
             // The widths assume the default reading (outer = wet); the others are compared
@@ -212,63 +300,102 @@ pub fn reconstruct_observed(
             edges
         };
         lap(Phase::Extract);
-        // The detour repair runs on the first pass, before peeling: the stretches it
-        // reattaches are then no leftovers for the later passes, which otherwise closed small
-        // loops through some of them (measured in ARCHITECTURE.md, "Outliers: detour repair").
-        let repair = if options.detour_repair() && !triangulation.is_degenerate() {
-            repair_detours(&vor, &edges)
-        } else {
-            Repair::none()
-        };
-        repair.apply(&mut edges);
-        let repaired_len = edges.len();
-        let peeling = if options.peeling() {
-            peel(&vor, &mut edges, options)
-        } else {
-            Peeling::done(0)
-        };
-        lap(Phase::Peel);
+        WdmRun {
+            tri,
+            vor,
+            labels,
+            edges,
+            repair: Repair::none(),
+            repaired_len: 0,
+            peeling: Peeling::done(0),
+        }
+    }
+
+    /// The detour repair. It runs on the first pass, before peeling: the stretches it
+    /// reattaches are then no leftovers for the later passes, which otherwise closed small
+    /// loops through some of them (measured in ARCHITECTURE.md, "Outliers: detour repair").
+    fn repairs(&mut self, options: &Options) {
+        if options.detour_repair() && !self.tri.is_degenerate() {
+            self.repair = repair_detours(&self.vor, &self.edges);
+        }
+        self.repair.apply(&mut self.edges);
+        self.repaired_len = self.edges.len();
+    }
+
+    /// The later passes on the points no curve reached (holes, nested curves).
+    fn peeling(&mut self, options: &Options) {
+        if options.peeling() {
+            self.peeling = peel(&self.vor, &mut self.edges, options);
+        }
+    }
+
+    /// Open curves settled, the edges assembled into curves; the edges are not held
+    /// further.
+    fn assembly(&mut self, options: &Options, lap: &mut dyn FnMut(Phase)) -> Assembly {
+        let tri = self.tri;
+        let mut edges = std::mem::take(&mut self.edges);
         // Edges the first pass did not find (reattached stretches, peeling's): holes may be
         // among them, and the raw medial axis must not cross them (the pruned one takes the
         // inside of the final loops by itself).
-        let holes_possible = (peeling.extra_passes > 0 || !repair.added.is_empty())
+        let holes_possible = (self.peeling.extra_passes > 0 || !self.repair.added.is_empty())
             && options.medial_axis() == MedialAxisMode::Raw;
         let mut later_pass = Vec::new();
         if holes_possible {
-            later_pass.extend_from_slice(&edges[repaired_len..]);
-            later_pass.extend_from_slice(&repair.added);
+            later_pass.extend_from_slice(&edges[self.repaired_len..]);
+            later_pass.extend_from_slice(&self.repair.added);
             later_pass.sort_unstable();
         }
         // Sure loops kept, every other point joined into chains by proximity.
-        if options.open_curves() && !triangulation.is_degenerate() {
-            edges = open_curves::settle(&triangulation, &vor, &edges);
+        if options.open_curves() && !tri.is_degenerate() {
+            edges = open_curves::settle(tri, &self.vor, &edges);
         }
         lap(Phase::OpenCurves);
         // In local indices until the axis has read them (see `assemble_unnamed`).
-        let mut curves = curves::assemble_unnamed(
-            triangulation.points.len(),
-            &edges,
-            &triangulation.points,
-            |p| triangulation.input_index(p),
-        );
-        let unassigned = untouched_local_points(&triangulation, &edges);
+        let curves = curves::assemble_unnamed(tri.points.len(), &edges, &tri.points, |p| {
+            tri.input_index(p)
+        });
+        let unassigned = untouched_local_points(tri, &edges);
         let holes = if holes_possible {
             // The edges are distinct: those of the first pass the repair kept, then the
             // later ones. So a final edge is none of the first pass's exactly when it is a
             // later one that the repair had not taken out of the first pass (a later pass
             // may draw again an edge between points a swap left off the curves).
+            let removed = &self.repair.removed;
             let not_first_pass = |e: &[u32; 2]| {
-                later_pass.binary_search(e).is_ok() && repair.removed.binary_search(e).is_err()
+                later_pass.binary_search(e).is_ok() && removed.binary_search(e).is_err()
             };
-            hole_edges(&vor, &curves, not_first_pass)
+            hole_edges(&self.vor, &curves, not_first_pass)
         } else {
             Vec::new()
         };
         // The edges (8 bytes a point) are not held through the axis, the memory peak: every
         // edge is in exactly one curve, and they are read off the curves after the axis.
         drop(edges);
-        lap(Phase::Curves);
-        let axis = match options.medial_axis() {
+        Assembly {
+            curves,
+            unassigned,
+            later_pass,
+            holes,
+        }
+    }
+
+    /// The medial axis of the run's mode; then the curves in the caller's indices and the
+    /// edges read off them.
+    fn axis(self, assembly: Assembly, options: &Options, frame: Frame) -> Outcome {
+        let Assembly {
+            mut curves,
+            unassigned,
+            later_pass,
+            holes,
+        } = assembly;
+        let WdmRun {
+            tri,
+            vor,
+            labels,
+            peeling,
+            ..
+        } = self;
+        let medial_axis = match options.medial_axis() {
             MedialAxisMode::Omitted => MedialAxis::default(),
             MedialAxisMode::Pruned => pruned_medial_axis(vor, &curves, frame),
             MedialAxisMode::Raw if holes.is_empty() => {
@@ -293,34 +420,18 @@ pub fn reconstruct_observed(
             }
         };
         for p in curves.iter_mut().flat_map(|c| c.points.iter_mut()) {
-            *p = triangulation.input_index(*p);
+            *p = tri.input_index(*p);
         }
         let edges = curves::edges_of(&curves);
-        lap(Phase::MedialAxis);
-        // The last stage, on the final curves; the axis is that of the unsmoothed curves.
-        let fitted = smoothing(&triangulation, &curves, options);
-        (labels, edges, curves, axis, peeling, unassigned, fitted)
-    };
-    frame.restore(&mut triangulation, points);
-    let fitted = fitted.map(|moved| frame.fitted_to_caller(&triangulation, moved));
-    if options.smoothing() {
-        lap(Phase::Smooth);
+        Outcome {
+            labels,
+            edges,
+            curves,
+            medial_axis,
+            unassigned,
+            peeling,
+        }
     }
-    Ok(Reconstruction {
-        algorithm: options.algorithm(),
-        triangulation,
-        labels,
-        edges,
-        curves,
-        medial_axis,
-        medial_axis_mode: Some(options.medial_axis()),
-        unassigned,
-        passes: 1 + peeling.extra_passes,
-        budget_exhausted: peeling.budget_exhausted,
-        fitted,
-        warnings: Default::default(),
-        thinned: None,
-    })
 }
 
 /// The reconstruction of a dense band through its `representatives` (local indices of

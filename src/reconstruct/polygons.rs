@@ -30,8 +30,7 @@
 //! coordinates); the loops are sorted by the left side of their boxes, so the candidates for
 //! `A` are a prefix of that order, and only candidates are tested point by edge.
 
-use std::cmp::Ordering;
-
+use super::curves::ring_orientation;
 use super::{Curve, Reconstruction};
 use crate::kernel::{orient, Sign};
 
@@ -208,34 +207,6 @@ fn oriented(indices: &[u32], ring: &Ring, want: Sign) -> Vec<u32> {
         out[1..].reverse();
     }
     out
-}
-
-/// The exact orientation of the simple polygon `ring`: `Positive` when counterclockwise.
-///
-/// At the lexicographically smallest vertex the polygon is convex, so the turn there is the
-/// polygon's orientation. Its two neighbours are both lexicographically larger; they are
-/// collinear with it only if they lie on one ray from it, where the two edges would overlap,
-/// which a simple polygon rules out. `Zero` therefore only for degenerate rings (fewer than
-/// three points, or not simple).
-pub(crate) fn ring_orientation(ring: &[[f64; 2]]) -> Sign {
-    ring_orientation_by(ring.len(), |i| ring[i])
-}
-
-/// [`ring_orientation`] of the ring whose `i`-th of `n` points is `at(i)`.
-pub(crate) fn ring_orientation_by(n: usize, at: impl Fn(usize) -> [f64; 2]) -> Sign {
-    if n < 3 {
-        return Sign::Zero;
-    }
-    let lowest = (0..n)
-        .min_by(|&i, &j| lexicographic(at(i), at(j)))
-        .unwrap_or(0);
-    orient(at((lowest + n - 1) % n), at(lowest), at((lowest + 1) % n))
-}
-
-/// By value (`-0.0` equals `0.0`, which `total_cmp` would not say); coordinates are finite.
-fn lexicographic(a: [f64; 2], b: [f64; 2]) -> Ordering {
-    let by = |x: f64, y: f64| x.partial_cmp(&y).unwrap_or(Ordering::Equal);
-    by(a[0], b[0]).then(by(a[1], b[1]))
 }
 
 /// Where a point lies relative to a closed ring.

@@ -1,5 +1,7 @@
 //! What a reconstruction returns.
 
+use std::fmt;
+
 use super::curves::{self, Curve};
 use super::options::{Algorithm, MedialAxisMode};
 use super::wdm::Label;
@@ -35,7 +37,7 @@ pub struct Reconstruction {
     /// local index (a point on no curve, or one the fit left, at its input coordinates).
     pub(super) fitted: Option<Vec<[f64; 2]>>,
     /// [`Self::warnings`], computed on the first call.
-    pub(super) warnings: std::sync::OnceLock<Vec<super::Warning>>,
+    pub(super) warnings: std::sync::OnceLock<Vec<Warning>>,
     /// With thinning: how many representatives the curves were reconstructed through.
     pub(super) thinned: Option<usize>,
 }
@@ -146,28 +148,6 @@ impl Reconstruction {
     pub fn duplicates(&self) -> &[[u32; 2]] {
         self.triangulation.duplicates()
     }
-
-    /// The signs that this result is probably not what was wanted (most points on no curve,
-    /// a scatter rather than curves, an edge far longer than its neighbours, a loop closed
-    /// across a gap, curves closer than the spacing, peeling stopped at its budget), each
-    /// with what to try; empty when there is nothing to say. Computed on the first call, in
-    /// time linear in the points (about a tenth of the reconstruction's), then kept.
-    ///
-    /// ```
-    /// let points: Vec<[f64; 2]> = (0..64)
-    ///     .map(|k| {
-    ///         let t = k as f64 * std::f64::consts::TAU / 64.0;
-    ///         [t.cos(), t.sin()]
-    ///     })
-    ///     .collect();
-    /// let rec = wdm_crust::reconstruct(&points)?;
-    /// assert!(rec.warnings().is_empty());
-    /// # Ok::<(), wdm_crust::Error>(())
-    /// ```
-    pub fn warnings(&self) -> &[super::Warning] {
-        self.warnings
-            .get_or_init(|| super::diagnose::warnings(self))
-    }
 }
 
 /// The distinct points of `tri` (caller indices, sorted) that no edge of `edges` (caller
@@ -198,4 +178,70 @@ pub(super) fn untouched_local_points(tri: &Triangulation, edges: &[[u32; 2]]) ->
         .collect();
     untouched.sort_unstable();
     untouched
+}
+
+/// What a warning is about; [`name`](Self::name) is its stable code.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[non_exhaustive]
+pub enum WarningCode {
+    /// Most points are on no curve, or no curve was found.
+    MostUnassigned,
+    /// The points look like a scatter, a filled area or a wide band of noise.
+    Scatter,
+    /// A curve edge far longer than the curve edges beside it.
+    LongEdge,
+    /// A closed loop may close across the gap of an open curve.
+    LoopAcrossGap,
+    /// Curves come within the sample spacing of each other.
+    CurvesTooClose,
+    /// Peeling stopped at its budget.
+    PeelingBudget,
+}
+
+impl WarningCode {
+    /// Every code, in the order the warnings are listed.
+    pub const ALL: [WarningCode; 6] = [
+        WarningCode::MostUnassigned,
+        WarningCode::Scatter,
+        WarningCode::LongEdge,
+        WarningCode::LoopAcrossGap,
+        WarningCode::CurvesTooClose,
+        WarningCode::PeelingBudget,
+    ];
+
+    /// The stable code: what the JSON, the GeoJSON and Python carry.
+    pub fn name(self) -> &'static str {
+        match self {
+            WarningCode::MostUnassigned => "most-unassigned",
+            WarningCode::Scatter => "scatter",
+            WarningCode::LongEdge => "long-edge",
+            WarningCode::LoopAcrossGap => "loop-across-gap",
+            WarningCode::CurvesTooClose => "curves-too-close",
+            WarningCode::PeelingBudget => "peeling-budget",
+        }
+    }
+}
+
+impl fmt::Display for WarningCode {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A sign that the result is probably not what was wanted, with what to try.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct Warning {
+    /// What it is about.
+    pub code: WarningCode,
+    /// One sentence for a person: what was seen, where, and what to try.
+    pub message: String,
+    /// The points it is about (caller indices; for an edge its two ends), at most a few.
+    pub points: Vec<u32>,
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} [{}]", self.message, self.code)
+    }
 }

@@ -66,77 +66,14 @@ use std::collections::{BinaryHeap, HashMap, HashSet};
 use super::curves::Curve;
 use super::delaunay_graph::{FastHash, Graph, Waiting};
 use super::lengths::distance;
+use super::thresholds::smooth::{
+    AGREEMENT, FLAT, LINE_RADIUS, LINK, MAD_TO_SIGMA, MAX_ASPECT, MAX_WINDOW_POINTS,
+    MAX_WINDOW_VERTICES, MIN_CIRCLE_RADIUS, MIN_FIT_POINTS, MIN_LINE_POINTS, RESIDUAL_GROWTH,
+    ROBUST_ITERATIONS, SCALE_STEP, SHIFT_RESIDUALS, SIDED_PREFERENCE, TUKEY, WINDOWS, ZIGZAG_SHARE,
+};
 use crate::delaunay::Triangulation;
 use crate::kernel::{orient, Sign};
 use crate::parallel;
-
-/// Window radii grow by this factor: a fit's residual is compared with that of a window
-/// of half its area (√2: the residual of a corner grows by as much per step, and two steps
-/// double it, which [`RESIDUAL_GROWTH`] catches).
-const SCALE_STEP: f64 = std::f64::consts::SQRT_2;
-/// The gathering walks Delaunay edges at most this many times the nearest-neighbour
-/// distance at one of their ends: along the samples of one curve piece, graded sampling
-/// included, not across the inside of a sparse curve (an ε-sample's two sides lie at least
-/// `2/ε` spacings apart, 5 at ε = 0.39) nor from one noise band to the next.
-const LINK: f64 = 3.0;
-
-/// At most this many radii: the largest is `2^11.5 ≈ 2900` times the vertex's longer curve
-/// step (in a dense band the step is a small fraction of the noise; the windows stop long
-/// before, at [`MAX_WINDOW_POINTS`]).
-const WINDOWS: usize = 24;
-/// A window grows no further once it holds this many samples (a bound on work: the error
-/// of a fit over `N` samples falls as `1/√N`, 4 % of the noise here).
-const MAX_WINDOW_POINTS: usize = 512;
-/// A window grows no further once it spans this many of the curve's own vertices. Where
-/// the curve is no thinned band its samples are its vertices, and without this bound
-/// every vertex would average hundreds of its neighbours: the work per vertex grows with
-/// the window and the curve's with both (a 10^5-point noisy curve took 36 s, 4 s with
-/// this bound). 64 vertices put the fit's error at an eighth of the noise. Measured on the
-/// dense-band rows (32 / 64 / 128): median ratio 0.31 each; the 600-point polygons'
-/// nearest fitted vertex to a corner 1.17 / 1.37 / 1.84 σ (square); 10^5 points 2.8 / 4.0
-/// / 6.8 s. 32 averages too few vertices where a curve is noisy but no band.
-const MAX_WINDOW_VERTICES: usize = 64;
-/// The fewest samples (with positive weight) of a window that is fitted: a quadratic has
-/// three parameters, and its residual needs a few more samples to mean anything.
-const MIN_FIT_POINTS: usize = 6;
-/// The fewest samples of a one-sided window (a line: two parameters). Near a corner of a
-/// clean polygon a side may hold few samples within the window's reach; they lie on its
-/// line exactly, and the vertex stays on it.
-const MIN_LINE_POINTS: usize = 4;
-/// A window whose smaller principal variance is more than this share of its larger one
-/// is a blob, not a curve piece (a straight band of half-length `R` and noise `σ` has an
-/// aspect of about `3 (σ/R)²`, so this admits windows of more than about 3.5 σ).
-const MAX_ASPECT: f64 = 0.25;
-/// A family of windows grows while the vertex's offset of its next window agrees with that
-/// of every smaller window within this many standard errors of their difference (for
-/// nested windows `√(s_small² − s_large²)`, the larger averaging the smaller's samples and
-/// more; 3 and 4 measured, dense-band median ratios 0.652 / 0.647): on a noise band the
-/// offsets of growing windows scatter within their errors, which shrink as the windows
-/// take more samples; where a window reaches a corner or a bend the fit cannot follow,
-/// its offset drifts away by more (the intersection-of-confidence-intervals rule).
-const AGREEMENT: f64 = 4.0;
-/// The centred fit is replaced by a one-sided one when its residual is more than this times
-/// the one-sided one's: noise alone makes the residuals of the three families differ by
-/// less.
-const SIDED_PREFERENCE: f64 = 2.0;
-/// A curve is smoothed when more than this share of its vertices zigzag (turn against
-/// both neighbours): about a quarter do where noise sets the turns, none on clean samples.
-const ZIGZAG_SHARE: f64 = 0.05;
-
-/// Turns (sines) below this are no turns to the zigzag test: the rounding of a moved or
-/// scaled straight run of clean samples turns them by about `1e-16`.
-const FLAT: f64 = 1e-9;
-
-/// A family grows only while its residual stays within this factor of that of its window of
-/// half the radius:
-/// on noise the residual stays level as the window grows; where the window takes in a
-/// corner, another piece of the curve or the whole of a small one, the residual grows with
-/// the radius (a corner's doubles in two steps).
-const RESIDUAL_GROWTH: f64 = 1.5;
-
-/// A fit that moves the vertex by more than this many of its residuals is not of the
-/// vertex's own samples (a Gaussian sample lies that far out once in 16 000).
-const SHIFT_RESIDUALS: f64 = 4.0;
 
 /// Residuals and standard errors below this share of the radius are rounding, not noise:
 /// on samples exactly on a line every fit's are about `1e-16 R`.
@@ -813,13 +750,6 @@ fn circle_fit(
     ];
     (position[0].abs() <= 1.0 && position[1].abs() <= 1.0).then_some((position, normal, residual))
 }
-/// Reweightings of a one-sided line fit (Tukey's biweight on the residuals): three settle
-/// it on a side's samples where a few of the other side's were in its half disk.
-const ROBUST_ITERATIONS: usize = 3;
-/// Tukey's constant (95 % efficiency on Gaussian noise), in units of the residuals' scale.
-const TUKEY: f64 = 4.685;
-/// The median absolute residual times this is the noise's standard deviation (Gaussian).
-const MAD_TO_SIGMA: f64 = 1.4826;
 
 /// A Cholesky pivot must exceed this share of its diagonal entry: below, the quadratic's
 /// normal equations are too ill-conditioned (samples nearly on one vertical of the frame),
@@ -839,15 +769,6 @@ fn at_most(x: f64, limit: f64) -> bool {
 /// Newton steps on Taubin's characteristic polynomial (Chernov's bound; it converges in a
 /// few from zero).
 const TAUBIN_ITERATIONS: usize = 99;
-
-/// A circle of fewer than this many window radii is not taken: on a short noisy arc the
-/// circle's curvature is unstable and the projection far from linear in the noise (the
-/// quadratic's standard error then says nothing about it).
-const MIN_CIRCLE_RADIUS: f64 = 2.0;
-
-/// A circle of more than this many window radii is a line to the fit (the quadratic then
-/// fits it as well, and the circle's centre is ill-conditioned).
-const LINE_RADIUS: f64 = 1e3;
 
 /// The solution of the symmetric positive 3 × 3 system `a x = b` (Cholesky), `None` when a
 /// pivot is not clearly positive (relative to the diagonal).

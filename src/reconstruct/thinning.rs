@@ -29,49 +29,17 @@ use std::collections::{HashMap, HashSet};
 
 use super::delaunay_graph::{FastHash, Graph, Waiting};
 use super::lengths::distance;
+use super::thresholds::thinning::{
+    BAND_SPACINGS, COVER_RADIUS, MAX_ASPECT, MIN_CLUSTER_SHARE, MIN_THINNED_POINTS, PROBES,
+    SUBSAMPLE,
+};
 use crate::delaunay::Triangulation;
 use crate::parallel;
-
-/// Below this many distinct points nothing is thinned: a band needs hundreds of points
-/// (its neighbourhoods hold up to [`LADDER`]'s last size), and small inputs are the
-/// sparse samples WDM is made for.
-pub(super) const MIN_THINNED_POINTS: usize = 400;
-
-/// At most this many probes (spread over the locality order): the decision is a median,
-/// and 512 probes put it within a few percent of its value over all points.
-const PROBES: usize = 512;
-
-/// The probes look at a subsample of at most about this many points (every point kept
-/// with the same chance, by a hash of its local index): a band of a million points is
-/// thousands of spacings wide, and its neighbourhoods turn thin only at sizes no probe can
-/// afford. The subsample's spacing is known (the full one times the sampling rate), and the
-/// noise is the same.
-const SUBSAMPLE: usize = 8192;
 
 /// The neighbourhood sizes at which the covariance is read (steps of about 1.5).
 const LADDER: [usize; 15] = [
     8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, 768, 1024,
 ];
-
-/// A neighbourhood is a piece of curve when its smaller principal variance is at most this
-/// share of its larger (the smoothing's `MAX_ASPECT`): a strip of noise σ over a length
-/// `2r` has variances σ² and r²/3, so it is thin once `r` exceeds about 3.5 σ.
-const MAX_ASPECT: f64 = 0.25;
-
-/// A probe is in a band when its noise (the smaller principal deviation where its
-/// neighbourhood turns thin) is at least this many spacings along the curve (the
-/// neighbourhood's length over its number of points). Below, WDM with its repairs
-/// reconstructs the noisy sample as it is (the sparse noise rows up to one spacing).
-const BAND_SPACINGS: f64 = 1.5;
-
-/// The cover's disks have a radius of this many noise deviations: wide enough that one disk
-/// spans the band (about ±2 σ), so that the representatives run along its middle in a
-/// single file, and no wider, so that curves a few band widths apart stay apart.
-const COVER_RADIUS: f64 = 3.0;
-
-/// A disk with fewer points than this share of the median disk's is not represented: its
-/// points are outliers or the band's frayed edge.
-const MIN_CLUSTER_SHARE: f64 = 0.25;
 
 /// The representatives of a dense noisy band (local indices, ascending), or `None` when
 /// the points are no band.

@@ -23,15 +23,8 @@
 
 use std::ops::Range;
 
+use super::super::thresholds::medial_axis::{BLOCK, HALF_WINDOW};
 use crate::reconstruct::lengths::distance;
-
-/// Samples on either side of a sample that its amplitude averages over.
-const HALF_WINDOW: usize = 3;
-
-/// Samples whose estimates are computed together: the temporaries are those of a block
-/// (about 170 KiB), not of the loop (40 bytes a sample were the memory peak of the pruned
-/// axis at 10^6 points on one loop).
-const BLOCK: usize = 4096;
 
 /// How far around a sample its estimates read: the amplitude averages `ψ` over
 /// [`HALF_WINDOW`] samples on either side, and `ψ` reads the curvatures of the neighbours,

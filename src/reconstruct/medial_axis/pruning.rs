@@ -5,6 +5,7 @@
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap, VecDeque};
 
+use super::super::thresholds::medial_axis::{LOOKAHEAD, LOOKAHEAD_REACH};
 use super::NEIGHBOURHOOD;
 use crate::prefetch::prefetch;
 use crate::reconstruct::bits::Bits;
@@ -67,17 +68,6 @@ pub(super) fn prune(
     }
     tree
 }
-
-/// How many leaves ahead of the one being tested [`Lookahead`] fetches: a fetch needs about
-/// as long as a few tests, and what is fetched too early leaves the first-level cache
-/// again. At 10^7 noisy points (one thread) 2, 4, 6, 8, 12 and 16 took the pruning from
-/// 2.16 s without to 1.32, 1.20, 1.13, 1.11, 1.44 and 1.44 s.
-const LOOKAHEAD: usize = 8;
-
-/// How far past the last leaf it found [`Lookahead`] looks for the next, per leaf tested:
-/// where the leaves are sparse, a search to the end of the set for every leaf would cost
-/// more than it saves.
-const LOOKAHEAD_REACH: usize = 512;
 
 /// The next leaves [`LeafQueue`] will give from its set, found [`LOOKAHEAD`] tests ahead so
 /// that what their tests read (the leaf's neighbour: its slots and its ball, each a cache

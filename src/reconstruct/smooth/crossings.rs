@@ -3,22 +3,10 @@
 //! and a closed curve still runs counterclockwise. Where a test fails the moves of the
 //! points involved are undone, until nothing fails.
 
+use super::super::curves::ring_orientation_by;
 use super::super::curves::Curve;
-use super::super::polygons::ring_orientation_by;
+use super::super::thresholds::smooth::{MAX_ROUNDS, SHORTENED, STAGES};
 use crate::kernel::{orient, Sign};
-
-/// At most this many rounds of tests; then every move is undone (the unsmoothed curves are
-/// simple). Undoing spreads by a few points a round; the measurements never needed more
-/// than a handful.
-const MAX_ROUNDS: usize = 64;
-
-/// A move that makes a curve cross is shortened to this share of itself, then to its
-/// square, and so on, [`STAGES`] times, then undone: most crossings in a dense band come
-/// from two neighbouring vertices projected past each other along the fit, and half the
-/// move usually keeps them apart while keeping half the gain.
-const SHORTENED: f64 = 0.5;
-/// Shortenings before a move is undone.
-const STAGES: u8 = 2;
 
 /// Shortens or undoes the moves of `moved` (fitted positions by local point, `None`: at
 /// `points`) where the curves through them would cross, touch or turn clockwise; what

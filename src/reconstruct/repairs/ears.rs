@@ -39,15 +39,16 @@
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
-use super::peel::{edges_near, lies_apart, median_length, MIN_LOOP_POINTS};
-use super::wdm::Label;
+use super::shared::{degrees, edges_near, lies_apart, median_length};
 use crate::delaunay::NO_TWIN;
 use crate::predicates::compare_circumradius;
+use crate::reconstruct::thresholds::peel::MIN_LOOP_POINTS;
+use crate::reconstruct::wdm::Label;
 use crate::voronoi::{EdgeEnd, Voronoi};
 
 /// What to do with an ear that a single outer vertex separates from the curve.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) enum Ears {
+pub(crate) enum Ears {
     /// Join it to the curve through that vertex (drop it when there is none).
     Rejoin,
     /// Drop it always.
@@ -63,7 +64,7 @@ const ROOT: u32 = u32::MAX;
 /// Repairs the ears of `labels` (see the module docs) and updates `edges`, the crust of
 /// `labels` (`[min, max]`, any order; the order of the edges kept is kept, new ones come at
 /// the end). Returns the number of vertices relabelled.
-pub(super) fn repair_ears(
+pub(crate) fn repair_ears(
     vor: &Voronoi<'_>,
     labels: &mut [Label],
     edges: &mut Vec<[u32; 2]>,
@@ -130,7 +131,7 @@ pub(super) fn repair_ears(
 /// Decided on the labels as the water flow left them and on the crust they give: the
 /// islets are disjoint loops, each judged against the same crust, so the order of the points
 /// does not matter.
-pub(super) fn drop_islets(
+pub(crate) fn drop_islets(
     vor: &Voronoi<'_>,
     labels: &mut [Label],
     edges: &mut Vec<[u32; 2]>,
@@ -221,17 +222,6 @@ fn small_loops(point_count: usize, edges: &[[u32; 2]]) -> Vec<Vec<u32>> {
         }
     }
     loops
-}
-
-/// The crust degree of every point (saturating at 255). Degrees are even: the labels change an
-/// even number of times around a cell.
-pub(super) fn degrees(point_count: usize, edges: &[[u32; 2]]) -> Vec<u8> {
-    let mut degree = vec![0u8; point_count];
-    for &[a, b] in edges {
-        degree[a as usize] = degree[a as usize].saturating_add(1);
-        degree[b as usize] = degree[b as usize].saturating_add(1);
-    }
-    degree
 }
 
 /// An inner component, whole when small; a large one only as far as it was explored.

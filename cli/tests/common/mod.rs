@@ -8,6 +8,13 @@ use std::process::{Command, Stdio};
 
 pub const BIN: &str = env!("CARGO_BIN_EXE_wdm-crust");
 
+/// The repository's root, above this package: where `tests/data` and `examples/data` are.
+pub fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("cli/ lies inside the repository")
+}
+
 /// The outcome of one run.
 pub struct Run {
     pub code: i32,

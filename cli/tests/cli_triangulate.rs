@@ -500,7 +500,7 @@ fn closed_standard_output_is_a_quiet_success() {
 /// `tests/data/<rel>`: the real point sets, inside the repository (GPL-3.0 data, see
 /// `tests/data/README.md`). A missing file fails the test.
 fn data_path(rel: &str) -> PathBuf {
-    let path = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data")).join(rel);
+    let path = common::root().join("tests/data").join(rel);
     assert!(
         path.is_file(),
         "test data {} is missing (the real point sets live in tests/data, see its README.md)",

@@ -5,10 +5,10 @@ use std::path::PathBuf;
 use clap::{Args, ValueEnum};
 use wdm_crust::io::{write_triangulation_json, write_triangulation_text};
 
+use super::common::CommonArgs;
 use super::input::{ColumnsArg, Input};
 use super::output::Output;
 use super::report::counted;
-use super::threads::ThreadsArg;
 use super::timings::Timings;
 use super::{triangulate_timed, write_timed, CliError};
 
@@ -47,30 +47,18 @@ pub struct TriangulateArgs {
     #[arg(long, value_enum, default_value_t = TriangulateFormat::Json)]
     format: TriangulateFormat,
 
-    /// Write to OUTPUT instead of standard output; OUTPUT is replaced only on success.
-    #[arg(short, long, value_name = "OUTPUT")]
-    output: Option<PathBuf>,
-
-    /// Print the wall time of each phase (parse, triangulate, write) to standard error.
-    #[arg(long)]
-    timings: bool,
-
     #[command(flatten)]
-    pub threads: ThreadsArg,
+    pub common: CommonArgs,
 
-    /// Nothing on standard error but errors: no summary line, no warnings, no notes, no
-    /// progress.
-    #[arg(short, long, conflicts_with = "timings")]
-    pub quiet: bool,
     #[command(flatten)]
     columns: ColumnsArg,
 }
 
 /// Reads, triangulates, writes.
 pub fn run(args: &TriangulateArgs) -> Result<(), CliError> {
-    let mut timings = Timings::new(args.timings);
+    let mut timings = Timings::new(args.common.timings);
     let input = Input::new(args.input.as_deref(), &args.columns);
-    let output = Output::new(args.output.as_deref())?;
+    let output = Output::new(args.common.output.as_deref())?;
 
     let points = input.read_points_timed(&mut timings)?;
 

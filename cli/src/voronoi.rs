@@ -7,10 +7,10 @@ use clap::{Args, ValueEnum};
 use wdm_crust::io::{write_voronoi_geojson, write_voronoi_json, write_voronoi_text};
 use wdm_crust::BoundingBox;
 
+use super::common::CommonArgs;
 use super::input::{ColumnsArg, Input};
 use super::output::Output;
 use super::report::counted;
-use super::threads::ThreadsArg;
 use super::timings::Timings;
 use super::{triangulate_timed, write_timed, CliError};
 
@@ -79,22 +79,9 @@ pub struct VoronoiArgs {
     #[arg(long, value_name = "XMIN,YMIN,XMAX,YMAX", allow_hyphen_values = true, value_parser = parse_clip)]
     clip: Option<BoundingBox>,
 
-    /// Write to OUTPUT instead of standard output; OUTPUT is replaced only on success.
-    #[arg(short, long, value_name = "OUTPUT")]
-    output: Option<PathBuf>,
-
-    /// Print the wall time of each phase (parse, triangulate, voronoi, write) to standard
-    /// error.
-    #[arg(long)]
-    timings: bool,
-
     #[command(flatten)]
-    pub threads: ThreadsArg,
+    pub common: CommonArgs,
 
-    /// Nothing on standard error but errors: no summary line, no warnings, no notes, no
-    /// progress.
-    #[arg(short, long, conflicts_with = "timings")]
-    pub quiet: bool,
     #[command(flatten)]
     columns: ColumnsArg,
 }
@@ -104,6 +91,7 @@ impl VoronoiArgs {
     fn format(&self) -> VoronoiFormat {
         self.format.unwrap_or_else(|| {
             let is_geojson = self
+                .common
                 .output
                 .as_deref()
                 .and_then(Path::extension)
@@ -144,9 +132,9 @@ pub fn run(args: &VoronoiArgs) -> Result<(), CliError> {
             "--clip clips the cells of the GeoJSON output: it needs --format geojson; see 'wdm-crust voronoi --help'",
         ));
     }
-    let mut timings = Timings::new(args.timings);
+    let mut timings = Timings::new(args.common.timings);
     let input = Input::new(args.input.as_deref(), &args.columns);
-    let output = Output::new(args.output.as_deref())?;
+    let output = Output::new(args.common.output.as_deref())?;
 
     let points = input.read_points_timed(&mut timings)?;
 

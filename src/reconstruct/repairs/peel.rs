@@ -2,59 +2,20 @@
 //! and which inner Voronoi vertices those holes take away from the medial axis. All point
 //! indices here are local to the full triangulation.
 
-use super::bits::Bits;
-use super::curves::{assemble_named, Adjacency, Curve, SomeAdjacency};
 use super::ears::{repair_ears, Ears};
-use super::extract::wdm_crust_edges;
-use super::lengths::distance;
-use super::medial_axis::parity_from_infinity;
-use super::options::Options;
-use super::segment_walk::crosses_a_curve;
-use super::wdm;
+use super::shared::{edges_near, lies_apart, median_length, segment_distance};
 use crate::delaunay::triangulate;
+use crate::reconstruct::curves::{assemble_named, Adjacency, Curve};
+use crate::reconstruct::extract::wdm_crust_edges;
+use crate::reconstruct::lengths::distance;
+use crate::reconstruct::options::Options;
+use crate::reconstruct::parity::parity_from_infinity;
+use crate::reconstruct::segment_walk::crosses_a_curve;
+use crate::reconstruct::thresholds::peel::{
+    LINK, MAX_MEDIAN_TURN, MIN_CHAIN_POINTS, MIN_GROUP, MIN_LOOP_POINTS, NEAR_CURVE, SPARSER_LOOP,
+};
+use crate::reconstruct::wdm;
 use crate::voronoi::Voronoi;
-
-/// How close to a curve already found a left-over point may lie and still be taken for a
-/// sample of another curve: its distance to a curve edge, in units of that edge's length.
-/// The leftovers of a noise band sit within about the noise amplitude of the curve, which
-/// is of the order of the sample spacing, while a curve separate from it (a hole) lies at
-/// least about 1/ε sample spacings away for an ε-sample (ε < 1): see [`peel`].
-const NEAR_CURVE: f64 = 1.5;
-
-/// How much sparser than the curves found before it a later pass's loop may be sampled: the
-/// median of its edge lengths, in units of the median over the curves found before. A
-/// nested curve in a scan is sampled like the rest of it; a loop drawn through scattered
-/// outliers inside a shape has edges of the outliers' spacing, many sample spacings long.
-const SPARSER_LOOP: f64 = 3.0;
-
-/// How far apart two left-over points may lie and still be linked into one group
-/// ([`isolated_leftovers`]), in units of the longer of their nearest-neighbour distances:
-/// [`SPARSER_LOOP`], the sparsest sampling a kept loop may have relative to its
-/// surroundings.
-const LINK: f64 = SPARSER_LOOP;
-
-/// The fewest left-over points of a group that takes part in a later pass
-/// ([`isolated_leftovers`]): three, the fewest that bound anything.
-const MIN_GROUP: usize = 3;
-
-/// The largest median turning angle of a later pass's curve: 20°, about the turn per
-/// sample of an ε-sample with ε = 0.35 (see [`is_a_curve`]).
-const MAX_MEDIAN_TURN: f64 = 20.0 * std::f64::consts::PI / 180.0;
-
-/// The fewest points of a closed loop a later pass keeps: a closed curve turns by 2π, and an
-/// ε-sample of it by about ε per sample, so a loop of fewer than 7 points is no ε-sample for
-/// any ε < 1 (see [`is_a_curve`]).
-pub(super) const MIN_LOOP_POINTS: usize = 7;
-
-/// How far, in its own sample spacings, a loop closed by a chord ([`close_by_chord`]) must
-/// keep from the curves found before: two curves of an ε-sample (ε < 1) lie at least twice
-/// the local feature size apart, and a sample spacing is at most ε times it, so a loop
-/// closer than 2 of its spacings to an earlier curve is no separate curve of the sample
-/// (see [`lies_apart`]).
-const APART: f64 = 2.0;
-
-/// The fewest points of an open chain a later pass keeps (see [`is_a_curve`]).
-const MIN_CHAIN_POINTS: usize = 8;
 
 /// Reruns WDM_CRUST on the points no curve has taken, to find nested curves (holes),
 /// until a pass finds no new closed curve, fewer than three points remain, or the next pass
@@ -80,7 +41,7 @@ const MIN_CHAIN_POINTS: usize = 8;
 /// Points excluded by these rules stay without edges: the reconstruction reports them as
 /// unassigned. On clean samples nothing changes: a hole's samples are far from the outer
 /// curve relative to the sample spacing, and its loop is all the pass finds.
-pub(super) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Options) -> Peeling {
+pub(crate) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Options) -> Peeling {
     let tri = full.triangulation();
     let points = &tri.points;
     let n = points.len();
@@ -171,24 +132,6 @@ fn first_pass_may_run(full: &Voronoi<'_>, edges: &[[u32; 2]]) -> bool {
         .collect();
     let isolated = isolated_leftovers(full, &rest);
     rest.len() - isolated.len() >= 3
-}
-
-/// The `edges` at the Delaunay neighbours of `points`: what [`near_a_curve`] and
-/// [`lies_apart`] read of the curves around those points, without an adjacency of every
-/// edge (a pass over all points).
-pub(super) fn edges_near(full: &Voronoi<'_>, points: &[u32], edges: &[[u32; 2]]) -> SomeAdjacency {
-    let mut asked = Bits::new(full.triangulation().points.len());
-    for &p in points {
-        for q in full.delaunay_neighbours_local(p) {
-            asked.set(q as usize);
-        }
-    }
-    let near: Vec<[u32; 2]> = edges
-        .iter()
-        .copied()
-        .filter(|&[a, b]| asked.get(a as usize) || asked.get(b as usize))
-        .collect();
-    SomeAdjacency::new(&near)
 }
 
 /// The left-over points that lie apart from every other left-over point: in connected
@@ -392,65 +335,12 @@ fn is_a_curve(points: &[[f64; 2]], curve: &Curve, scale: f64) -> bool {
     *turns.select_nth_unstable_by(mid, f64::total_cmp).1 <= MAX_MEDIAN_TURN
 }
 
-/// Does the loop `curve` keep at least [`APART`] of its own sample spacings (`spacing`,
-/// its median edge) from the curves found before (`earlier`)? Measured from each of its
-/// points to the earlier curves' edges at the point's Delaunay neighbours (where the
-/// nearest curve is when no other point lies between).
-///
-/// Only the earlier curves' edges at the neighbours `q` with `counts(q)` are looked at (the
-/// islets of `ears.rs` leave out their own points).
-pub(super) fn lies_apart<'a>(
-    full: &Voronoi<'_>,
-    earlier: impl Fn(u32) -> &'a [(u32, u32)],
-    curve: &[u32],
-    spacing: f64,
-    counts: impl Fn(u32) -> bool,
-) -> bool {
-    let points = &full.triangulation().points;
-    let at = |i: u32| points[i as usize];
-    curve.iter().all(|&p| {
-        full.delaunay_neighbours_local(p)
-            .filter(|&q| counts(q))
-            .all(|q| {
-                earlier(q)
-                    .iter()
-                    .all(|&(_, r)| segment_distance(at(p), at(q), at(r)) >= APART * spacing)
-            })
-    })
-}
-
 /// The angle (radians, in `[0, π]`) by which the path `a → b → c` turns at `b`.
 fn turning_angle(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
     let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
     (u[0] * v[1] - u[1] * v[0])
         .atan2(u[0] * v[0] + u[1] * v[1])
         .abs()
-}
-
-/// The median length of `edges` (0 for none). A rounded length: it only sets the scale of a
-/// rule's threshold, never an exact decision.
-pub(super) fn median_length(points: &[[f64; 2]], edges: &[[u32; 2]]) -> f64 {
-    let mut lengths: Vec<f64> = edges
-        .iter()
-        .map(|&[a, b]| distance(points[a as usize], points[b as usize]))
-        .collect();
-    if lengths.is_empty() {
-        return 0.0;
-    }
-    let mid = lengths.len() / 2;
-    *lengths.select_nth_unstable_by(mid, f64::total_cmp).1
-}
-
-/// Distance from `p` to the segment `ab`.
-fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let len2 = dx * dx + dy * dy;
-    let t = if len2 > 0.0 {
-        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    distance(p, [a[0] + t * dx, a[1] + t * dy])
 }
 
 /// Is `p` a leftover of a curve's noise band: closer to a curve edge at one of its Delaunay
@@ -481,13 +371,13 @@ fn near_a_curve<'a>(full: &Voronoi<'_>, curve: impl Fn(u32) -> &'a [(u32, u32)],
 }
 
 /// How peeling ended.
-pub(super) struct Peeling {
-    pub(super) extra_passes: usize,
-    pub(super) budget_exhausted: bool,
+pub(crate) struct Peeling {
+    pub(crate) extra_passes: usize,
+    pub(crate) budget_exhausted: bool,
 }
 
 impl Peeling {
-    pub(super) fn done(extra_passes: usize) -> Peeling {
+    pub(crate) fn done(extra_passes: usize) -> Peeling {
         Peeling {
             extra_passes,
             budget_exhausted: false,
@@ -510,7 +400,7 @@ impl Peeling {
 ///
 /// The curves (the final ones), `not_first_pass` (which tells the curves' edges the first
 /// pass did not find) and the result are in local indices.
-pub(super) fn hole_edges(
+pub(crate) fn hole_edges(
     vor: &Voronoi<'_>,
     curves: &[Curve],
     not_first_pass: impl Fn(&[u32; 2]) -> bool,
@@ -535,7 +425,7 @@ pub(super) fn hole_edges(
 /// Every Voronoi vertex: is it separated from infinity by an odd number of the given edges
 /// (searched from the rays)? Well defined only for a set of closed loops, see
 /// [`hole_edges`].
-pub(super) fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
+pub(crate) fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
     let tri = vor.triangulation();
     // Crust neighbours of every point (two for most): a lookup touches one short row
     // instead of a binary search over all edges.

@@ -39,32 +39,17 @@
 //! edited so far, so neither the input order nor the thread count matters. A drop keeps the
 //! degrees of `a` and `b` (2) and takes the spike's points from 2 to 0, like a swap.
 
-use super::detours::{EditedCurves, Swap};
+use super::shared::{EditedCurves, Swap};
 use crate::kernel::{orient, Sign};
+use crate::reconstruct::thresholds::spikes::{
+    GLOBAL_CONTRAST, LOCAL_CONTRAST, MEDIAN_SAMPLE, MIN_SPIKE_TURN, PAIR_FACTOR,
+};
 use crate::voronoi::Voronoi;
-
-/// The least turn of a spike (60°). Measured on `examples/quality.rs` with the contrasts
-/// below, recall at 10 / 20 / 40 / 70 % outliers: 60° 98.0 / 95.7 / 92.3 / 82.8; 90° (an
-/// exact dot-product sign for one point) 97.7 / 95.2 / 91.2 / 81.7 without pairs.
-const MIN_SPIKE_TURN: f64 = std::f64::consts::FRAC_PI_3;
-
-/// How many times a spike must turn more than each point of the run around it, without it.
-/// 3 instead of 4 gained 0.2–0.5 points of recall on the outlier rows and lost samples of the
-/// survey's noisy curves (noise 0.3 spacing: "on" 96.9 → 96.7 %).
-const LOCAL_CONTRAST: f64 = 4.0;
-
-/// How many times a spike must turn more than the median point of the curves. 3 instead of
-/// 4: survey noise 0.3 spacing "on" 96.9 → 96.8 %, the real `drill.txt` 96.5 → 96.0 %.
-const GLOBAL_CONTRAST: f64 = 4.0;
-
-/// Both contrasts are this much higher for a spike of two points (1: survey noise 0.3
-/// spacing "on" 96.9 → 96.5 %, the real `vase.txt` 98.1 → 97.2 %).
-const PAIR_FACTOR: f64 = 1.5;
 
 /// Drops every woven spike (module docs) from `curves`; how many points were dropped.
 /// `median` is the median turn of the curves, computed on first need and kept for later
 /// calls (the rounds of the repair change few points).
-pub(super) fn drop_woven_spikes(
+pub(crate) fn drop_woven_spikes(
     vor: &Voronoi<'_>,
     curves: &mut EditedCurves,
     median: &mut Option<f64>,
@@ -217,9 +202,6 @@ fn turns_more_than(p: [f64; 2], q: [f64; 2], r: [f64; 2], angle: f64) -> bool {
     dot <= 0.0 || dot * dot < 1.000_001 * c * c * lengths
 }
 
-/// The most points whose turns estimate the median (a bound on its cost on large inputs).
-const MEDIAN_SAMPLE: usize = 8192;
-
 /// The median turn of the points with two curve edges (0 when there are none), over at most
 /// about [`MEDIAN_SAMPLE`] points taken at even steps of the local order (which follows the
 /// coordinates, so the estimate does not depend on the input order).
@@ -244,7 +226,9 @@ fn median_turn(points: &[[f64; 2]], curves: &EditedCurves) -> f64 {
 mod tests {
     use super::*;
     use crate::delaunay::triangulate;
-    use crate::reconstruct::detours::tests::{assert_repaired_alike_in_any_order, repaired};
+    use crate::reconstruct::repairs::detours::tests::{
+        assert_repaired_alike_in_any_order, repaired,
+    };
     use std::f64::consts::TAU;
 
     /// `k` points on the ellipse with half-axes 1 and `b`, counterclockwise from angle 0.

@@ -22,9 +22,9 @@
 //! Equal distances are broken by the coordinates of the candidates (smaller `x`, then smaller
 //! `y`), never by input index, so the result does not depend on the order of the input.
 
-use super::extract::chain_edges;
-use super::proximity::DelaunayGraph;
 use crate::delaunay::Triangulation;
+use crate::reconstruct::curves::chain_edges;
+use crate::reconstruct::proximity::DelaunayGraph;
 
 /// NN-crust edges of the distinct points of `tri`, `[i, j]` with `i < j`, sorted.
 ///
@@ -70,10 +70,11 @@ pub(crate) fn nn_crust_edges_local(tri: &Triangulation) -> Vec<[u32; 2]> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::proximity::closer;
     use super::*;
     use crate::kernel::metric::{distance_order, dot_sign};
     use crate::kernel::Sign;
+    use crate::reconstruct::baselines::reference::{self, d2, Q};
+    use crate::reconstruct::proximity::closer;
     use num_rational::BigRational;
     use std::cmp::Ordering;
 
@@ -226,52 +227,8 @@ mod tests {
     /// centres on each pair's bisector that keeps all other points strictly outside, then
     /// nearest and half neighbours by exact squared distances, ties by coordinates.
     fn reference_nn_crust(points: &[[f64; 2]]) -> Vec<[u32; 2]> {
-        type Q = BigRational;
-        let mut ids: Vec<usize> = Vec::new();
-        for i in 0..points.len() {
-            if !ids.iter().any(|&j| points[j] == points[i]) {
-                ids.push(i);
-            }
-        }
-        let s: Vec<[Q; 2]> = ids
-            .iter()
-            .map(|&i| [rational(points[i][0]), rational(points[i][1])])
-            .collect();
-        let d2 = |a: &[Q; 2], b: &[Q; 2]| {
-            let (dx, dy) = (&a[0] - &b[0], &a[1] - &b[1]);
-            &dx * &dx + &dy * &dy
-        };
-        let two = Q::from_integer(2.into());
-        let delaunay = |i: usize, j: usize| {
-            let (p, q) = (&s[i], &s[j]);
-            let m = [(&p[0] + &q[0]) / &two, (&p[1] + &q[1]) / &two];
-            let n = [&p[1] - &q[1], &q[0] - &p[0]];
-            let mp = d2(&m, p);
-            let (mut lo, mut hi): (Option<Q>, Option<Q>) = (None, None);
-            for (k, x) in s.iter().enumerate() {
-                if k == i || k == j {
-                    continue;
-                }
-                let side = &n[0] * (&x[0] - &m[0]) + &n[1] * (&x[1] - &m[1]);
-                let c = d2(&m, x) - &mp;
-                if side == Q::from_integer(0.into()) {
-                    if c < Q::from_integer(0.into()) {
-                        return false;
-                    }
-                    continue;
-                }
-                let t = c / (&side * &two);
-                if side > Q::from_integer(0.into()) {
-                    hi = Some(hi.map_or(t.clone(), |h| if t < h { t.clone() } else { h }));
-                } else {
-                    lo = Some(lo.map_or(t.clone(), |l| if t > l { t.clone() } else { l }));
-                }
-            }
-            match (lo, hi) {
-                (Some(l), Some(h)) => l < h,
-                _ => true,
-            }
-        };
+        let (ids, s) = reference::distinct(points);
+        let delaunay = |i: usize, j: usize| reference::strictly_delaunay(&s[i], &s[j], &s);
         let mut edges = Vec::new();
         for p in 0..s.len() {
             let nbrs: Vec<usize> = (0..s.len()).filter(|&a| a != p && delaunay(p, a)).collect();

@@ -151,7 +151,7 @@ fn json_and_text_match_the_library() {
 
 #[test]
 fn real_data_round_trip() {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/data/crocodile-conf.p2d");
+    let path = common::root().join("examples/data/crocodile-conf.p2d");
     let points = wdm_crust::io::read_points_from_path(&path).unwrap();
     let arg = path.to_str().unwrap();
     let run = run_in(Path::new("."), &["voronoi", arg], b"");

@@ -15,7 +15,7 @@ const SUBCOMMANDS: [&str; 3] = ["triangulate", "voronoi", "reconstruct"];
 
 /// The bundled bean: 150 points on a closed curve.
 fn bean() -> Vec<[f64; 2]> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/data/bean.txt");
+    let path = common::root().join("examples/data/bean.txt");
     wdm_crust::io::read_points_from_path(&path).unwrap()
 }
 
@@ -87,7 +87,7 @@ fn geographic_and_projected_headers_read_longitude_as_x() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     let points = bean();
-    let bean_txt = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/data/bean.txt");
+    let bean_txt = common::root().join("examples/data/bean.txt");
     let bean_txt = bean_txt.to_str().unwrap();
     let expected = output(d, &["reconstruct", bean_txt, "--format", "geojson"]);
     // The curve through every point: the output holds each input position, exactly.

@@ -47,73 +47,20 @@
 use std::cmp::Reverse;
 use std::collections::{BTreeMap, BTreeSet, BinaryHeap, HashMap};
 
-use super::bits::Bits;
-use super::curves::Adjacency;
-use super::proximity::closer;
+use super::shared::{EditedCurves, Repair, Swap};
 use super::spikes::drop_woven_spikes;
 use crate::kernel::metric::{dot_sign, length_order};
 use crate::kernel::Sign;
+use crate::reconstruct::curves::Adjacency;
+use crate::reconstruct::proximity::closer;
+use crate::reconstruct::thresholds::detours::{
+    MAX_ANCHORS, MAX_DETOUR_POINTS, MIN_UNASSIGNED_FOR_SPIKES, ROUNDS,
+};
 use crate::voronoi::Voronoi;
-
-/// The most inner points of a detour a swap removes. Measured on the outlier rows of
-/// `examples/quality.rs` (recall at 40 / 70 % outliers): 8, 12, 16, 24 inner points gave
-/// 89.3 / 80.5, 90.2 / 78.6, 90.2 / 80.6, 89.8 / 77.2 %; longer bounds let true stretches
-/// go.
-const MAX_DETOUR_POINTS: usize = 16;
-
-/// The most points on a curve one group may touch for its pairs to be tried (a bound on the
-/// work: a group of noise leftovers along a whole curve touches many). Outliers inside the
-/// shape link several stretches into one group: 6 instead of 12 cost 4 points of recall at
-/// 70 % outliers; 64 gave the same rows as 24.
-const MAX_ANCHORS: usize = 24;
-
-/// The most rounds of steps 1–2: one reached 85.5 / 73.6 % recall at 40 / 70 % outliers,
-/// three 90.2 / 80.6 %, five 90.2 / 80.4 %.
-const ROUNDS: usize = 3;
-
-/// The least share of unassigned points for step 4 (spikes) to run: a sample with fewer
-/// points off the curves shows no outliers to look for (as one with none: then the repair
-/// does not run at all). It bounds the cost on large, nearly clean inputs (the benches'
-/// noisy curve leaves 3 of 10^6 points off, and its noise of a tenth of a spacing has tens
-/// of turns sharp enough to pass for spikes); 0, 0.5 % and 1 % gave the same rows of
-/// `examples/quality.rs`.
-const MIN_UNASSIGNED_FOR_SPIKES: f64 = 0.01;
-
-/// What the repair changes: edges to add and edges to remove, each sorted.
-pub(super) struct Repair {
-    /// The reattached stretches.
-    pub(super) added: Vec<[u32; 2]>,
-    /// The detours.
-    pub(super) removed: Vec<[u32; 2]>,
-}
-
-impl Repair {
-    pub(super) fn none() -> Repair {
-        Repair {
-            added: Vec::new(),
-            removed: Vec::new(),
-        }
-    }
-
-    /// Applies the repair to the edges it was computed on.
-    pub(super) fn apply(&self, edges: &mut Vec<[u32; 2]>) {
-        if let Some(largest) = self.removed.iter().map(|e| e[0]).max() {
-            // A bit test on the smaller end first: a search of `removed` for every edge was
-            // most of the time.
-            let mut ends = Bits::new(largest as usize + 1);
-            for &[a, _] in &self.removed {
-                ends.set(a as usize);
-            }
-            let may_be_removed = |a: u32| a <= largest && ends.get(a as usize);
-            edges.retain(|e| !may_be_removed(e[0]) || self.removed.binary_search(e).is_err());
-        }
-        edges.extend_from_slice(&self.added);
-    }
-}
 
 /// The repair (module docs) of `edges` (distinct, `[min, max]`, any order), as edges to add
 /// and to remove.
-pub(super) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
+pub(crate) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
     let n = vor.triangulation().points.len();
     let mut on_curve = vec![false; n];
     for &[a, b] in edges {
@@ -151,12 +98,6 @@ pub(super) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
         }
     }
     edited.map_or_else(Repair::none, EditedCurves::into_repair)
-}
-
-/// A swap: the stretch's edges replace the detour's.
-pub(super) struct Swap {
-    pub(super) stretch: Vec<[u32; 2]>,
-    pub(super) detour: Vec<[u32; 2]>,
 }
 
 /// A group of step 1 as its edges, sorted.
@@ -405,84 +346,6 @@ fn detour_to(chains: &[Vec<u32>], b: u32) -> Option<Vec<[u32; 2]>> {
     )
 }
 
-/// The curve edges with the swaps made so far: the original edges, and the current
-/// neighbours of every point a swap touched (a flag per point says which, so that walking
-/// untouched curves costs no lookup).
-pub(super) struct EditedCurves {
-    original: Adjacency,
-    touched: Vec<bool>,
-    current: BTreeMap<u32, Vec<u32>>,
-    removed: BTreeSet<[u32; 2]>,
-    added: BTreeSet<[u32; 2]>,
-}
-
-impl EditedCurves {
-    pub(super) fn new(n: usize, edges: &[[u32; 2]]) -> Self {
-        EditedCurves {
-            original: Adjacency::new(n, edges),
-            touched: vec![false; n],
-            current: BTreeMap::new(),
-            removed: BTreeSet::new(),
-            added: BTreeSet::new(),
-        }
-    }
-
-    /// The current curve neighbours of `p`, when there are exactly two.
-    pub(super) fn two_neighbours(&self, p: u32) -> Option<[u32; 2]> {
-        if self.touched[p as usize] {
-            match self.current[&p].as_slice() {
-                &[x, y] => Some([x, y]),
-                _ => None,
-            }
-        } else {
-            match self.original.neighbours(p) {
-                &[(_, x), (_, y)] => Some([x, y]),
-                _ => None,
-            }
-        }
-    }
-
-    /// Which points have a curve edge now, given which had one in the original edges.
-    fn on_curve(&self, original: &[bool]) -> Vec<bool> {
-        let mut on_curve = original.to_vec();
-        for (&p, neighbours) in &self.current {
-            on_curve[p as usize] = !neighbours.is_empty();
-        }
-        on_curve
-    }
-
-    /// The current neighbours of `p`, to edit.
-    fn neighbours_mut(&mut self, p: u32) -> &mut Vec<u32> {
-        let original = &self.original;
-        self.touched[p as usize] = true;
-        self.current
-            .entry(p)
-            .or_insert_with(|| original.neighbours(p).iter().map(|&(_, q)| q).collect())
-    }
-
-    pub(super) fn swap(&mut self, swap: &Swap) {
-        for &[a, b] in &swap.detour {
-            if !self.added.remove(&[a, b]) {
-                self.removed.insert([a, b]);
-            }
-            self.neighbours_mut(a).retain(|&q| q != b);
-            self.neighbours_mut(b).retain(|&q| q != a);
-        }
-        for &[a, b] in &swap.stretch {
-            self.added.insert([a, b]);
-            self.neighbours_mut(a).push(b);
-            self.neighbours_mut(b).push(a);
-        }
-    }
-
-    pub(super) fn into_repair(self) -> Repair {
-        Repair {
-            added: self.added.into_iter().collect(),
-            removed: self.removed.into_iter().collect(),
-        }
-    }
-}
-
 /// Candidate edges of step 1 (module docs), sorted.
 fn candidate_edges(named: &mut NeighbourNames<'_, '_>, on_curve: &[bool]) -> Vec<[u32; 2]> {
     let mut candidates = Vec::new();
@@ -617,7 +480,7 @@ impl UnionFind {
 }
 
 #[cfg(test)]
-pub(super) mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::delaunay::triangulate;
     use std::f64::consts::TAU;

@@ -1,7 +1,12 @@
-//! The command line: one module per subcommand plus the shared pieces (input, output,
-//! errors, timings). A new subcommand is a new module with an `Args` struct and a `run`
-//! function, and one more variant of [`Command`].
+//! The `wdm-crust` command line: argument parsing and dispatch here, the work in the
+//! `wdm_crust` library (its file formats are `wdm_crust::io`). See `wdm-crust --help`.
+//!
+//! One module per subcommand plus the shared pieces (input, output, errors, timings). A new
+//! subcommand is a new module with an `Args` struct and a `run` function, and one more
+//! variant of [`Command`].
+#![forbid(unsafe_code)]
 
+mod common;
 mod error;
 mod input;
 mod output;
@@ -18,7 +23,7 @@ use std::process::ExitCode;
 use clap::error::ErrorKind;
 use clap::{Parser, Subcommand};
 
-pub use error::CliError;
+use error::CliError;
 
 /// Shown after the top-level help.
 const FORMATS_HELP: &str = "\
@@ -76,25 +81,25 @@ impl Command {
     /// The subcommand's `--quiet`.
     fn quiet(&self) -> bool {
         match self {
-            Command::Triangulate(args) => args.quiet,
-            Command::Voronoi(args) => args.quiet,
-            Command::Reconstruct(args) => args.quiet,
+            Command::Triangulate(args) => args.common.quiet,
+            Command::Voronoi(args) => args.common.quiet,
+            Command::Reconstruct(args) => args.common.quiet,
         }
     }
 
     /// The subcommand's `--threads`.
     fn threads(&self) -> threads::ThreadsArg {
         match self {
-            Command::Triangulate(args) => args.threads,
-            Command::Voronoi(args) => args.threads,
-            Command::Reconstruct(args) => args.threads,
+            Command::Triangulate(args) => args.common.threads,
+            Command::Voronoi(args) => args.common.threads,
+            Command::Reconstruct(args) => args.common.threads,
         }
     }
 }
 
 /// Parses the command line, runs the subcommand and turns the outcome into an exit code,
 /// with at most one line on standard error for a failure.
-pub fn run() -> ExitCode {
+fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => return clap_exit(&e),

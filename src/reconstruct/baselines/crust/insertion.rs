@@ -29,7 +29,7 @@ const NONE: u32 = u32::MAX;
 /// for the outside of the hull edge `b → a` (the interior of the hull lies left of `b → a`,
 /// so the outside lies left of `a → b`). `nb[t][k]` is the triangle across the edge opposite
 /// corner `k`, i.e. across `(v[t][k+1], v[t][k+2])`.
-pub(super) struct Dt<'p, 'a> {
+pub(crate) struct Dt<'p, 'a> {
     pts: &'p MixedPoints<'a>,
     v: Vec<[u32; 3]>,
     nb: Vec<[u32; 3]>,
@@ -52,7 +52,7 @@ pub(super) struct Dt<'p, 'a> {
 impl<'p, 'a> Dt<'p, 'a> {
     /// The triangulation `tri` (non-degenerate) with ghost triangles, over `pts`, which must
     /// hold `tri`'s points as its samples.
-    pub(super) fn new(tri: &Triangulation, pts: &'p MixedPoints<'a>, vertex_count: usize) -> Self {
+    pub(crate) fn new(tri: &Triangulation, pts: &'p MixedPoints<'a>, vertex_count: usize) -> Self {
         let solid = tri.triangle_count();
         let halfedges = tri.halfedges();
         let mut v: Vec<[u32; 3]> = tri.triangles.clone();
@@ -197,7 +197,7 @@ impl<'p, 'a> Dt<'p, 'a> {
 
     /// Inserts point `w`, walking from a triangle at vertex `near` (already inserted).
     /// Returns false if `w` coincides with a vertex (nothing changes).
-    pub(super) fn insert(&mut self, w: u32, near: u32) -> bool {
+    pub(crate) fn insert(&mut self, w: u32, near: u32) -> bool {
         let start = self.at_vertex[near as usize];
         let t0 = self.locate(start, w);
         if !self.conflicts(t0, w) {
@@ -285,7 +285,7 @@ impl<'p, 'a> Dt<'p, 'a> {
     /// Calls `f(a, b, c, across)` once for every edge `a → b` of a solid triangle `(a, b, c)`
     /// (counterclockwise) whose ends are both samples: `across` is the corner of the triangle
     /// on the other side of the edge, `None` for a hull edge.
-    pub(super) fn for_each_sample_edge(&self, mut f: impl FnMut(u32, u32, u32, Option<u32>)) {
+    pub(crate) fn for_each_sample_edge(&self, mut f: impl FnMut(u32, u32, u32, Option<u32>)) {
         for (t, corners) in self.v.iter().enumerate() {
             if !self.alive[t] || corners[2] == GHOST {
                 continue;

@@ -46,9 +46,9 @@
 
 mod insertion;
 
-use super::extract::chain_edges;
 use crate::delaunay::Triangulation;
 use crate::kernel::Sign;
+use crate::reconstruct::curves::chain_edges;
 
 use self::insertion::Dt;
 use crate::kernel::mixed::MixedPoints;
@@ -169,34 +169,15 @@ fn hilbert_index(side: u32, mut x: u32, mut y: u32) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::reconstruct::baselines::reference::{self, d2, Q};
     use crate::triangulate;
-    use num_rational::BigRational;
-    use num_traits::{Signed, Zero};
-
-    type Q = BigRational;
-
-    fn q(x: f64) -> Q {
-        Q::from_float(x).unwrap()
-    }
+    use num_traits::Zero;
 
     /// Brute-force exact reference, independent of the triangulation code: `V` from all triples
     /// with an empty circumcircle, then for every pair the interval of circle centres on its
     /// bisector that keeps every other point of `S ∪ V` strictly outside.
     fn reference_crust(points: &[[f64; 2]]) -> Vec<[u32; 2]> {
-        let mut distinct: Vec<usize> = Vec::new();
-        for i in 0..points.len() {
-            if !distinct.iter().any(|&j| points[j] == points[i]) {
-                distinct.push(i);
-            }
-        }
-        let s: Vec<[Q; 2]> = distinct
-            .iter()
-            .map(|&i| [q(points[i][0]), q(points[i][1])])
-            .collect();
-        let d2 = |a: &[Q; 2], b: &[Q; 2]| {
-            let (dx, dy) = (&a[0] - &b[0], &a[1] - &b[1]);
-            &dx * &dx + &dy * &dy
-        };
+        let (distinct, s) = reference::distinct(points);
         let mut v: Vec<[Q; 2]> = Vec::new();
         for i in 0..s.len() {
             for j in i + 1..s.len() {
@@ -221,39 +202,10 @@ mod tests {
                 }
             }
         }
-        let all: Vec<&[Q; 2]> = s.iter().chain(v.iter()).collect();
         let mut edges = Vec::new();
         for i in 0..s.len() {
             for j in i + 1..s.len() {
-                let (p, qq) = (&s[i], &s[j]);
-                let two = Q::from_integer(2.into());
-                let m = [(&p[0] + &qq[0]) / &two, (&p[1] + &qq[1]) / &two];
-                let n = [&p[1] - &qq[1], &qq[0] - &p[0]]; // left normal of p → q
-                let mp = d2(&m, p);
-                let (mut lo, mut hi): (Option<Q>, Option<Q>) = (None, None);
-                let mut blocked = false;
-                for x in &all {
-                    if *x == p || *x == qq {
-                        continue;
-                    }
-                    let side = &n[0] * (&x[0] - &m[0]) + &n[1] * (&x[1] - &m[1]);
-                    let k = d2(&m, x) - &mp;
-                    if side.is_zero() {
-                        blocked |= k.is_negative();
-                        continue;
-                    }
-                    let t = k / (&side * &two);
-                    if side.is_positive() {
-                        hi = Some(hi.map_or(t.clone(), |h| if t < h { t.clone() } else { h }));
-                    } else {
-                        lo = Some(lo.map_or(t.clone(), |l| if t > l { t.clone() } else { l }));
-                    }
-                }
-                let open = match (&lo, &hi) {
-                    (Some(l), Some(h)) => l < h,
-                    _ => true,
-                };
-                if !blocked && open {
+                if reference::strictly_delaunay(&s[i], &s[j], s.iter().chain(v.iter())) {
                     let (a, b) = (distinct[i] as u32, distinct[j] as u32);
                     edges.push([a.min(b), a.max(b)]);
                 }

@@ -12,10 +12,10 @@ use wdm_crust::reconstruct::{
     Algorithm, MedialAxisMode, Options, OptionsConflict, Phase, WdmSetting,
 };
 
+use super::common::CommonArgs;
 use super::input::{ColumnsArg, Input};
 use super::output::Output;
 use super::report::{self, counted};
-use super::threads::ThreadsArg;
 use super::timings::Timings;
 use super::{write_timed, CliError};
 
@@ -159,21 +159,9 @@ pub struct ReconstructArgs {
     #[arg(long, value_enum)]
     format: Option<ReconstructFormat>,
 
-    /// Write to OUTPUT instead of standard output; OUTPUT is replaced only on success.
-    #[arg(short, long, value_name = "OUTPUT")]
-    output: Option<PathBuf>,
-
-    /// Print the wall time of each phase (parse, triangulate, voronoi, label, extract, write) to standard error.
-    #[arg(long)]
-    timings: bool,
-
     #[command(flatten)]
-    pub threads: ThreadsArg,
+    pub common: CommonArgs,
 
-    /// Nothing on standard error but errors: no summary line, no warnings, no notes, no
-    /// progress.
-    #[arg(short, long, conflicts_with = "timings")]
-    pub quiet: bool,
     #[command(flatten)]
     columns: ColumnsArg,
 
@@ -290,7 +278,7 @@ impl ReconstructArgs {
     /// The explicit format, or the one implied by the output file name.
     fn format(&self) -> ReconstructFormat {
         self.format.unwrap_or_else(|| {
-            let extension = self.output.as_deref().and_then(Path::extension);
+            let extension = self.common.output.as_deref().and_then(Path::extension);
             let is = |name: &str| extension.is_some_and(|ext| ext.eq_ignore_ascii_case(name));
             if is("svg") {
                 ReconstructFormat::Svg
@@ -317,9 +305,9 @@ pub fn run(args: &ReconstructArgs) -> Result<(), CliError> {
         ));
     }
     let options = args.options()?;
-    let mut timings = Timings::new(args.timings);
+    let mut timings = Timings::new(args.common.timings);
     let input = Input::new(args.input.as_deref(), &args.columns);
-    let output = Output::new(args.output.as_deref())?;
+    let output = Output::new(args.common.output.as_deref())?;
 
     let points = input.read_points_timed(&mut timings)?;
 

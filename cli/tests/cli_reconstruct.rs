@@ -13,7 +13,7 @@ mod common;
 use common::{listing, run_in, write};
 
 fn examples_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/data")
+    common::root().join("examples/data")
 }
 
 /// Points as a plain-text file.
@@ -955,7 +955,7 @@ const BUNDLED_PICTURES: &[(&str, &[&str])] = &[
 
 #[test]
 fn the_bundled_pictures_are_what_the_readme_commands_make() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = common::root();
     let readme = fs::read_to_string(root.join("README.md")).unwrap();
     let write = std::env::var_os("WDM_CRUST_WRITE_PICTURES").is_some();
     for &(name, args) in BUNDLED_PICTURES {

@@ -29,21 +29,16 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use super::ears::degrees;
-use super::extract::wdm_crust_edges;
-use super::wdm::Label;
+use super::shared::degrees;
 use crate::delaunay::NO_TWIN;
+use crate::reconstruct::extract::wdm_crust_edges;
+use crate::reconstruct::thresholds::corridors::{CHORD, NARROW};
+use crate::reconstruct::wdm::Label;
 use crate::voronoi::{EdgeEnd, Voronoi};
-
-/// A crust edge this many times the median crust edge may be a corridor wall.
-const CHORD: f64 = 4.0;
-
-/// A wall is at least this many times longer than the width of the way the water came by.
-const NARROW: f64 = 2.0;
 
 /// Relabels the corridors of `labels` inner (see the module docs) and recomputes `edges`, the
 /// crust of `labels`, when any is found. Returns the number of vertices relabelled.
-pub(super) fn repair_corridors(
+pub(crate) fn repair_corridors(
     vor: &Voronoi<'_>,
     labels: &mut [Label],
     edges: &mut Vec<[u32; 2]>,

@@ -1,0 +1,536 @@
+//! Every tuned constant of the reconstruction, in one place: the tolerances of its rules and
+//! the few cutoffs chosen for speed. Each is scale-invariant (a count, an angle, or a ratio
+//! of two lengths of the input) and compared in rounded arithmetic; no exact decision
+//! depends on one. Each doc comment gives the value and its unit, what it decides, the
+//! measurement that chose it (`quality` is `examples/quality.rs`, `noise_failures`
+//! `examples/noise_failures.rs`, `medial_axis` `tests/medial_axis.rs`) and the module that
+//! uses it; the design note named at each group argues the rule
+//! ([`docs/design/thresholds.md`](../../docs/design/thresholds.md) indexes them).
+//!
+//! Changing a value is a change of behaviour: rerun `quality` and the tests named in its
+//! design note. The kernel's constants are error bounds with proofs, not tunings, and are
+//! not here.
+
+/// Peeling: the later passes on the points no curve reached (`docs/design/peeling.md`).
+pub(crate) mod peel {
+    /// How close to a curve already found a left-over point may lie and still be taken for a sample
+    /// of another curve: its distance to a curve edge, in units of that edge's length. The
+    /// leftovers of a noise band sit within about the noise amplitude of the curve, which is of the
+    /// order of the sample spacing, while a curve separate from it (a hole) lies at least about 1/ε
+    /// sample spacings away for an ε-sample (ε < 1): see `peel::peel`.
+    ///
+    /// Measurement: `NEAR_CURVE` 2: animal drawings recall 88.4 against 89.6 %, multi-curve
+    /// drawings 92.0 against 92.5 %. Used by `reconstruct/repairs/peel.rs`.
+    pub(crate) const NEAR_CURVE: f64 = 1.5;
+
+    /// How much sparser than the curves found before it a later pass's loop may be sampled: the
+    /// median of its edge lengths, in units of the median over the curves found before. A nested
+    /// curve in a scan is sampled like the rest of it; a loop drawn through scattered outliers
+    /// inside a shape has edges of the outliers' spacing, many sample spacings long.
+    ///
+    /// Measurement: 2×: drawings recall 88.7 %, a real scan loses a loop. Used by
+    /// `reconstruct/repairs/peel.rs`.
+    pub(crate) const SPARSER_LOOP: f64 = 3.0;
+
+    /// How far apart two left-over points may lie and still be linked into one group
+    /// (`peel::isolated_leftovers`), in units of the longer of their nearest-neighbour distances:
+    /// [`SPARSER_LOOP`], the sparsest sampling a kept loop may have relative to its surroundings.
+    ///
+    /// Measurement: by the shorter distance instead: with a hole 39 / 45 / 57 right of 100 (noise
+    /// 0.5 / 0.7 / 1). Used by `reconstruct/repairs/peel.rs`.
+    pub(crate) const LINK: f64 = SPARSER_LOOP;
+
+    /// The fewest left-over points of a group that takes part in a later pass
+    /// (`peel::isolated_leftovers`): three, the fewest that bound anything.
+    ///
+    /// Measurement: 7: survey noise 0.5 with a hole right 100 → 90 %. Used by
+    /// `reconstruct/repairs/peel.rs`.
+    pub(crate) const MIN_GROUP: usize = 3;
+
+    /// The largest median turning angle of a later pass's curve: 20°, about the turn per sample of
+    /// an ε-sample with ε = 0.35 (see `peel::is_a_curve`).
+    ///
+    /// Measurement: no alternative recorded. Used by `reconstruct/repairs/peel.rs`.
+    pub(crate) const MAX_MEDIAN_TURN: f64 = 20.0 * std::f64::consts::PI / 180.0;
+
+    /// The fewest points of a closed loop a later pass keeps: a closed curve turns by 2π, and an
+    /// ε-sample of it by about ε per sample, so a loop of fewer than 7 points is no ε-sample for
+    /// any ε < 1 (see `peel::is_a_curve`).
+    ///
+    /// Measurement: 3: one curve at noise 1 right 90 against 95 %; 10–70 % outliers 93 / 87 / 70 /
+    /// 63 against 97 / 93 / 83 / 80 %. Used by `reconstruct/repairs/peel.rs` and
+    /// `reconstruct/repairs/ears.rs`.
+    pub(crate) const MIN_LOOP_POINTS: usize = 7;
+
+    /// How far, in its own sample spacings, a loop closed by a chord (`peel::close_by_chord`) must
+    /// keep from the curves found before: two curves of an ε-sample (ε < 1) lie at least twice the
+    /// local feature size apart, and a sample spacing is at most ε times it, so a loop closer than
+    /// 2 of its spacings to an earlier curve is no separate curve of the sample (see
+    /// `shared::lies_apart`).
+    ///
+    /// Measurement: without it: 70 % outliers right 63 against 80 %. Used by
+    /// `reconstruct/repairs/shared.rs` (peeling's loops and the islets of `ears.rs`).
+    pub(crate) const APART: f64 = 2.0;
+
+    /// The fewest points of an open chain a later pass keeps (see `peel::is_a_curve`).
+    ///
+    /// Measurement: no alternative recorded. Used by `reconstruct/repairs/peel.rs`.
+    pub(crate) const MIN_CHAIN_POINTS: usize = 8;
+}
+
+/// Corridors: walls of the water flow mistaken for curve (`docs/design/corridors.md`).
+pub(crate) mod corridors {
+    /// A crust edge this many times the median crust edge may be a corridor wall.
+    ///
+    /// Measurement: walls on the failing trials 4.5–25 median edges; rare on clean samples. Used by
+    /// `reconstruct/repairs/corridors.rs`.
+    pub(crate) const CHORD: f64 = 4.0;
+
+    /// A wall is at least this many times longer than the width of the way the water came by.
+    ///
+    /// Measurement: walls 2.9–12× the width on the failing trials; on clean samples a long crust
+    /// edge's outer vertex is reached by a way at least half as wide. Used by
+    /// `reconstruct/repairs/corridors.rs`.
+    pub(crate) const NARROW: f64 = 2.0;
+}
+
+/// Detours: stretches of curve routed through outliers (`docs/design/detours.md`).
+pub(crate) mod detours {
+    /// The most inner points of a detour a swap removes. Measured on the outlier rows of
+    /// `examples/quality.rs` (recall at 40 / 70 % outliers): 8, 12, 16, 24 inner points gave 89.3 /
+    /// 80.5, 90.2 / 78.6, 90.2 / 80.6, 89.8 / 77.2 %; longer bounds let true stretches go.
+    ///
+    /// Used by `reconstruct/repairs/detours.rs`.
+    pub(crate) const MAX_DETOUR_POINTS: usize = 16;
+
+    /// The most points on a curve one group may touch for its pairs to be tried (a bound on the
+    /// work: a group of noise leftovers along a whole curve touches many). Outliers inside the
+    /// shape link several stretches into one group: 6 instead of 12 cost 4 points of recall at 70 %
+    /// outliers; 64 gave the same rows as 24.
+    ///
+    /// Used by `reconstruct/repairs/detours.rs`.
+    pub(crate) const MAX_ANCHORS: usize = 24;
+
+    /// The most rounds of steps 1–2: one reached 85.5 / 73.6 % recall at 40 / 70 % outliers, three
+    /// 90.2 / 80.6 %, five 90.2 / 80.4 %.
+    ///
+    /// Used by `reconstruct/repairs/detours.rs`.
+    pub(crate) const ROUNDS: usize = 3;
+
+    /// The least share of unassigned points for step 4 (spikes) to run: a sample with fewer points
+    /// off the curves shows no outliers to look for (as one with none: then the repair does not run
+    /// at all). It bounds the cost on large, nearly clean inputs (the benches' noisy curve leaves 3
+    /// of 10^6 points off, and its noise of a tenth of a spacing has tens of turns sharp enough to
+    /// pass for spikes); 0, 0.5 % and 1 % gave the same rows of `examples/quality.rs`.
+    ///
+    /// Used by `reconstruct/repairs/detours.rs`.
+    pub(crate) const MIN_UNASSIGNED_FOR_SPIKES: f64 = 0.01;
+}
+
+/// Spikes: outliers woven into a curve (`docs/design/spikes.md`).
+pub(crate) mod spikes {
+    /// The least turn of a spike (60°). Measured on `examples/quality.rs` with the contrasts below,
+    /// recall at 10 / 20 / 40 / 70 % outliers: 60° 98.0 / 95.7 / 92.3 / 82.8; 90° (an exact
+    /// dot-product sign for one point) 97.7 / 95.2 / 91.2 / 81.7 without pairs.
+    ///
+    /// Used by `reconstruct/repairs/spikes.rs`.
+    pub(crate) const MIN_SPIKE_TURN: f64 = std::f64::consts::FRAC_PI_3;
+
+    /// How many times a spike must turn more than each point of the run around it, without it. 3
+    /// instead of 4 gained 0.2–0.5 points of recall on the outlier rows and lost samples of the
+    /// survey's noisy curves (noise 0.3 spacing: "on" 96.9 → 96.7 %).
+    ///
+    /// Used by `reconstruct/repairs/spikes.rs`.
+    pub(crate) const LOCAL_CONTRAST: f64 = 4.0;
+
+    /// How many times a spike must turn more than the median point of the curves. 3 instead of 4:
+    /// survey noise 0.3 spacing "on" 96.9 → 96.8 %, the real `drill.txt` 96.5 → 96.0 %.
+    ///
+    /// Used by `reconstruct/repairs/spikes.rs`.
+    pub(crate) const GLOBAL_CONTRAST: f64 = 4.0;
+
+    /// Both contrasts are this much higher for a spike of two points (1: survey noise 0.3 spacing
+    /// "on" 96.9 → 96.5 %, the real `vase.txt` 98.1 → 97.2 %).
+    ///
+    /// Used by `reconstruct/repairs/spikes.rs`.
+    pub(crate) const PAIR_FACTOR: f64 = 1.5;
+
+    /// The most points whose turns estimate the median (a bound on its cost on large inputs).
+    ///
+    /// Measurement: a bound on cost. Used by `reconstruct/repairs/spikes.rs`.
+    pub(crate) const MEDIAN_SAMPLE: usize = 8192;
+}
+
+/// Open curves: sure loops kept, the other points chained by proximity
+/// (`docs/design/open-curves.md`).
+pub(crate) mod open_curves {
+    /// A loop edge longer than `2^CHORD_DOUBLINGS` times the two loop edges on each side of it is a
+    /// chord across an open curve, not a step along a closed one.
+    ///
+    /// Measurement: 2 (4×): bot.txt 287 → 4 points on curves, Monitor0 621 → 275; a window or loop
+    /// median instead of the neighbours: fish.txt 285 → 19. Used by `reconstruct/open_curves.rs`.
+    pub(crate) const CHORD_DOUBLINGS: u32 = 3;
+
+    /// A proposed chain edge longer than `2^GAP_DOUBLINGS` times the nearest-neighbour distance at
+    /// each of its two ends bridges a gap between two curves.
+    ///
+    /// Measurement: no alternative recorded. Used by `reconstruct/open_curves.rs`.
+    pub(crate) const GAP_DOUBLINGS: u32 = 3;
+
+    /// The fewest points of an open chain or a loop made of proposals; smaller pieces are junk.
+    ///
+    /// Measurement: 4: 70 % outliers right 100 → 80 %. Used by `reconstruct/open_curves.rs`.
+    pub(crate) const MIN_CHAIN_POINTS: usize = 5;
+
+    /// A join of two chain ends is at most `2^JOIN_DOUBLINGS` times the step at each of them (the
+    /// longer of its last two edges): a break that noise made in one curve, not the gap between
+    /// two.
+    ///
+    /// Measurement: 3: two strokes 6.5 steps apart joined (clean strokes exact 100 → 95 %); none:
+    /// noisy open rows right 5–35 % instead of 70–95 %. Used by `reconstruct/open_curves.rs`.
+    pub(crate) const JOIN_DOUBLINGS: u32 = 2;
+
+    /// The fewest points of a loop that proximity closes: a closed curve turns by 2π, an ε-sample
+    /// by about ε a sample, so fewer than 7 points are no ε-sample for ε < 1 (the bound of
+    /// peeling's loops).
+    ///
+    /// Used by `reconstruct/open_curves.rs`.
+    pub(crate) const MIN_CLOSED_POINTS: usize = 7;
+
+    /// A point of a chain is isolated when everything off its chain is farther than
+    /// `2^ISOLATION_DOUBLINGS` times its longer step along the chain.
+    ///
+    /// Measurement: no alternative recorded. Used by `reconstruct/open_curves.rs`.
+    pub(crate) const ISOLATION_DOUBLINGS: u32 = 1;
+}
+
+/// Thinning: dense noisy bands to representatives (`docs/design/thinning.md`).
+pub(crate) mod thinning {
+    /// Below this many distinct points nothing is thinned: a band needs hundreds of points (its
+    /// neighbourhoods hold up to `thinning::LADDER`'s last size), and small inputs are the sparse
+    /// samples WDM is made for.
+    ///
+    /// Measurement: no alternative recorded. Used by `reconstruct/thinning.rs`.
+    pub(crate) const MIN_THINNED_POINTS: usize = 400;
+
+    /// At most this many probes (spread over the locality order): the decision is a median, and 512
+    /// probes put it within a few percent of its value over all points.
+    ///
+    /// Measurement: 10^6-point bands: the test and the cover 0.35–0.5 s against 0.6 s for the
+    /// triangulation. Used by `reconstruct/thinning.rs`.
+    pub(crate) const PROBES: usize = 512;
+
+    /// The probes look at a subsample of at most about this many points (every point kept with the
+    /// same chance, by a hash of its local index): a band of a million points is thousands of
+    /// spacings wide, and its neighbourhoods turn thin only at sizes no probe can afford. The
+    /// subsample's spacing is known (the full one times the sampling rate), and the noise is the
+    /// same.
+    ///
+    /// Measurement: 10^6-point bands: the test and the cover 0.35–0.5 s against 0.6 s for the
+    /// triangulation. Used by `reconstruct/thinning.rs`.
+    pub(crate) const SUBSAMPLE: usize = 8192;
+
+    /// A neighbourhood is a piece of curve when its smaller principal variance is at most this
+    /// share of its larger (the smoothing's `MAX_ASPECT`): a strip of noise σ over a length `2r`
+    /// has variances σ² and r²/3, so it is thin once `r` exceeds about 3.5 σ.
+    ///
+    /// Used by `reconstruct/thinning.rs`.
+    pub(crate) const MAX_ASPECT: f64 = 0.25;
+
+    /// A probe is in a band when its noise (the smaller principal deviation where its neighbourhood
+    /// turns thin) is at least this many spacings along the curve (the neighbourhood's length over
+    /// its number of points). Below, WDM with its repairs reconstructs the noisy sample as it is
+    /// (the sparse noise rows up to one spacing).
+    ///
+    /// Measurement: 3: dense-band rows right 60 / 72 against 70 / 72; every other quality row
+    /// unchanged at 1.5. Used by `reconstruct/thinning.rs`.
+    pub(crate) const BAND_SPACINGS: f64 = 1.5;
+
+    /// The cover's disks have a radius of this many noise deviations: wide enough that one disk
+    /// spans the band (about ±2 σ), so that the representatives run along its middle in a single
+    /// file, and no wider, so that curves a few band widths apart stay apart.
+    ///
+    /// Measurement: with Voronoi clusters instead of disk centroids: 3 / 4 / 5 σ̂ gave dense rows
+    /// 70 / 68 / 65 of 72 and other-shape bands 13 / 16 / 16 of 18; disk centroids with the dedupe:
+    /// 69 / 72 and 15 + 17 of 18 at 3 σ̂ (3.5 and 4: 15 of 18). Used by `reconstruct/thinning.rs`.
+    pub(crate) const COVER_RADIUS: f64 = 3.0;
+
+    /// A disk with fewer points than this share of the median disk's is not represented: its points
+    /// are outliers or the band's frayed edge.
+    ///
+    /// Measurement: no alternative recorded. Used by `reconstruct/thinning.rs`.
+    pub(crate) const MIN_CLUSTER_SHARE: f64 = 0.25;
+}
+
+/// The pruned medial axis (`docs/design/pruned-medial-axis.md`).
+pub(crate) mod medial_axis {
+    /// The object angle `θ` of the pruning rule: a leaf is removed when some ball near it grows out
+    /// of its ball at least at the rate `cos(θ/2)` of the distance (see the module docs).
+    ///
+    /// Measurement: 90°: clean ends lose 5 % of the diameter; 45°: hooks at σ = 0.3 (8/12 within 3
+    /// %). Used by `reconstruct/medial_axis.rs`.
+    pub(crate) const PRUNE_ANGLE_DEGREES: f64 = 60.0;
+
+    /// The object angle of the rule for a leaf whose samples do not zig-zag
+    /// ([`CLEAN_OSCILLATION`]): no noise there can grow a whisker, so only branches narrower than
+    /// this go (see the module docs).
+    ///
+    /// Measurement: superellipse trunk gap 6.4 → 2.5 %. Used by `reconstruct/medial_axis.rs`.
+    pub(crate) const CLEAN_PRUNE_ANGLE_DEGREES: f64 = 30.0;
+
+    /// The relative oscillation (`medial_axis::noise::noise::loop_estimates`) below which a face's
+    /// samples are clean: about that of Gaussian noise of 0.02 × the spacing (see the module docs).
+    ///
+    /// Measurement: 0.015–0.03: same noisy rows; 0.06: whiskers at σ = 0.1 (star 9/12). Used by
+    /// `reconstruct/medial_axis.rs`.
+    pub(crate) const CLEAN_OSCILLATION: f32 = 0.02;
+
+    /// How many vertices (along its branch, then beyond the junction) a leaf is compared with.
+    ///
+    /// Measurement: no alternative recorded. Used by `reconstruct/medial_axis.rs`.
+    pub(crate) const NEIGHBOURHOOD: usize = 64;
+
+    /// How many times the noise amplitude of its samples (`medial_axis::noise`) a leaf's ball may
+    /// stick out of a much larger ball that then covers it (see the module docs).
+    ///
+    /// Measurement: 2 / 4 / 6 / 8: star 10 / 12 / 12 / 12, two shapes 9 / 11 / 11 / 12 of 12. Used
+    /// by `reconstruct/medial_axis.rs`.
+    pub(crate) const NOISE_TOLERANCE: f64 = 8.0;
+
+    /// How much larger than a leaf's ball a ball must be to cover it within the noise slack: the
+    /// slack never applies between balls of similar size, which follow each other along every
+    /// branch (see the module docs).
+    ///
+    /// Measurement: 1.5: superellipse trunk gap 11 % under noise. Used by
+    /// `reconstruct/medial_axis.rs`.
+    pub(crate) const NOISE_RADIUS_RATIO: f64 = 2.0;
+
+    /// Samples on either side of a sample that its amplitude averages over.
+    ///
+    /// Measurement: no alternative recorded. Used by `reconstruct/medial_axis/noise.rs`.
+    pub(crate) const HALF_WINDOW: usize = 3;
+
+    /// Samples whose estimates are computed together: the temporaries are those of a block (about
+    /// 170 KiB), not of the loop (40 bytes a sample were the memory peak of the pruned axis at 10^6
+    /// points on one loop).
+    ///
+    /// Used by `reconstruct/medial_axis/noise.rs`.
+    pub(crate) const BLOCK: usize = 4096;
+
+    /// How many leaves ahead of the one being tested `medial_axis::pruning::Lookahead` fetches: a
+    /// fetch needs about as long as a few tests, and what is fetched too early leaves the
+    /// first-level cache again. At 10^7 noisy points (one thread) 2, 4, 6, 8, 12 and 16 took the
+    /// pruning from 2.16 s without to 1.32, 1.20, 1.13, 1.11, 1.44 and 1.44 s.
+    ///
+    /// Used by `reconstruct/medial_axis/pruning.rs`.
+    pub(crate) const LOOKAHEAD: usize = 8;
+
+    /// How far past the last leaf it found `medial_axis::pruning::Lookahead` looks for the next,
+    /// per leaf tested: where the leaves are sparse, a search to the end of the set for every leaf
+    /// would cost more than it saves.
+    ///
+    /// Used by `reconstruct/medial_axis/pruning.rs`.
+    pub(crate) const LOOKAHEAD_REACH: usize = 512;
+}
+
+/// Smoothing: curve vertices fitted to the samples around them (`docs/design/smoothing.md`).
+pub(crate) mod smooth {
+    /// Window radii grow by this factor: a fit's residual is compared with that of a window of half
+    /// its area (√2: the residual of a corner grows by as much per step, and two steps double it,
+    /// which [`RESIDUAL_GROWTH`] catches).
+    ///
+    /// Measurement: 12 radii: dense bands stopped at the cap (one noisy circle's moved vertices
+    /// 0.39 σ against 0.35 σ). Used by `reconstruct/smooth.rs`.
+    pub(crate) const SCALE_STEP: f64 = std::f64::consts::SQRT_2;
+
+    /// The gathering walks Delaunay edges at most this many times the nearest-neighbour distance at
+    /// one of their ends: along the samples of one curve piece, graded sampling included, not
+    /// across the inside of a sparse curve (an ε-sample's two sides lie at least `2/ε` spacings
+    /// apart, 5 at ε = 0.39) nor from one noise band to the next.
+    ///
+    /// Used by `reconstruct/smooth.rs`.
+    pub(crate) const LINK: f64 = 3.0;
+
+    /// At most this many radii: the largest is `2^11.5 ≈ 2900` times the vertex's longer curve step
+    /// (in a dense band the step is a small fraction of the noise; the windows stop long before, at
+    /// [`MAX_WINDOW_POINTS`]).
+    ///
+    /// Measurement: 12 radii: dense bands stopped at the cap (one noisy circle's moved vertices
+    /// 0.39 σ against 0.35 σ). Used by `reconstruct/smooth.rs`.
+    pub(crate) const WINDOWS: usize = 24;
+
+    /// A window grows no further once it holds this many samples (a bound on work: the error of a
+    /// fit over `N` samples falls as `1/√N`, 4 % of the noise here).
+    ///
+    /// Measurement: 12 radii: dense bands stopped at the cap (one noisy circle's moved vertices
+    /// 0.39 σ against 0.35 σ). Used by `reconstruct/smooth.rs`.
+    pub(crate) const MAX_WINDOW_POINTS: usize = 512;
+
+    /// A window grows no further once it spans this many of the curve's own vertices. Where the
+    /// curve is no thinned band its samples are its vertices, and without this bound every vertex
+    /// would average hundreds of its neighbours: the work per vertex grows with the window and the
+    /// curve's with both. 64 vertices put the fit's error at an eighth of the noise; 32 averages
+    /// too few where a curve is noisy but no band.
+    ///
+    /// Measurement: 32 / 64 / 128 on the dense-band rows: median ratio 0.31 each; the 600-point
+    /// polygons' nearest fitted vertex to a square's corner 1.17 / 1.37 / 1.84 σ; a 10^5-point
+    /// noisy curve 2.8 / 4.0 / 6.8 s (36 s without the bound). Used by `reconstruct/smooth.rs`.
+    pub(crate) const MAX_WINDOW_VERTICES: usize = 64;
+
+    /// The fewest samples (with positive weight) of a window that is fitted: a quadratic has three
+    /// parameters, and its residual needs a few more samples to mean anything.
+    ///
+    /// Measurement: 6 a side: clean polygons' graded sides unfitted next to corners. Used by
+    /// `reconstruct/smooth.rs`.
+    pub(crate) const MIN_FIT_POINTS: usize = 6;
+
+    /// The fewest samples of a one-sided window (a line: two parameters). Near a corner of a clean
+    /// polygon a side may hold few samples within the window's reach; they lie on its line exactly,
+    /// and the vertex stays on it.
+    ///
+    /// Measurement: 6 a side: clean polygons' graded sides unfitted next to corners. Used by
+    /// `reconstruct/smooth.rs`.
+    pub(crate) const MIN_LINE_POINTS: usize = 4;
+
+    /// A window whose smaller principal variance is more than this share of its larger one is a
+    /// blob, not a curve piece (a straight band of half-length `R` and noise `σ` has an aspect of
+    /// about `3 (σ/R)²`, so this admits windows of more than about 3.5 σ).
+    ///
+    /// Measurement: no alternative recorded. Used by `reconstruct/smooth.rs`.
+    pub(crate) const MAX_ASPECT: f64 = 0.25;
+
+    /// A family of windows grows while the vertex's offset of its next window agrees with that of
+    /// every smaller window within this many standard errors of their difference (for nested
+    /// windows `√(s_small² − s_large²)`, the larger averaging the smaller's samples and more; 3 and
+    /// 4 measured, dense-band median ratios 0.652 / 0.647): on a noise band the offsets of growing
+    /// windows scatter within their errors, which shrink as the windows take more samples; where a
+    /// window reaches a corner or a bend the fit cannot follow, its offset drifts away by more (the
+    /// intersection-of-confidence-intervals rule).
+    ///
+    /// Measurement: 3 / 4: dense-band median 0.652 / 0.647 (one trial a row, all trials); the plain
+    /// sum of the two errors: one noisy circle's moved vertices at 0.40–0.53 σ against 0.35 σ. Used
+    /// by `reconstruct/smooth.rs`.
+    pub(crate) const AGREEMENT: f64 = 4.0;
+
+    /// The centred fit is replaced by a one-sided one when its residual is more than this times the
+    /// one-sided one's: noise alone makes the residuals of the three families differ by less.
+    ///
+    /// Measurement: 1.25 / 1.5 / 2: dense-band median 0.78 / 0.75 / 0.64 (with the sides compared
+    /// at their own windows, before the present rule). Used by `reconstruct/smooth.rs`.
+    pub(crate) const SIDED_PREFERENCE: f64 = 2.0;
+
+    /// A curve is smoothed when more than this share of its vertices zigzag (turn against both
+    /// neighbours): about a quarter do where noise sets the turns, none on clean samples.
+    ///
+    /// Measurement: clean ε-samples (ε = 0.2, 0.39) and polygons: no vertex moves; without the test
+    /// they moved by up to 0.45 spacings. Used by `reconstruct/smooth.rs`.
+    pub(crate) const ZIGZAG_SHARE: f64 = 0.05;
+
+    /// Turns (sines) below this are no turns to the zigzag test: the rounding of a moved or scaled
+    /// straight run of clean samples turns them by about `1e-16`.
+    ///
+    /// Measurement: without it clean polygons zigzag (rounding's random signs). Used by
+    /// `reconstruct/smooth.rs`.
+    pub(crate) const FLAT: f64 = 1e-9;
+
+    /// A family grows only while its residual stays within this factor of that of its window of
+    /// half the radius: on noise the residual stays level as the window grows; where the window
+    /// takes in a corner, another piece of the curve or the whole of a small one, the residual
+    /// grows with the radius (a corner's doubles in two steps).
+    ///
+    /// Measurement: against the smallest residual so far: the same dense-band rows to three
+    /// decimals. Used by `reconstruct/smooth.rs`.
+    pub(crate) const RESIDUAL_GROWTH: f64 = 1.5;
+
+    /// A fit that moves the vertex by more than this many of its residuals is not of the vertex's
+    /// own samples (a Gaussian sample lies that far out once in 16 000).
+    ///
+    /// Measurement: without: a clean vertex beside a sharp corner projected onto the other leg (1.9
+    /// spacings). Used by `reconstruct/smooth.rs`.
+    pub(crate) const SHIFT_RESIDUALS: f64 = 4.0;
+
+    /// Reweightings of a one-sided line fit (Tukey's biweight on the residuals): three settle it on
+    /// a side's samples where a few of the other side's were in its half disk.
+    ///
+    /// Used by `reconstruct/smooth.rs`.
+    pub(crate) const ROBUST_ITERATIONS: usize = 3;
+
+    /// Tukey's constant (95 % efficiency on Gaussian noise), in units of the residuals' scale.
+    ///
+    /// Used by `reconstruct/smooth.rs`.
+    pub(crate) const TUKEY: f64 = 4.685;
+
+    /// The median absolute residual times this is the noise's standard deviation (Gaussian).
+    ///
+    /// Used by `reconstruct/smooth.rs`.
+    pub(crate) const MAD_TO_SIGMA: f64 = 1.4826;
+
+    /// A circle of fewer than this many window radii is not taken: on a short noisy arc the
+    /// circle's curvature is unstable and the projection far from linear in the noise (the
+    /// quadratic's standard error then says nothing about it).
+    ///
+    /// Measurement: circle at any radius: offsets of small windows jumped by 1.5 σ. Used by
+    /// `reconstruct/smooth.rs`.
+    pub(crate) const MIN_CIRCLE_RADIUS: f64 = 2.0;
+
+    /// A circle of more than this many window radii is a line to the fit (the quadratic then fits
+    /// it as well, and the circle's centre is ill-conditioned).
+    ///
+    /// Measurement: circle at any radius: offsets of small windows jumped by 1.5 σ. Used by
+    /// `reconstruct/smooth.rs`.
+    pub(crate) const LINE_RADIUS: f64 = 1e3;
+
+    /// At most this many rounds of tests; then every move is undone (the unsmoothed curves are
+    /// simple). Undoing spreads by a few points a round; the measurements never needed more than a
+    /// handful.
+    ///
+    /// Measurement: undoing at once: 14 % of a dense ellipse's vertices back at their noisy
+    /// positions. Used by `reconstruct/smooth/crossings.rs`.
+    pub(crate) const MAX_ROUNDS: usize = 64;
+
+    /// A move that makes a curve cross is shortened to this share of itself, then to its square,
+    /// and so on, [`STAGES`] times, then undone: most crossings in a dense band come from two
+    /// neighbouring vertices projected past each other along the fit, and half the move usually
+    /// keeps them apart while keeping half the gain.
+    ///
+    /// Measurement: undoing at once: 14 % of a dense ellipse's vertices back at their noisy
+    /// positions. Used by `reconstruct/smooth/crossings.rs`.
+    pub(crate) const SHORTENED: f64 = 0.5;
+
+    /// Shortenings before a move is undone.
+    ///
+    /// Measurement: undoing at once: 14 % of a dense ellipse's vertices back at their noisy
+    /// positions. Used by `reconstruct/smooth/crossings.rs`.
+    pub(crate) const STAGES: u8 = 2;
+}
+
+/// Warnings: signs that a result is not what was wanted (`docs/design/warnings.md`).
+pub(crate) mod warnings {
+    /// An edge is *long* when it is more than `2^LONG_EDGE_DOUBLINGS` times each of the (up to
+    /// four) curve edges within two steps of it. The open-curve stage already opens a loop at such
+    /// a chord, and its chains never take an edge that long; what remains is a chord of the
+    /// baselines, or of a loop whose neighbours are as sparse as the gap.
+    ///
+    /// Measurement: against the two adjacent edges only: 7 right noisy loops of `quality` warned;
+    /// as now, none. Used by `reconstruct/diagnose.rs`.
+    pub(crate) const LONG_EDGE_DOUBLINGS: u32 = 3;
+
+    /// A closed loop whose longest edge is more than `2^GAP_EDGE_DOUBLINGS` times its next longest
+    /// (and not long already) may close across the gap of an open curve. Noise and uneven sampling
+    /// vary the edges of a right loop, but its two longest edges stay within a small factor of each
+    /// other; a chord joining the ends of an open curve is alone.
+    ///
+    /// Measurement: as 4–8× the edges beside it: 30 right noisy loops (noise 0.3–1 × spacing)
+    /// warned; as now, none; a 355° arc of 300 points (ends 4.2 steps apart) warned. Used by
+    /// `reconstruct/diagnose.rs`.
+    pub(crate) const GAP_EDGE_DOUBLINGS: u32 = 2;
+
+    /// Two curve points closer than their curve edges are *too close* when they lie on different
+    /// curves or more than this many steps apart along one curve. A sharp corner of angle θ brings
+    /// the points of its two sides within one step of each other up to about `1 / sin(θ/2)` steps
+    /// apart along the curve (11 at 10°, 23 at 5°): well inside the bound.
+    ///
+    /// Measurement: sharp-corner rows of `quality` (10–90°): no warning; drawings of touching
+    /// curves: 24 of 30 warned. Used by `reconstruct/diagnose.rs`.
+    pub(crate) const CLOSE_CURVE_STEPS: usize = 32;
+}

@@ -50,8 +50,11 @@ impl Canvas {
         let size = [max[0] - min[0], max[1] - min[1]];
         let extent = size[0].max(size[1]);
         // One distinct point (or none): any scale draws it in the middle.
+        // A subnormal extent divided by the picture's size may round to zero: the smallest
+        // positive double is then the unit (the points lie on its grid, fewer than
+        // `DATA_PX` steps apart).
         let unit = if extent.is_finite() && extent > 0.0 {
-            extent / DATA_PX
+            (extent / DATA_PX).max(f64::from_bits(1))
         } else {
             1.0
         };

@@ -818,3 +818,25 @@ fn dots_shrink_with_density_and_give_way_to_dense_curves() {
         rec.unassigned().len()
     );
 }
+
+/// Points a few ulps of the smallest subnormal apart: the extent over the picture's size
+/// rounds to zero, and the smallest positive double is the unit instead (the exact clipping
+/// divided by a zero unit).
+#[test]
+fn a_subnormal_extent_renders() {
+    let tiny = f64::from_bits(1);
+    let mut points = Vec::new();
+    for i in -22i32..=22 {
+        for j in -22i32..=22 {
+            if (i, j) != (0, 0) && (i % 22 == 0 || j % 22 == 0) {
+                points.push([f64::from(i) * tiny, f64::from(j) * tiny]);
+            }
+        }
+    }
+    let svg = svg_of(&points, &all_layers());
+    assert!(svg.starts_with("<svg ") && svg.trim_end().ends_with("</svg>"));
+    // One pixel per smallest double: the 44-ulp square is drawn 44 pixels wide.
+    let dots = circles(&svg, "points");
+    let (lo, hi) = bounding_box(&dots);
+    assert_eq!([hi[0] - lo[0], hi[1] - lo[1]], [44.0, 44.0]);
+}

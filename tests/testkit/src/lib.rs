@@ -55,6 +55,6 @@ pub use eps::{CurveSet, Sample, SampleConfig, SampledCurve};
 pub use lfs::{local_feature_size, medial_balls, MedialBall};
 pub use noise::{add_gaussian_noise, noisy_curve_sample, uniform_outliers};
 pub use rng::Rng;
-pub use shapes::{Ellipse, Peanut, Star, Superellipse};
+pub use shapes::{Ellipse, FourierBlob, Peanut, Star, Superellipse};
 pub use svg::{parse_path_data, parse_svg, svg_dense_curves, Segment, SvgError, SvgSubpath};
 pub use vec2::{bbox, segment_distance};

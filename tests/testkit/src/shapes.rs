@@ -156,3 +156,45 @@ impl ClosedCurve for Superellipse {
         self.eval(t).1
     }
 }
+
+/// A random-looking smooth blob `r(θ) = 1 + Σ_k a_k cos(kθ + φ_k)`, `k = 2, 3, …`: broad lobes
+/// whose medial branches have a small object angle all along.
+///
+/// Simple (star-shaped) while `Σ |a_k| < 1`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FourierBlob {
+    /// `(a_k, φ_k)` for `k = 2, 3, …` in order.
+    pub terms: Vec<(f64, f64)>,
+}
+
+impl FourierBlob {
+    /// Terms for `k = 2..=5` with `a_k` uniform in `[0, 0.3 / k)` and a uniform phase.
+    pub fn random(rng: &mut crate::Rng) -> Self {
+        let terms = (2..=5)
+            .map(|k| (rng.range(0.0, 0.3 / f64::from(k)), rng.range(0.0, TAU)))
+            .collect();
+        FourierBlob { terms }
+    }
+
+    fn eval(&self, t: f64) -> ([f64; 2], [f64; 2]) {
+        let theta = TAU * t;
+        let (mut r, mut dr) = (1.0, 0.0);
+        for (i, &(a, phase)) in self.terms.iter().enumerate() {
+            let k = (i + 2) as f64;
+            let (s, c) = (k * theta + phase).sin_cos();
+            r += a * c;
+            dr -= a * k * s;
+        }
+        polar(theta, r, dr)
+    }
+}
+
+impl ClosedCurve for FourierBlob {
+    fn point(&self, t: f64) -> [f64; 2] {
+        self.eval(t).0
+    }
+
+    fn derivative(&self, t: f64) -> [f64; 2] {
+        self.eval(t).1
+    }
+}

@@ -185,7 +185,8 @@ use super::thresholds::medial_axis::{
     NOISE_TOLERANCE, PRUNE_ANGLE_DEGREES,
 };
 use crate::delaunay::triangulate;
-use crate::delaunay::{prev_in_triangle, Triangulation, NO_TWIN};
+use crate::delaunay::{HalfEdge, Triangulation, NO_TWIN};
+use crate::ids::{LocalPoint, VertexId};
 use crate::kernel::metric::dot_sign;
 use crate::kernel::Sign;
 use crate::parallel;
@@ -232,7 +233,7 @@ pub(super) fn pruned_medial_axis(
         None
     } else if let Some(cavity) = Cavity::around(&vor, &off_loop) {
         for &v in &cavity.replaced {
-            inside[v as usize] = false;
+            inside[v.index()] = false;
         }
         Some(cavity)
     } else {
@@ -276,7 +277,7 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&Curve], frame: Frame) -> MedialAxis {
             let positions = position..position + c.points.len() as u32;
             position += c.points.len() as u32;
             Curve {
-                points: positions.map(|i| sub.local_index(i)).collect(),
+                points: positions.map(|i| sub.local_index(i).get()).collect(),
                 closed: true,
             }
         })
@@ -344,14 +345,18 @@ fn loop_edges(loops: &[&Curve]) -> Vec<[u32; 2]> {
 
 /// The points of `vor` on none of the loops `edges` (local pairs) with a face
 /// `inside` them. No loop edge ends at such a point, so all its faces have one parity.
-fn off_loop_points_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]], inside: &[bool]) -> Vec<u32> {
+fn off_loop_points_inside(
+    vor: &Voronoi<'_>,
+    edges: &[[u32; 2]],
+    inside: &[bool],
+) -> Vec<LocalPoint> {
     let mut on_loop = vec![false; vor.triangulation().distinct_point_count()];
     for &[a, b] in edges {
         on_loop[a as usize] = true;
         on_loop[b as usize] = true;
     }
-    (0..on_loop.len() as u32)
-        .filter(|&p| !on_loop[p as usize] && vor.cell_local(p).any(|v| inside[v as usize]))
+    (vor.triangulation().local_points())
+        .filter(|&p| !on_loop[p.index()] && vor.cell_vertices(p).any(|v| inside[v.index()]))
         .collect()
 }
 
@@ -381,18 +386,19 @@ impl LoopMarks {
         let mut unresolved = false;
         // Finding a loop edge's half-edge walks around its end: in parallel.
         let found = parallel::map_range(edges.len(), |i| {
-            let [a, b] = edges[i];
+            let [a, b] = edges[i].map(LocalPoint::new);
             vor.delaunay_halfedge(a, b)
         });
-        for (&[a, b], found) in edges.iter().zip(found) {
+        for (&edge, found) in edges.iter().zip(found) {
+            let [a, b] = edge.map(LocalPoint::new);
             match found {
                 Some(e) => {
-                    on_loop.set(e as usize);
-                    if let Some(&twin) = halfedges.get(e as usize).filter(|&&t| t != NO_TWIN) {
-                        on_loop.set(twin as usize);
+                    on_loop.set(e.index());
+                    if let Some(&twin) = halfedges.get(e.index()).filter(|&&t| t != NO_TWIN) {
+                        on_loop.set(twin.index());
                     }
                     if !vor.has_dual(e) {
-                        on_chord[vor.vertex_of_halfedge(e) as usize] = true;
+                        on_chord[vor.vertex_of_halfedge(e).index()] = true;
                     }
                 }
                 // Not an edge of this triangulation: a chord of the merged face that holds
@@ -400,9 +406,9 @@ impl LoopMarks {
                 // an edge that a later pass of the peeling drew on its own points.
                 None => {
                     let mut shared = false;
-                    for v in vor.cell_local(a) {
-                        if vor.cell_local(b).any(|w| w == v) {
-                            on_chord[v as usize] = true;
+                    for v in vor.cell_vertices(a) {
+                        if vor.cell_vertices(b).any(|w| w == v) {
+                            on_chord[v.index()] = true;
                             shared = true;
                         }
                     }
@@ -415,7 +421,7 @@ impl LoopMarks {
                         match faces_across(vor, a, b).filter(|_| across) {
                             Some(faces) => {
                                 for v in faces {
-                                    on_chord[v as usize] = true;
+                                    on_chord[v.index()] = true;
                                 }
                             }
                             None => unresolved = true,
@@ -437,7 +443,7 @@ impl LoopMarks {
     /// marks become the search's (a copy was 2 bytes a point at the memory peak).
     fn inside_faces(&mut self, vor: &Voronoi<'_>) -> Vec<bool> {
         let on_chord = std::mem::take(&mut self.on_chord);
-        parity_from_infinity(vor, on_chord, |e| self.on_loop.get(e as usize))
+        parity_from_infinity(vor, on_chord, |e| self.on_loop.get(e.index()))
     }
 }
 
@@ -511,17 +517,19 @@ impl Graph {
         // when the angle at `c`, a corner of the face on the edge's left, is obtuse: an
         // exact sign of input points (the orientation of the constructed circumcenter, of
         // higher degree, took a fifth of the balls' time).
-        let beyond_edge = |e: usize, c: u32| loops.on_loop.get(e) && beyond_of_corner(tri, e, c);
-        let beyond = |v: u32| {
-            vor.vertex_edges_local(v).any(|edge| {
-                let e = edge.halfedge as usize;
-                beyond_edge(e, tri.org(prev_in_triangle(e)))
+        let beyond_edge = |e: HalfEdge, c: LocalPoint| {
+            loops.on_loop.get(e.index()) && beyond_of_corner(tri, e, c)
+        };
+        let beyond = |v: VertexId| {
+            vor.face_edges(v).any(|edge| {
+                let e = edge.halfedge;
+                beyond_edge(e, tri.org(e.prev()))
             })
         };
         // The slack, or none (`None`) when the face's samples do not zig-zag: clean.
-        let slack = |sites: &mut dyn Iterator<Item = u32>| {
+        let slack = |sites: &mut dyn Iterator<Item = LocalPoint>| {
             let (amplitude, noisy) = sites
-                .map(|p| noise[p as usize])
+                .map(|p| noise[p.index()])
                 .fold((0.0f32, false), |(a, noisy), n| {
                     (a.max(n.abs()), noisy || n.is_sign_negative())
                 });
@@ -535,17 +543,17 @@ impl Graph {
                 numbered.add(vertex_count + s, vertex_count + t);
             }
             for &(k, e) in &cavity.boundary {
-                let ends = [tri.org(e as usize), tri.dest(e as usize)];
+                let ends = [tri.org(e), tri.dest(e)];
                 if let Some(&c) = new_triangles[k as usize].iter().find(|p| !ends.contains(p)) {
-                    new_beyond[k as usize] |= beyond_edge(e as usize, c);
+                    new_beyond[k as usize] |= beyond_edge(e, c);
                 }
-                let twin = tri.halfedges()[e as usize];
-                if twin == NO_TWIN || loops.on_loop.get(e as usize) {
+                let twin = tri.halfedges()[e.index()];
+                if twin == NO_TWIN || loops.on_loop.get(e.index()) {
                     continue;
                 }
                 let w = vor.vertex_of_halfedge(twin);
-                if inside[w as usize] {
-                    numbered.add(vertex_count + k, w);
+                if inside[w.index()] {
+                    numbered.add(vertex_count + k, w.get());
                 }
             }
         }
@@ -564,17 +572,18 @@ impl Graph {
         let mut ball = parallel::map_range(used.len(), |i| {
             let v = used[i];
             if v < vertex_count {
+                let v = VertexId::new(v);
                 let face = vor.vertex_triangle(v);
                 let centre = vor.vertex_position(v);
                 Ball {
                     centre,
                     radius: distance(centre, face[smallest_corner(face)]),
-                    slack: slack(&mut vor.vertex_sites_local(v)).unwrap_or(CLEAN),
+                    slack: slack(&mut vor.face_corners(v)).unwrap_or(CLEAN),
                     first_use_and_beyond: tag(i, beyond(v)),
                 }
             } else {
                 let k = (v - vertex_count) as usize;
-                let face = new_triangles[k].map(|p| tri.points[p as usize]);
+                let face = new_triangles[k].map(|p| tri.position(p));
                 let centre = rounded_circumcenter(face);
                 Ball {
                     centre,
@@ -593,9 +602,9 @@ impl Graph {
                 let v = used[i];
                 let triangle = || {
                     if v < vertex_count {
-                        vor.canonical_triangle(v)
+                        vor.canonical_triangle(VertexId::new(v))
                     } else {
-                        new_triangles[(v - vertex_count) as usize].map(|p| tri.points[p as usize])
+                        new_triangles[(v - vertex_count) as usize].map(|p| tri.position(p))
                     }
                 };
                 if frame.rounds_like_the_caller(centre, triangle) {
@@ -720,8 +729,8 @@ fn axis_of(
 /// Whether the circumcenter of the triangle of half-edge `e` (local, of `tri`) and corner
 /// `c`, which lies on its left, lies strictly on its right: the angle at `c` is obtuse,
 /// `(a − c)·(b − c) < 0` (exact).
-fn beyond_of_corner(tri: &Triangulation, e: usize, c: u32) -> bool {
-    let at = |p: u32| tri.points[p as usize];
+fn beyond_of_corner(tri: &Triangulation, e: HalfEdge, c: LocalPoint) -> bool {
+    let at = |p: LocalPoint| tri.position(p);
     dot_sign(at(c), at(tri.org(e)), at(tri.dest(e))) == Sign::Negative
 }
 
@@ -763,9 +772,9 @@ mod tests {
         let (mut beyond, mut on) = (0, 0);
         for points in sets {
             let tri = triangulate(&points).unwrap();
-            for e in 0..tri.halfedges().len() {
-                let c = tri.org(prev_in_triangle(e));
-                let at = |p: u32| tri.points[p as usize];
+            for e in tri.halfedge_ids() {
+                let c = tri.org(e.prev());
+                let at = |p: LocalPoint| tri.position(p);
                 let face = [at(tri.org(e)), at(tri.dest(e)), at(c)];
                 let side = orient2d_circumcenter(face[0], face[1], face);
                 beyond += usize::from(side == Orientation::Clockwise);

@@ -12,7 +12,8 @@ use super::repairs::detours::repair_detours;
 use super::repairs::ears::{drop_islets, repair_ears, Ears};
 use super::repairs::peel::{hole_edges, parity_inside, peel, Peeling};
 use super::repairs::shared::Repair;
-use super::result::{untouched_local_points, untouched_points, MedialAxis, Reconstruction};
+use super::result::{untouched_points, MedialAxis, Reconstruction};
+use crate::ids::{typed_edges, untyped_edges, LocalPoint};
 use super::smooth;
 use super::thinning;
 use super::wdm::{self, Label, LabelRule};
@@ -206,14 +207,14 @@ fn baseline(tri: &Triangulation, options: &Options, lap: &mut dyn FnMut(Phase)) 
     let edges = if tri.is_degenerate() {
         chain_edges(tri)
     } else if options.algorithm() == Algorithm::Crust {
-        crust::crust_edges_local(tri)
+        untyped_edges(crust::edges_of(tri))
     } else {
-        nn_crust::nn_crust_edges_local(tri)
+        untyped_edges(nn_crust::edges_of(tri))
     };
     lap(Phase::Extract);
     let curves = assemble(tri, &edges);
-    let edges = tri.to_input_edges(edges);
-    let unassigned = untouched_points(tri, &edges);
+    let unassigned = untouched_points(tri, edges.iter().map(|e| e.map(LocalPoint::new)));
+    let edges = tri.to_input_edges(typed_edges(edges));
     lap(Phase::Curves);
     Outcome {
         labels: Vec::new(),
@@ -274,7 +275,7 @@ impl<'t> WdmRun<'t> {
         lap(Phase::Voronoi);
         // Only the labels go on: the sources and the visit marks are freed here (10 bytes per
         // point at the memory peak, which is later).
-        let mut labels = wdm::labels_local(&vor, options.label_rule());
+        let mut labels = wdm::labels(&vor, options.label_rule());
         // The water flow's rounded circumcenters of all vertices (32 bytes a point): nothing
         // up to the pruned axis reads them, and it computes its balls' centres again, so they
         // are not held through the repairs and peeling. The raw axis reads them back.
@@ -352,9 +353,9 @@ impl<'t> WdmRun<'t> {
         lap(Phase::OpenCurves);
         // In local indices until the axis has read them (see `assemble_unnamed`).
         let curves = curves::assemble_unnamed(tri.points.len(), &edges, &tri.points, |p| {
-            tri.input_index(p)
+            tri.input_index(LocalPoint::new(p))
         });
-        let unassigned = untouched_local_points(tri, &edges);
+        let unassigned = untouched_points(tri, edges.iter().map(|e| e.map(LocalPoint::new)));
         let holes = if holes_possible {
             // The edges are distinct: those of the first pass the repair kept, then the
             // later ones. So a final edge is none of the first pass's exactly when it is a
@@ -420,7 +421,7 @@ impl<'t> WdmRun<'t> {
             }
         };
         for p in curves.iter_mut().flat_map(|c| c.points.iter_mut()) {
-            *p = tri.input_index(*p);
+            *p = tri.input_index(LocalPoint::new(*p));
         }
         let edges = curves::edges_of(&curves);
         Outcome {
@@ -449,7 +450,7 @@ fn thinned(
 ) -> Result<Reconstruction, Error> {
     let mut ids: Vec<u32> = representatives
         .iter()
-        .map(|&p| tri.input_index(p))
+        .map(|&p| tri.input_index(LocalPoint::new(p)))
         .collect();
     ids.sort_unstable();
     let chosen: Vec<[f64; 2]> = ids.iter().map(|&i| points[i as usize]).collect();
@@ -525,7 +526,7 @@ fn smoothing(
         .iter()
         .map(|c| curves::Curve {
             closed: c.closed,
-            points: c.points.iter().map(|&i| tri.local_index(i)).collect(),
+            points: c.points.iter().map(|&i| tri.local_index(i).get()).collect(),
         })
         .collect();
     Some(smooth::fitted_positions(tri, &local))
@@ -534,7 +535,9 @@ fn smoothing(
 /// The curves of distinct local `edges`, in caller indices (see
 /// [`curves::assemble_named`]).
 fn assemble(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<curves::Curve> {
-    curves::assemble_named(tri.points.len(), edges, &tri.points, |p| tri.input_index(p))
+    curves::assemble_named(tri.points.len(), edges, &tri.points, |p| {
+        tri.input_index(LocalPoint::new(p))
+    })
 }
 
 #[cfg(test)]

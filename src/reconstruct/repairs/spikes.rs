@@ -40,6 +40,7 @@
 //! degrees of `a` and `b` (2) and takes the spike's points from 2 to 0, like a swap.
 
 use super::shared::{EditedCurves, Swap};
+use crate::ids::LocalPoint;
 use crate::kernel::{orient, Sign};
 use crate::reconstruct::thresholds::spikes::{
     GLOBAL_CONTRAST, LOCAL_CONTRAST, MEDIAN_SAMPLE, MIN_SPIKE_TURN, PAIR_FACTOR,
@@ -71,7 +72,7 @@ pub(crate) fn drop_woven_spikes(
             let Some(found) = spike_candidate(points, curves, spike) else {
                 continue;
             };
-            if !vor.dual_neighbours_local(found.a).any(|q| q == found.b) {
+            if !vor.dual_neighbours(LocalPoint::new(found.a)).map(LocalPoint::get).any(|q| q == found.b) {
                 continue;
             }
             let median = *median.get_or_insert_with(|| median_turn(points, curves));

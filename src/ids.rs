@@ -142,7 +142,9 @@ impl TriangleId {
 
 /// The ids `0..count` of one space, in order.
 #[inline]
-pub(crate) fn ids<T: From<u32>>(count: usize) -> impl DoubleEndedIterator<Item = T> + ExactSizeIterator + Clone {
+pub(crate) fn ids<T: From<u32>>(
+    count: usize,
+) -> impl DoubleEndedIterator<Item = T> + ExactSizeIterator + Clone {
     (0..count as u32).map(T::from)
 }
 

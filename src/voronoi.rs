@@ -283,7 +283,9 @@ impl<'a> Voronoi<'a> {
     }
 
     /// The vertex ids `0..vertex_count()`.
-    pub fn vertex_ids(&self) -> impl DoubleEndedIterator<Item = VertexId> + ExactSizeIterator + Clone {
+    pub fn vertex_ids(
+        &self,
+    ) -> impl DoubleEndedIterator<Item = VertexId> + ExactSizeIterator + Clone {
         ids(self.vertex_count)
     }
 
@@ -331,10 +333,7 @@ impl<'a> Voronoi<'a> {
         if self.degree(v) == 3 {
             return self.vertex_triangle(v);
         }
-        let mut sites: Vec<[f64; 2]> = self
-            .face_corners(v)
-            .map(|p| self.tri.position(p))
-            .collect();
+        let mut sites: Vec<[f64; 2]> = self.face_corners(v).map(|p| self.tri.position(p)).collect();
         sites.sort_unstable_by(|p, q| lexicographic(*p, *q));
         let (a, mut b, mut c) = (sites[0], sites[1], sites[2]);
         if orient2d(a, b, c) == Orientation::Clockwise {
@@ -609,7 +608,10 @@ impl<'a> Voronoi<'a> {
     /// edge for a hull point); none for degenerate input. O(degree), nothing stored. (The
     /// clipped cells' `neighbour_vertices` also pairs each neighbour with a vertex,
     /// allocates, and gives collinear input its line neighbours; peeling wants neither.)
-    pub(crate) fn delaunay_neighbours(&self, p: LocalPoint) -> impl Iterator<Item = LocalPoint> + '_ {
+    pub(crate) fn delaunay_neighbours(
+        &self,
+        p: LocalPoint,
+    ) -> impl Iterator<Item = LocalPoint> + '_ {
         self.neighbours_through(p, |_| true)
     }
 

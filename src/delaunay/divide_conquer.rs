@@ -696,7 +696,7 @@ mod tests {
 
     /// Triangles by coordinates, each rotated to start at its smallest corner, sorted.
     fn by_coordinates(tri: &Triangulation) -> Vec<[[u64; 2]; 3]> {
-        let key = |v: u32| tri.points[v as usize].map(f64::to_bits);
+        let key = |v: LocalPoint| tri.position(v).map(f64::to_bits);
         let mut all: Vec<[[u64; 2]; 3]> = tri
             .triangles
             .iter()
@@ -730,7 +730,7 @@ mod tests {
             assert_eq!(t.triangles, tri.triangles);
             assert_eq!(t.halfedges, tri.halfedges);
             let hull = |t: &Triangulation| -> Vec<[f64; 2]> {
-                t.hull.iter().map(|&v| t.points[v as usize]).collect()
+                t.hull.iter().map(|&v| t.position(v)).collect()
             };
             assert_eq!(hull(&t), hull(&tri), "same hull from the same first point");
         }

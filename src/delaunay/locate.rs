@@ -38,8 +38,8 @@
 use std::sync::Arc;
 
 use super::triangulation::{Triangulation, NO_TWIN};
-use crate::ids::{HalfEdge, LocalPoint, TriangleId};
 use crate::error::{check_coordinate, Error};
+use crate::ids::{HalfEdge, LocalPoint, TriangleId};
 use crate::kernel::metric::distance_order;
 use crate::kernel::{orient, Sign};
 
@@ -192,9 +192,7 @@ impl<'a> Locator<'a> {
     fn start(&self, q: [f64; 2]) -> TriangleId {
         let tri = self.tri;
         match (self.grid.start(q), self.last) {
-            (Some(g), Some(l)) => {
-                (tri.nearer_start(q, g.halfedge(0), l.halfedge(0))).triangle()
-            }
+            (Some(g), Some(l)) => (tri.nearer_start(q, g.halfedge(0), l.halfedge(0))).triangle(),
             (Some(t), None) | (None, Some(t)) => t,
             (None, None) => tri.sampled_start(q),
         }
@@ -634,6 +632,8 @@ mod tests {
         ));
         assert_eq!(tri.nearest_point([1e-300, 1e-300]).unwrap(), Some(0));
         // An out-of-range hint is ignored.
-        assert!(tri.locate_from([0.1, 0.1], Some(TriangleId::new(99))).is_ok());
+        assert!(tri
+            .locate_from([0.1, 0.1], Some(TriangleId::new(99)))
+            .is_ok());
     }
 }

@@ -19,8 +19,8 @@ mod triangulation;
 mod validate;
 mod zorder;
 
-pub use locate::{Location, Locator};
 pub use crate::ids::{HalfEdge, TriangleId};
+pub use locate::{Location, Locator};
 pub use triangulation::{Triangulation, NO_TWIN};
 pub use validate::ValidationError;
 

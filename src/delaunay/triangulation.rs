@@ -64,7 +64,9 @@ impl Triangulation {
     }
 
     /// The triangle ids `0..triangle_count()`.
-    pub fn triangle_ids(&self) -> impl DoubleEndedIterator<Item = TriangleId> + ExactSizeIterator + Clone {
+    pub fn triangle_ids(
+        &self,
+    ) -> impl DoubleEndedIterator<Item = TriangleId> + ExactSizeIterator + Clone {
         ids(self.triangles.len())
     }
 
@@ -95,7 +97,9 @@ impl Triangulation {
     }
 
     /// The half-edge ids `0..halfedges().len()`.
-    pub fn halfedge_ids(&self) -> impl DoubleEndedIterator<Item = HalfEdge> + ExactSizeIterator + Clone {
+    pub fn halfedge_ids(
+        &self,
+    ) -> impl DoubleEndedIterator<Item = HalfEdge> + ExactSizeIterator + Clone {
         ids(self.halfedges.len())
     }
 
@@ -149,7 +153,9 @@ impl Triangulation {
     }
 
     /// The local points `0..distinct_point_count()`.
-    pub(crate) fn local_points(&self) -> impl DoubleEndedIterator<Item = LocalPoint> + ExactSizeIterator + Clone {
+    pub(crate) fn local_points(
+        &self,
+    ) -> impl DoubleEndedIterator<Item = LocalPoint> + ExactSizeIterator + Clone {
         ids(self.points.len())
     }
 

@@ -520,9 +520,9 @@ mod tests {
         assert_eq!(value["triangles"].as_array().unwrap().len(), 2);
         assert_eq!(value["hull"].as_array().unwrap().len(), 4);
         let triangles: Vec<[u32; 3]> = serde_json::from_value(value["triangles"].clone()).unwrap();
-        assert_eq!(triangles, tri.triangles());
+        assert_eq!(triangles, tri.triangles().collect::<Vec<_>>());
         let hull: Vec<u32> = serde_json::from_value(value["hull"].clone()).unwrap();
-        assert_eq!(hull, tri.hull());
+        assert_eq!(hull, tri.hull().collect::<Vec<_>>());
     }
 
     #[test]
@@ -536,7 +536,7 @@ mod tests {
             lines[0],
             "# wdm-crust triangulation: 5 points, 2 triangles, 4 hull points, 1 duplicates"
         );
-        let hull: Vec<String> = tri.hull().iter().map(u32::to_string).collect();
+        let hull: Vec<String> = tri.hull().map(|i| i.to_string()).collect();
         assert_eq!(lines[1], format!("# hull {}", hull.join(" ")));
         assert_eq!(lines[2], "# duplicate 4 0");
         let triangles: Vec<[u32; 3]> = lines[3..]
@@ -546,7 +546,7 @@ mod tests {
                 [v[0], v[1], v[2]]
             })
             .collect();
-        assert_eq!(triangles, tri.triangles());
+        assert_eq!(triangles, tri.triangles().collect::<Vec<_>>());
     }
 
     #[test]
@@ -587,11 +587,12 @@ mod tests {
                 "{a:?} {b:?}"
             );
         }
-        let rays: Vec<(u32, f64, f64)> = serde_json::from_value(value["rays"].clone()).unwrap();
-        let expected: Vec<(u32, f64, f64)> =
+        let rays: Vec<(VertexId, f64, f64)> =
+            serde_json::from_value(value["rays"].clone()).unwrap();
+        let expected: Vec<(VertexId, f64, f64)> =
             vor.rays().map(|(_, v, [dx, dy])| (v, dx, dy)).collect();
         assert_eq!(rays, expected);
-        let cells: Vec<Vec<u32>> = serde_json::from_value(value["cells"].clone()).unwrap();
+        let cells: Vec<Vec<VertexId>> = serde_json::from_value(value["cells"].clone()).unwrap();
         assert_eq!(cells.len(), 5);
         assert_eq!(cells[4], vor.cell(4).collect::<Vec<_>>());
 

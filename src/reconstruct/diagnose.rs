@@ -300,7 +300,10 @@ impl Survey {
                 .is_none_or(|steps| steps > CLOSE_CURVE_STEPS);
             if a_within && b_within && far_apart {
                 close_pairs += 1;
-                let (i, j) = (tri.input_index(LocalPoint::new(a)), tri.input_index(LocalPoint::new(b)));
+                let (i, j) = (
+                    tri.input_index(LocalPoint::new(a)),
+                    tri.input_index(LocalPoint::new(b)),
+                );
                 let named = [i.min(j), i.max(j)];
                 if first_close.is_none_or(|f| named < f) {
                     first_close = Some(named);
@@ -402,7 +405,11 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
             }
             *flagged = true;
             let side = beside.iter().map(|&f| length(f)).fold(0.0, f64::max);
-            note(&mut long, length(ab) / side, ab.map(|p| tri.input_index(LocalPoint::new(p))));
+            note(
+                &mut long,
+                length(ab) / side,
+                ab.map(|p| tri.input_index(LocalPoint::new(p))),
+            );
         }
         // A loop whose longest edge is far longer than every other one: an open curve whose
         // ends were joined.

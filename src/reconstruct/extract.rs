@@ -153,7 +153,8 @@ mod tests {
             let vor = tri.voronoi();
             assert!(!vor.has_merged_faces(), "round {round}");
             let flow = crate::reconstruct::wdm::labels(&vor, Default::default());
-            let random: Vec<Label> = (0..vor.vertex_count())
+            let random: Vec<Label> = vor
+                .vertex_ids()
                 .map(|_| {
                     if rng.f64() < 0.5 {
                         Label::Inner

@@ -792,7 +792,7 @@ mod tests {
             .iter()
             .map(|c| Curve {
                 closed: c.closed,
-                points: c.points.iter().map(|&i| tri.local_index(i)).collect(),
+                points: c.points.iter().map(|&i| tri.local_index(i).get()).collect(),
             })
             .collect()
     }

@@ -238,7 +238,7 @@ mod tests {
         let tri = triangulate(&points).unwrap();
         let vor = tri.voronoi();
         let n = vor.vertex_count();
-        let region: Vec<bool> = (0..n as u32)
+        let region: Vec<bool> = (vor.vertex_ids())
             .map(|v| {
                 let [x, y] = vor.vertex_position(v);
                 let ring = (x - 0.5).hypot(y - 0.5);
@@ -247,10 +247,10 @@ mod tests {
             })
             .collect();
         let halfedges = tri.halfedges();
-        let crosses = |e: u32| {
-            let twin = halfedges[e as usize];
-            let far = twin != NO_TWIN && region[vor.vertex_of_halfedge(twin) as usize];
-            region[vor.vertex_of_halfedge(e) as usize] != far
+        let crosses = |e: HalfEdge| {
+            let twin = halfedges[e.index()];
+            let far = twin != NO_TWIN && region[vor.vertex_of_halfedge(twin).index()];
+            region[vor.vertex_of_halfedge(e).index()] != far
         };
         let blocked: Vec<bool> = (0..n).map(|_| rng.below(50) == 0).collect();
         let one = depth_first(&vor, vec![false; n], crosses);

@@ -131,7 +131,10 @@ impl Reconstruction {
     /// Distinct points that no reconstructed edge touches.
     pub fn untouched_points(&self) -> Vec<u32> {
         let tri = &self.triangulation;
-        untouched_points(tri, self.edges.iter().map(|e| e.map(|i| tri.local_index(i))))
+        untouched_points(
+            tri,
+            self.edges.iter().map(|e| e.map(|i| tri.local_index(i))),
+        )
     }
 
     /// Distinct points on no reconstructed curve (outliers, leftovers of noise), sorted, in

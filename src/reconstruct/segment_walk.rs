@@ -207,6 +207,7 @@ mod tests {
             for _ in 0..30 {
                 let m = local.len();
                 let (a, b) = (rng.below(m) as u32, rng.below(m) as u32);
+                let (a, b) = (LocalPoint::new(a), LocalPoint::new(b));
                 if a == b || vor.is_delaunay_edge(a, b) {
                     continue;
                 }
@@ -214,10 +215,10 @@ mod tests {
                     continue;
                 };
                 walked += 1;
-                let (pa, pb) = (local[a as usize], local[b as usize]);
-                let mut expected: Vec<u32> = (0..tri.triangles.len())
+                let (pa, pb) = (local[a.index()], local[b.index()]);
+                let mut expected: Vec<VertexId> = (tri.triangle_ids())
                     .filter(|&t| {
-                        let corners = tri.triangles[t].map(|p| local[p as usize]);
+                        let corners = tri.triangle_points(t);
                         let sides = corners.map(|q| orient(pa, pb, q));
                         let apart = sides.iter().all(|&s| s != Sign::Positive)
                             || sides.iter().all(|&s| s != Sign::Negative);
@@ -251,9 +252,10 @@ mod tests {
             let local = &tri.points;
             let m = local.len() as u32;
             // A random third of the triangulation's edges is the "curve".
-            let mut curve: Vec<[u32; 2]> = (0..tri.halfedges().len())
+            let mut curve: Vec<[u32; 2]> = tri
+                .halfedge_ids()
                 .map(|e| {
-                    let (u, v) = (tri.org(e), tri.dest(e));
+                    let (u, v) = (tri.org(e).get(), tri.dest(e).get());
                     [u.min(v), u.max(v)]
                 })
                 .filter(|_| rng.below(3) == 0)
@@ -263,9 +265,10 @@ mod tests {
             let adjacency = Adjacency::new(local.len(), &curve);
             for _ in 0..30 {
                 let (a, b) = (rng.below(m as usize) as u32, rng.below(m as usize) as u32);
+                let (la, lb) = (LocalPoint::new(a), LocalPoint::new(b));
                 let expected =
-                    !vor.is_delaunay_edge(a, b) && crosses_by_brute_force(local, &curve, a, b);
-                let got = crosses_a_curve(&vor, &adjacency, a, b);
+                    !vor.is_delaunay_edge(la, lb) && crosses_by_brute_force(local, &curve, a, b);
+                let got = crosses_a_curve(&vor, &adjacency, la, lb);
                 assert_eq!(got, expected && a != b, "round {round}: {a} → {b}");
                 crossings += usize::from(got);
             }

@@ -9,12 +9,12 @@
 
 use std::cmp::Ordering;
 
+use crate::ids::{LocalPoint, VertexId};
 use crate::kernel::{compare_radius_rounded, dot_sign_rounded};
 use crate::parallel;
 use crate::predicates::{
     circumcenter_in_convex_hull, compare_circumradius, dot_sign_circumcenters, HullPosition, Sign,
 };
-use crate::ids::{LocalPoint, VertexId};
 use crate::voronoi::{EdgeEnd, Voronoi};
 
 /// Inside or outside the curve, for a Voronoi vertex.

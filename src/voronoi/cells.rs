@@ -102,7 +102,11 @@ enum Vertex {
     /// A box corner (exact).
     Corner([f64; 2]),
     /// The point of the bisector of the site and `q` on the box side `x[axis] = value`.
-    Crossing { axis: usize, value: f64, q: LocalPoint },
+    Crossing {
+        axis: usize,
+        value: f64,
+        q: LocalPoint,
+    },
     /// The circumcenter of the site, `q1` and `q2`: where their bisectors cross.
     Circumcenter { q1: LocalPoint, q2: LocalPoint },
 }

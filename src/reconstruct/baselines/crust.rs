@@ -272,7 +272,7 @@ mod tests {
         assert_eq!(crust, reference_crust(&pts));
         // (2,2)–(5,2) is a Delaunay edge that the Voronoi vertex (4.5, 0.5) blocks.
         let tri = triangulate(&pts).unwrap();
-        let is_delaunay = (0..tri.halfedges().len()).any(|e| {
+        let is_delaunay = tri.halfedge_ids().any(|e| {
             let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
             [a.min(b), a.max(b)] == [5, 7]
         });
@@ -393,7 +393,7 @@ mod tests {
         all.extend_from_slice(vor.vertex_positions());
         let big = triangulate(&all).unwrap();
         let mut expected = Vec::new();
-        for e in 0..big.halfedges().len() {
+        for e in big.halfedge_ids() {
             let (a, b) = (big.halfedge_origin(e), big.halfedge_destination(e));
             if (a as usize) < pts.len() && (b as usize) < pts.len() {
                 expected.push([a.min(b), a.max(b)]);

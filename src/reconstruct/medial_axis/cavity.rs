@@ -80,13 +80,8 @@ impl Cavity {
         }
         corners.sort_unstable();
         corners.dedup();
-        let sub = triangulate(
-            &corners
-                .iter()
-                .map(|&p| tri.position(p))
-                .collect::<Vec<_>>(),
-        )
-        .ok()?;
+        let sub =
+            triangulate(&corners.iter().map(|&p| tri.position(p)).collect::<Vec<_>>()).ok()?;
         // Local points of the boundary triangulation to local points of the diagram.
         let point = |q: LocalPoint| corners[sub.input_index(q) as usize];
         let sub_halfedges = sub.halfedges();
@@ -120,9 +115,7 @@ impl Cavity {
                 if boundary_at[h.index()] != u32::MAX {
                     continue;
                 }
-                let Some(twin) = sub.twin(h) else {
-                    return None;
-                };
+                let twin = sub.twin(h)?;
                 stack.push(twin.triangle());
             }
         }

@@ -138,7 +138,7 @@ mod tests {
         let tri = triangulate(&points).unwrap();
         let vor = tri.voronoi();
         let n = vor.vertex_count();
-        let inside: Vec<bool> = (0..n as u32)
+        let inside: Vec<bool> = (vor.vertex_ids())
             .map(|v| {
                 let [x, y] = vor.vertex_position(v);
                 (x - 0.5).hypot(y - 0.4) < 0.45 && rng.below(30) != 0
@@ -151,8 +151,8 @@ mod tests {
             edges: Vec::new(),
         };
         for (_, a, b) in vor.finite_edges() {
-            if inside[a as usize] && inside[b as usize] {
-                reference.add(a, b);
+            if inside[a.index()] && inside[b.index()] {
+                reference.add(a.get(), b.get());
             }
         }
         assert!(reference.used.len() > n / 2);

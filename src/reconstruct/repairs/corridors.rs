@@ -121,11 +121,7 @@ fn median(lengths: &mut [f64]) -> f64 {
 
 /// The finite outer vertex on the outer side of the crust edge `[a, b]` (none when that side
 /// is infinity: a hull edge).
-fn outer_side(
-    vor: &Voronoi<'_>,
-    labels: &[Label],
-    [a, b]: [LocalPoint; 2],
-) -> Option<VertexId> {
+fn outer_side(vor: &Voronoi<'_>, labels: &[Label], [a, b]: [LocalPoint; 2]) -> Option<VertexId> {
     let e = vor.delaunay_halfedge(a, b)?;
     let twin = vor.triangulation().halfedges()[e.index()];
     if twin == NO_TWIN {

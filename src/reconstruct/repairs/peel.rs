@@ -4,8 +4,8 @@
 
 use super::ears::{repair_ears, Ears};
 use super::shared::{edges_near, lies_apart, median_length, segment_distance};
-use crate::ids::{HalfEdge, LocalPoint};
 use crate::delaunay::triangulate;
+use crate::ids::{HalfEdge, LocalPoint};
 use crate::reconstruct::curves::{assemble_named, Adjacency, Curve};
 use crate::reconstruct::extract::wdm_crust_edges;
 use crate::reconstruct::lengths::distance;
@@ -166,7 +166,8 @@ fn isolated_leftovers(full: &Voronoi<'_>, rest: &[u32]) -> Vec<u32> {
     let nearest: Vec<f64> = rest
         .iter()
         .map(|&p| {
-            full.delaunay_neighbours(LocalPoint::new(p)).map(LocalPoint::get)
+            full.delaunay_neighbours(LocalPoint::new(p))
+                .map(LocalPoint::get)
                 .map(|q| distance(at(p), at(q)))
                 .fold(f64::INFINITY, f64::min)
         })
@@ -184,7 +185,10 @@ fn isolated_leftovers(full: &Voronoi<'_>, rest: &[u32]) -> Vec<u32> {
             let i = group[next];
             next += 1;
             let p = rest[i];
-            for q in full.delaunay_neighbours(LocalPoint::new(p)).map(LocalPoint::get) {
+            for q in full
+                .delaunay_neighbours(LocalPoint::new(p))
+                .map(LocalPoint::get)
+            {
                 let Some(j) = slot(q) else {
                     continue;
                 };
@@ -358,17 +362,19 @@ fn turning_angle(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
 fn near_a_curve<'a>(full: &Voronoi<'_>, curve: impl Fn(u32) -> &'a [(u32, u32)], p: u32) -> bool {
     let points = &full.triangulation().points;
     let at = |i: u32| points[i as usize];
-    full.delaunay_neighbours(LocalPoint::new(p)).map(LocalPoint::get).any(|q| {
-        // The sample spacing at q: its shortest curve edge (a long edge, where a curve
-        // bridges a gap, says nothing about how far its noise reaches).
-        let spacing = curve(q)
-            .iter()
-            .map(|&(_, r)| distance(at(q), at(r)))
-            .fold(f64::INFINITY, f64::min);
-        curve(q)
-            .iter()
-            .any(|&(_, r)| segment_distance(at(p), at(q), at(r)) < NEAR_CURVE * spacing)
-    })
+    full.delaunay_neighbours(LocalPoint::new(p))
+        .map(LocalPoint::get)
+        .any(|q| {
+            // The sample spacing at q: its shortest curve edge (a long edge, where a curve
+            // bridges a gap, says nothing about how far its noise reaches).
+            let spacing = curve(q)
+                .iter()
+                .map(|&(_, r)| distance(at(q), at(r)))
+                .fold(f64::INFINITY, f64::min);
+            curve(q)
+                .iter()
+                .any(|&(_, r)| segment_distance(at(p), at(q), at(r)) < NEAR_CURVE * spacing)
+        })
 }
 
 /// How peeling ended.

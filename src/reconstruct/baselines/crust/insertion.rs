@@ -56,7 +56,11 @@ impl<'p, 'a> Dt<'p, 'a> {
     pub(crate) fn new(tri: &Triangulation, pts: &'p MixedPoints<'a>, vertex_count: usize) -> Self {
         let solid = tri.triangle_count();
         let halfedges = tri.halfedges();
-        let mut v: Vec<[u32; 3]> = tri.triangles.iter().map(|t| t.map(LocalPoint::get)).collect();
+        let mut v: Vec<[u32; 3]> = tri
+            .triangles
+            .iter()
+            .map(|t| t.map(LocalPoint::get))
+            .collect();
         let mut nb = vec![[NONE; 3]; solid];
         // Ghost of the hull edge starting at each hull vertex.
         let mut ghost_from = vec![NONE; tri.points.len()];

@@ -155,15 +155,13 @@ fn main() {
     println!("labeling fallbacks ({reps} runs): {label_counts:?}");
 
     // Inputs of the predicate loops, taken from the diagram.
-    let vertex_tris: Vec<T> = (0..vor.vertex_count() as u32)
-        .map(|v| vor.vertex_triangle(v))
-        .collect();
+    let vertex_tris: Vec<T> = vor.vertex_ids().map(|v| vor.vertex_triangle(v)).collect();
     let mut dot_cases = Vec::new();
     for p in 0..tri.point_count() as u32 {
         if !vor.is_cell_bounded(p) {
             continue;
         }
-        let cell: Vec<u32> = vor.cell(p).collect();
+        let cell: Vec<wdm_crust::VertexId> = vor.cell(p).collect();
         let point = tri.point(p);
         let source = vor.vertex_triangle(cell[0]);
         for &v in &cell[1..] {
@@ -174,8 +172,9 @@ fn main() {
         .windows(2)
         .map(|w| (w[1][0], w[1][1], w[0]))
         .collect();
-    let hull: Vec<P> = tri.hull().into_iter().map(|i| tri.point(i)).collect();
-    let ray_tris: Vec<T> = (0..vor.vertex_count() as u32)
+    let hull: Vec<P> = tri.hull().map(|i| tri.point(i)).collect();
+    let ray_tris: Vec<T> = vor
+        .vertex_ids()
         .filter(|&v| vor.has_ray(v))
         .map(|v| vor.vertex_triangle(v))
         .collect();

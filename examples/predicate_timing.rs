@@ -62,12 +62,12 @@ fn classified(x: f64) -> u8 {
 fn delaunay_tests(points: &[[f64; 2]], count: usize) -> Vec<[[f64; 2]; 4]> {
     let tri = wdm_crust::triangulate(points).expect("valid points");
     let twins = tri.halfedges();
-    let tests: Vec<[[f64; 2]; 4]> = (0..twins.len())
-        .filter(|&e| twins[e] != u32::MAX && (twins[e] as usize) > e)
+    let tests: Vec<[[f64; 2]; 4]> = (tri.halfedge_ids())
+        .filter(|&e| tri.twin(e).is_some_and(|twin| twin > e))
         .map(|e| {
-            let twin = twins[e] as usize;
-            let opposite = tri.point(tri.halfedge_origin(twin / 3 * 3 + (twin + 2) % 3));
-            let [a, b, c] = tri.triangle_points(e / 3);
+            let twin = twins[e.index()];
+            let opposite = tri.point(tri.halfedge_origin(twin.prev()));
+            let [a, b, c] = tri.triangle_points(e.triangle());
             [a, b, c, opposite]
         })
         .collect();

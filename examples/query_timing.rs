@@ -76,7 +76,7 @@ fn run() -> Result<String, String> {
             .map(|&q| {
                 locator
                     .triangle_containing(q)
-                    .map(|t| t.map_or(-1, |t| t as i64))
+                    .map(|t| t.map_or(-1, |t| i64::from(t.get())))
             })
             .collect::<Result<Vec<i64>, _>>()
     });

@@ -76,9 +76,7 @@ fn main() {
             let t = Instant::now();
             let vor = tri.voronoi();
             let built = t.elapsed().as_secs_f64();
-            let merged = (0..vor.vertex_count() as u32)
-                .filter(|&v| vor.degree(v) > 3)
-                .count();
+            let merged = vor.vertex_ids().filter(|&v| vor.degree(v) > 3).count();
             println!(
                 "voronoi: {built:.2}s, {} vertices ({merged} merged), {} finite edges",
                 vor.vertex_count(),

@@ -44,6 +44,7 @@
 
 pub mod delaunay;
 pub mod error;
+mod ids;
 pub mod interop;
 #[cfg(feature = "io")]
 pub mod io;
@@ -56,6 +57,7 @@ pub mod voronoi;
 
 pub use delaunay::{triangulate, Triangulation};
 pub use error::Error;
+pub use ids::{HalfEdge, TriangleId, VertexId};
 pub use reconstruct::{
     reconstruct, reconstruct_observed, reconstruct_with, Reconstruction, Warning, WarningCode,
 };

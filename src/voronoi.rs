@@ -24,7 +24,8 @@ mod merge;
 
 pub use bounding_box::{BoundingBox, BoxError};
 
-use crate::delaunay::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
+use crate::delaunay::{Triangulation, NO_TWIN};
+use crate::ids::{ids, HalfEdge, LocalPoint, TriangleId, VertexId};
 use crate::kernel::{circumcenter, circumcenter_exact, incircle, ExactPoint, Sign};
 use crate::parallel;
 use crate::predicates::{orient2d, Orientation};
@@ -33,7 +34,7 @@ use crate::predicates::{orient2d, Orientation};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum EdgeEnd {
     /// A finite Voronoi vertex.
-    Vertex(u32),
+    Vertex(VertexId),
     /// Infinity: the edge is a ray (its dual is a convex hull edge).
     Infinity,
 }
@@ -43,14 +44,27 @@ pub enum EdgeEnd {
 #[non_exhaustive]
 pub struct VoronoiEdge {
     /// The dual Delaunay half-edge, on the boundary of `from`'s face.
-    pub halfedge: u32,
+    pub halfedge: HalfEdge,
     /// The vertex the edge is seen from.
-    pub from: u32,
+    pub from: VertexId,
     /// The other end.
     pub to: EdgeEnd,
     /// The two points whose cells the edge separates: origin and destination of `halfedge`.
     /// The cell of `sites[0]` lies to the left of the edge when walking from `from` to `to`.
     pub sites: [u32; 2],
+}
+
+/// A [`VoronoiEdge`] inside the crate: its sites are local points.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct DualEdge {
+    /// The dual Delaunay half-edge, on the boundary of `from`'s face.
+    pub halfedge: HalfEdge,
+    /// The vertex the edge is seen from.
+    pub from: VertexId,
+    /// The other end.
+    pub to: EdgeEnd,
+    /// Origin and destination of `halfedge`: the cell of `sites[0]` lies to its left.
+    pub sites: [LocalPoint; 2],
 }
 
 /// The Voronoi diagram of the distinct points of a triangulation.
@@ -68,7 +82,7 @@ pub struct Voronoi<'a> {
     positions: std::sync::OnceLock<Vec<[f64; 2]>>,
     /// One half-edge out of every local point (the outgoing hull edge for hull points);
     /// `NO_TWIN` in degenerate input.
-    out_halfedge: Vec<u32>,
+    out_halfedge: Vec<HalfEdge>,
     /// `None` when no two neighbouring triangles share their circumcircle (the common case
     /// for real-valued input): then vertex `v` is triangle `v` and its face is that triangle.
     merged: Option<MergedFaces>,
@@ -77,30 +91,30 @@ pub struct Voronoi<'a> {
 /// The faces of the diagram when some of them merge several triangles.
 #[derive(Debug, Clone)]
 struct MergedFaces {
-    vertex_of_triangle: Vec<u32>,
+    vertex_of_triangle: Vec<VertexId>,
     /// The smallest triangle of every vertex's face: the one its position is computed from.
-    first_triangle: Vec<u32>,
+    first_triangle: Vec<TriangleId>,
     /// `boundary[boundary_start[v]..boundary_start[v + 1]]`: the half-edges around the face
     /// of `v`, counterclockwise from the smallest. Empty for a single-triangle face, whose
     /// boundary is its three half-edges.
     boundary_start: Vec<u32>,
-    boundary: Vec<u32>,
+    boundary: Vec<HalfEdge>,
 }
 
 /// The boundary half-edges of one face, counterclockwise.
 #[derive(Debug, Clone)]
 enum FaceBoundary<'v> {
     Triangle(std::ops::Range<u32>),
-    Merged(std::slice::Iter<'v, u32>),
+    Merged(std::slice::Iter<'v, HalfEdge>),
 }
 
 impl Iterator for FaceBoundary<'_> {
-    type Item = u32;
+    type Item = HalfEdge;
 
     #[inline]
-    fn next(&mut self) -> Option<u32> {
+    fn next(&mut self) -> Option<HalfEdge> {
         match self {
-            FaceBoundary::Triangle(range) => range.next(),
+            FaceBoundary::Triangle(range) => range.next().map(HalfEdge::new),
             FaceBoundary::Merged(iter) => iter.next().copied(),
         }
     }
@@ -126,11 +140,12 @@ impl Triangulation {
     /// assert_eq!(vor.vertex_count(), 4);
     /// assert!(vor.is_cell_bounded(4));
     /// assert_eq!(vor.cell(4).count(), 4);
+    /// let centre = wdm_crust::VertexId::new(0);
     /// // Without the centre the square's four corners are cocircular: one vertex, four rays.
     /// let tri = wdm_crust::triangulate(&pts[..4])?;
     /// let vor = tri.voronoi();
     /// assert_eq!(vor.vertex_count(), 1);
-    /// assert_eq!(vor.vertex_position(0), [1.0, 1.0]);
+    /// assert_eq!(vor.vertex_position(centre), [1.0, 1.0]);
     /// assert_eq!(vor.rays().count(), 4);
     /// # Ok::<(), wdm_crust::Error>(())
     /// ```
@@ -148,42 +163,44 @@ impl Triangulation {
 /// cores, the sequential one does not. A first version kept 64-bit keys that put the hull
 /// half-edge first, then copied them out: 12 bytes a point of fresh memory instead of 4.)
 #[cfg(feature = "parallel")]
-fn outgoing_halfedges(tri: &Triangulation) -> Vec<u32> {
+fn outgoing_halfedges(tri: &Triangulation) -> Vec<HalfEdge> {
     use rayon::prelude::*;
     use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
     let halfedges = tri.halfedges();
     let out: Vec<AtomicU32> = (0..tri.points.len())
         .into_par_iter()
-        .map(|_| AtomicU32::new(NO_TWIN))
+        .map(|_| AtomicU32::new(NO_TWIN.get()))
         .collect();
     // Reserved on this thread: worker-grown vectors would stay in the workers' allocators
     // (a sixth of a curve sample's points are on its hull).
     let hull_halfedges =
         parallel::flat_map_chunks_reserved(tri.triangles.len(), 3, |range, hull| {
             for t in range {
-                for (i, &origin) in tri.triangles[t].iter().enumerate() {
-                    let e = 3 * t + i;
-                    if halfedges[e] == NO_TWIN {
-                        hull.push(e as u32);
+                let t = TriangleId::new(t as u32);
+                for (e, origin) in t.halfedges().into_iter().zip(tri.corners(t)) {
+                    if halfedges[e.index()] == NO_TWIN {
+                        hull.push(e);
                     } else {
-                        out[origin as usize].fetch_min(e as u32, Relaxed);
+                        out[origin.index()].fetch_min(e.get(), Relaxed);
                     }
                 }
             }
         });
     for e in hull_halfedges {
-        out[tri.org(e as usize) as usize].store(e, Relaxed);
+        out[tri.org(e).index()].store(e.get(), Relaxed);
     }
-    // In place: an atomic has the layout of its value.
-    out.into_iter().map(AtomicU32::into_inner).collect()
+    // In place: an atomic has the layout of its value, and so has a half-edge.
+    out.into_iter()
+        .map(|e| HalfEdge::new(e.into_inner()))
+        .collect()
 }
 
 /// Without the `parallel` feature (where `parallel::pays` is false and `Voronoi::new` takes
 /// its one pass instead): the same array, one pass.
 #[cfg(not(feature = "parallel"))]
-fn outgoing_halfedges(tri: &Triangulation) -> Vec<u32> {
+fn outgoing_halfedges(tri: &Triangulation) -> Vec<HalfEdge> {
     let mut out = vec![NO_TWIN; tri.points.len()];
-    for t in 0..tri.triangles.len() {
+    for t in tri.triangle_ids() {
         note_outgoing(tri, t, &mut out);
     }
     out
@@ -191,13 +208,12 @@ fn outgoing_halfedges(tri: &Triangulation) -> Vec<u32> {
 
 /// The sequential rule for the half-edges of triangle `t`: a hull half-edge replaces what a
 /// point has, an interior one only fills an empty entry (so the first stays).
-fn note_outgoing(tri: &Triangulation, t: usize, out: &mut [u32]) {
+fn note_outgoing(tri: &Triangulation, t: TriangleId, out: &mut [HalfEdge]) {
     let halfedges = tri.halfedges();
-    for (i, &origin) in tri.triangles[t].iter().enumerate() {
-        let e = 3 * t + i;
-        let entry = &mut out[origin as usize];
-        if halfedges[e] == NO_TWIN || *entry == NO_TWIN {
-            *entry = e as u32;
+    for (e, origin) in t.halfedges().into_iter().zip(tri.corners(t)) {
+        let entry = &mut out[origin.index()];
+        if halfedges[e.index()] == NO_TWIN || *entry == NO_TWIN {
+            *entry = e;
         }
     }
 }
@@ -212,13 +228,14 @@ impl<'a> Voronoi<'a> {
         let out_halfedge;
         // The neighbours across the edges of triangle `t` that share its circumcircle (each
         // interior edge once, from its lower half-edge).
-        let cocircular_at = |t: usize, pairs: &mut Vec<[u32; 2]>| {
-            let [a, b, c] = triangles[t].map(|p| points[p as usize]);
-            for (e, &twin) in halfedges.iter().enumerate().skip(3 * t).take(3) {
-                if twin != NO_TWIN && twin as usize > e {
-                    let opposite = points[tri.org(prev_in_triangle(twin as usize)) as usize];
+        let cocircular_at = |t: TriangleId, pairs: &mut Vec<[TriangleId; 2]>| {
+            let [a, b, c] = tri.triangle_points(t);
+            for e in t.halfedges() {
+                let twin = halfedges[e.index()];
+                if twin != NO_TWIN && twin > e {
+                    let opposite = points[tri.org(twin.prev()).index()];
                     if incircle(a, b, c, opposite) == Sign::Zero {
-                        pairs.push([t as u32, twin / 3]);
+                        pairs.push([t, twin.triangle()]);
                     }
                 }
             }
@@ -228,13 +245,13 @@ impl<'a> Voronoi<'a> {
             // pass of their own, on all threads.
             out_halfedge = outgoing_halfedges(tri);
             parallel::flat_map_chunks(triangles.len(), |range, pairs| {
-                range.for_each(|t| cocircular_at(t, pairs))
+                range.for_each(|t| cocircular_at(TriangleId::new(t as u32), pairs))
             })
         } else {
             // One pass over the triangles: each is read once.
             let mut out = vec![NO_TWIN; points.len()];
             let mut pairs = Vec::new();
-            for t in 0..triangles.len() {
+            for t in tri.triangle_ids() {
                 note_outgoing(tri, t, &mut out);
                 cocircular_at(t, &mut pairs);
             }
@@ -265,14 +282,24 @@ impl<'a> Voronoi<'a> {
         self.vertex_count
     }
 
-    /// Circumcenters of all vertices, rounded to f64 as [`vertex_position`] rounds them.
+    /// The vertex ids `0..vertex_count()`.
+    pub fn vertex_ids(
+        &self,
+    ) -> impl DoubleEndedIterator<Item = VertexId> + ExactSizeIterator + Clone {
+        ids(self.vertex_count)
+    }
+
+    /// Circumcenters of all vertices, rounded to f64 as [`vertex_position`] rounds them, by
+    /// [`VertexId::index`].
     /// Computed on the first call (a filtered circumcenter per vertex, some tens of
     /// nanoseconds each) and kept.
     ///
     /// [`vertex_position`]: Voronoi::vertex_position
     pub fn vertex_positions(&self) -> &[[f64; 2]] {
         self.positions.get_or_init(|| {
-            parallel::map_range(self.vertex_count, |v| self.compute_position(v as u32))
+            parallel::map_range(self.vertex_count, |v| {
+                self.compute_position(VertexId::new(v as u32))
+            })
         })
     }
 
@@ -285,14 +312,14 @@ impl<'a> Voronoi<'a> {
 
     /// Circumcenter of vertex `v`, rounded to f64: within 256 ulps of the exact one, see
     /// [`crate::predicates::circumcenter`].
-    pub fn vertex_position(&self, v: u32) -> [f64; 2] {
+    pub fn vertex_position(&self, v: VertexId) -> [f64; 2] {
         match self.positions.get() {
-            Some(positions) => positions[v as usize],
+            Some(positions) => positions[v.index()],
             None => self.compute_position(v),
         }
     }
 
-    fn compute_position(&self, v: u32) -> [f64; 2] {
+    fn compute_position(&self, v: VertexId) -> [f64; 2] {
         rounded_circumcenter(self.canonical_triangle(v))
     }
 
@@ -302,15 +329,11 @@ impl<'a> Voronoi<'a> {
     /// input order where points tie in the Z-order (points much closer together than the
     /// spread of the input). A single triangle is its own; a merged face gives its three
     /// lexicographically smallest sites (distinct points on one circle: never collinear).
-    pub(crate) fn canonical_triangle(&self, v: u32) -> [[f64; 2]; 3] {
+    pub(crate) fn canonical_triangle(&self, v: VertexId) -> [[f64; 2]; 3] {
         if self.degree(v) == 3 {
             return self.vertex_triangle(v);
         }
-        let points = &self.tri.points;
-        let mut sites: Vec<[f64; 2]> = self
-            .vertex_sites_local(v)
-            .map(|p| points[p as usize])
-            .collect();
+        let mut sites: Vec<[f64; 2]> = self.face_corners(v).map(|p| self.tri.position(p)).collect();
         sites.sort_unstable_by(|p, q| lexicographic(*p, *q));
         let (a, mut b, mut c) = (sites[0], sites[1], sites[2]);
         if orient2d(a, b, c) == Orientation::Clockwise {
@@ -320,7 +343,7 @@ impl<'a> Voronoi<'a> {
     }
 
     /// Circumcenter of vertex `v` as an exact rational point.
-    pub fn vertex_exact(&self, v: u32) -> ExactPoint {
+    pub fn vertex_exact(&self, v: VertexId) -> ExactPoint {
         let [a, b, c] = self.vertex_triangle(v);
         // Delaunay triangles are never collinear, so the circumcenter exists.
         circumcenter_exact(a, b, c).unwrap_or_else(|| ExactPoint::from_f64(a))
@@ -328,32 +351,31 @@ impl<'a> Voronoi<'a> {
 
     /// Three points of the face of `v` (a Delaunay triangle of it): the input the exact
     /// circumcenter predicates take.
-    pub fn vertex_triangle(&self, v: u32) -> [[f64; 2]; 3] {
-        self.tri
-            .triangle_points(self.vertex_triangle_index(v) as usize)
+    pub fn vertex_triangle(&self, v: VertexId) -> [[f64; 2]; 3] {
+        self.tri.triangle_points(self.vertex_triangle_id(v))
     }
 
     /// A Delaunay triangle of the face of `v` (the one [`vertex_triangle`](Self::vertex_triangle) reads).
-    pub(crate) fn vertex_triangle_index(&self, v: u32) -> u32 {
+    pub(crate) fn vertex_triangle_id(&self, v: VertexId) -> TriangleId {
         match &self.merged {
-            None => v,
-            Some(m) => m.first_triangle[v as usize],
+            None => TriangleId::new(v.get()),
+            Some(m) => m.first_triangle[v.index()],
         }
     }
 
     /// The Voronoi vertex of Delaunay triangle `t`.
     #[inline]
-    pub fn vertex_of_triangle(&self, t: usize) -> u32 {
+    pub fn vertex_of_triangle(&self, t: TriangleId) -> VertexId {
         match &self.merged {
-            None => t as u32,
-            Some(m) => m.vertex_of_triangle[t],
+            None => VertexId::new(t.get()),
+            Some(m) => m.vertex_of_triangle[t.index()],
         }
     }
 
     /// The Voronoi vertex on the left of Delaunay half-edge `e` (the face containing it).
     #[inline]
-    pub fn vertex_of_halfedge(&self, e: u32) -> u32 {
-        self.vertex_of_triangle(e as usize / 3)
+    pub fn vertex_of_halfedge(&self, e: HalfEdge) -> VertexId {
+        self.vertex_of_triangle(e.triangle())
     }
 
     /// Whether any two neighbouring Delaunay triangles share their circumcircle (then some
@@ -363,75 +385,80 @@ impl<'a> Voronoi<'a> {
     }
 
     #[inline]
-    fn boundary_of(&self, v: u32) -> FaceBoundary<'_> {
+    fn boundary_of(&self, v: VertexId) -> FaceBoundary<'_> {
         if let Some(m) = &self.merged {
             let row = &m.boundary
-                [m.boundary_start[v as usize] as usize..m.boundary_start[v as usize + 1] as usize];
+                [m.boundary_start[v.index()] as usize..m.boundary_start[v.index() + 1] as usize];
             if !row.is_empty() {
                 return FaceBoundary::Merged(row.iter());
             }
-            let e = 3 * m.first_triangle[v as usize];
+            let e = m.first_triangle[v.index()].halfedge(0).get();
             return FaceBoundary::Triangle(e..e + 3);
         }
-        FaceBoundary::Triangle(3 * v..3 * v + 3)
+        let e = 3 * v.get();
+        FaceBoundary::Triangle(e..e + 3)
     }
 
     /// Number of Voronoi edges (finite and rays) at `v`: the corners of its merged face.
-    pub fn degree(&self, v: u32) -> usize {
+    pub fn degree(&self, v: VertexId) -> usize {
         self.boundary_of(v).len()
     }
 
     /// The points whose cells meet at `v` (the corners of its Delaunay face), counterclockwise.
-    pub fn vertex_sites(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
-        self.boundary_of(v)
-            .map(|e| self.tri.halfedge_origin(e as usize))
+    pub fn vertex_sites(&self, v: VertexId) -> impl Iterator<Item = u32> + '_ {
+        self.face_corners(v).map(|p| self.tri.input_index(p))
     }
 
-    /// [`vertex_sites`](Self::vertex_sites) in local indices.
+    /// The corners of the Delaunay face of `v` (the sites of [`vertex_sites`](Self::vertex_sites)).
     #[inline]
-    pub(crate) fn vertex_sites_local(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
-        self.boundary_of(v).map(|e| self.tri.org(e as usize))
+    pub(crate) fn face_corners(&self, v: VertexId) -> impl Iterator<Item = LocalPoint> + '_ {
+        self.boundary_of(v).map(|e| self.tri.org(e))
     }
 
     /// The Voronoi edges at `v`, counterclockwise around its face.
-    pub fn vertex_edges(&self, v: u32) -> impl Iterator<Item = VoronoiEdge> + '_ {
-        self.boundary_of(v).map(|e| self.edge(e))
+    pub fn vertex_edges(&self, v: VertexId) -> impl Iterator<Item = VoronoiEdge> + '_ {
+        self.face_edges(v).map(|edge| self.with_caller_sites(edge))
     }
 
-    /// [`vertex_edges`](Self::vertex_edges) with the sites in local indices.
+    /// The edges of [`vertex_edges`](Self::vertex_edges), with local sites.
     #[inline]
-    pub(crate) fn vertex_edges_local(&self, v: u32) -> impl Iterator<Item = VoronoiEdge> + '_ {
-        self.boundary_of(v).map(|e| self.edge_local(e))
+    pub(crate) fn face_edges(&self, v: VertexId) -> impl Iterator<Item = DualEdge> + '_ {
+        self.boundary_of(v).map(|e| self.dual_edge(e))
     }
 
     /// The Voronoi edge dual to the boundary half-edge `e`, seen from the face of `e`.
-    pub fn edge(&self, e: u32) -> VoronoiEdge {
-        let edge = self.edge_local(e);
+    pub fn edge(&self, e: HalfEdge) -> VoronoiEdge {
+        self.with_caller_sites(self.dual_edge(e))
+    }
+
+    /// The public face of a [`DualEdge`].
+    fn with_caller_sites(&self, edge: DualEdge) -> VoronoiEdge {
         VoronoiEdge {
+            halfedge: edge.halfedge,
+            from: edge.from,
+            to: edge.to,
             sites: edge.sites.map(|p| self.tri.input_index(p)),
-            ..edge
         }
     }
 
+    /// [`edge`](Self::edge), with local sites.
     #[inline]
-    fn edge_local(&self, e: u32) -> VoronoiEdge {
-        let twin = self.tri.halfedges()[e as usize];
-        VoronoiEdge {
+    pub(crate) fn dual_edge(&self, e: HalfEdge) -> DualEdge {
+        DualEdge {
             halfedge: e,
             from: self.vertex_of_halfedge(e),
-            to: if twin == NO_TWIN {
-                EdgeEnd::Infinity
-            } else {
-                EdgeEnd::Vertex(self.vertex_of_halfedge(twin))
+            to: match self.tri.twin(e) {
+                None => EdgeEnd::Infinity,
+                Some(twin) => EdgeEnd::Vertex(self.vertex_of_halfedge(twin)),
             },
-            sites: [self.tri.org(e as usize), self.tri.dest(e as usize)],
+            sites: [self.tri.org(e), self.tri.dest(e)],
         }
     }
 
     /// True when the Delaunay half-edge `e` has a dual Voronoi edge (its two sides are in
     /// different merged faces, or it is on the hull).
-    pub fn has_dual(&self, e: u32) -> bool {
-        let twin = self.tri.halfedges()[e as usize];
+    pub fn has_dual(&self, e: HalfEdge) -> bool {
+        let twin = self.tri.halfedges()[e.index()];
         twin == NO_TWIN
             || self.merged.is_none()
             || self.vertex_of_halfedge(e) != self.vertex_of_halfedge(twin)
@@ -440,9 +467,9 @@ impl<'a> Voronoi<'a> {
     /// The vertices that carry a ray, sorted, each once: the faces of the hull edges, read
     /// off the hull's points (each starts one hull edge, its outgoing half-edge here),
     /// without a pass over all vertices.
-    pub(crate) fn ray_vertices(&self) -> Vec<u32> {
-        let mut rays: Vec<u32> = (self.tri.hull.iter())
-            .map(|&p| self.out_halfedge[p as usize])
+    pub(crate) fn ray_vertices(&self) -> Vec<VertexId> {
+        let mut rays: Vec<VertexId> = (self.tri.hull.iter())
+            .map(|&p| self.out_halfedge[p.index()])
             .filter(|&e| e != NO_TWIN)
             .map(|e| self.vertex_of_halfedge(e))
             .collect();
@@ -452,17 +479,17 @@ impl<'a> Voronoi<'a> {
     }
 
     /// Does `v` carry at least one ray (is its face on the convex hull)?
-    pub fn has_ray(&self, v: u32) -> bool {
+    pub fn has_ray(&self, v: VertexId) -> bool {
         self.boundary_of(v)
-            .any(|e| self.tri.halfedges()[e as usize] == NO_TWIN)
+            .any(|e| self.tri.halfedges()[e.index()] == NO_TWIN)
     }
 
     /// Finite Voronoi edges, each once, by increasing dual half-edge:
     /// `(dual half-edge, vertex, vertex)`.
-    pub fn finite_edges(&self) -> impl Iterator<Item = (u32, u32, u32)> + '_ {
+    pub fn finite_edges(&self) -> impl Iterator<Item = (HalfEdge, VertexId, VertexId)> + '_ {
         let halfedges = self.tri.halfedges();
-        (0..halfedges.len() as u32).filter_map(move |e| {
-            let twin = halfedges[e as usize];
+        self.tri.halfedge_ids().filter_map(move |e| {
+            let twin = halfedges[e.index()];
             (twin != NO_TWIN && e < twin && self.has_dual(e))
                 .then(|| (e, self.vertex_of_halfedge(e), self.vertex_of_halfedge(twin)))
         })
@@ -472,18 +499,18 @@ impl<'a> Voronoi<'a> {
     /// The direction is the outward normal of the hull edge, `(b − a)` turned clockwise,
     /// rounded to f64; halved where a difference of coordinates near `f64::MAX` would
     /// overflow (a direction, not a length: always finite).
-    pub fn rays(&self) -> impl Iterator<Item = (u32, u32, [f64; 2])> + '_ {
+    pub fn rays(&self) -> impl Iterator<Item = (HalfEdge, VertexId, [f64; 2])> + '_ {
         let halfedges = self.tri.halfedges();
-        (0..halfedges.len() as u32)
-            .filter(move |&e| halfedges[e as usize] == NO_TWIN)
+        (self.tri.halfedge_ids())
+            .filter(move |&e| halfedges[e.index()] == NO_TWIN)
             .map(move |e| (e, self.vertex_of_halfedge(e), self.ray_direction(e)))
     }
 
     /// Outward normal of the hull half-edge `e` (interior on its left): `(b − a)` turned
     /// clockwise, rounded to f64, or half of it where that overflows (see [`rays`](Self::rays)).
-    pub fn ray_direction(&self, e: u32) -> [f64; 2] {
-        let a = self.tri.points[self.tri.org(e as usize) as usize];
-        let b = self.tri.points[self.tri.dest(e as usize) as usize];
+    pub fn ray_direction(&self, e: HalfEdge) -> [f64; 2] {
+        let a = self.tri.position(self.tri.org(e));
+        let b = self.tri.position(self.tri.dest(e));
         let direction = [b[1] - a[1], a[0] - b[0]];
         if direction.iter().all(|d| d.is_finite()) {
             return direction;
@@ -496,14 +523,15 @@ impl<'a> Voronoi<'a> {
     /// Is the cell of point `p` bounded (is `p` strictly inside the convex hull)?
     /// False for hull points, duplicates and degenerate input.
     pub fn is_cell_bounded(&self, p: u32) -> bool {
-        !self.tri.is_duplicate(p) && self.is_cell_bounded_local(self.tri.local_index(p))
+        !self.tri.is_duplicate(p) && self.is_interior(self.tri.local_index(p))
     }
 
-    /// [`is_cell_bounded`](Self::is_cell_bounded) of local point `p`.
+    /// Is local point `p` strictly inside the convex hull (is its cell bounded)? False for
+    /// degenerate input.
     #[inline]
-    pub(crate) fn is_cell_bounded_local(&self, p: u32) -> bool {
-        let e = self.out_halfedge[p as usize];
-        e != NO_TWIN && self.tri.halfedges()[e as usize] != NO_TWIN
+    pub(crate) fn is_interior(&self, p: LocalPoint) -> bool {
+        let e = self.out_halfedge[p.index()];
+        e != NO_TWIN && self.tri.halfedges()[e.index()] != NO_TWIN
     }
 
     /// The vertices of the cell of point `p`, counterclockwise. For a hull point the cell
@@ -519,15 +547,15 @@ impl<'a> Voronoi<'a> {
                 last_vertex: None,
             };
         }
-        self.cell_local(self.tri.local_index(p))
+        self.cell_vertices(self.tri.local_index(p))
     }
 
-    /// [`cell`](Self::cell) of local point `p`.
+    /// The vertices of the cell of local point `p`, as [`cell`](Self::cell) gives them.
     #[inline]
-    pub(crate) fn cell_local(&self, p: u32) -> CellVertices<'_, 'a> {
-        let start = self.out_halfedge[p as usize];
+    pub(crate) fn cell_vertices(&self, p: LocalPoint) -> CellVertices<'_, 'a> {
+        let start = self.out_halfedge[p.index()];
         let mut first = start;
-        if start != NO_TWIN && self.tri.halfedges()[start as usize] != NO_TWIN {
+        if start != NO_TWIN && self.tri.halfedges()[start.index()] != NO_TWIN {
             // Interior point: start right after a change of face, so that a merged face is
             // not split across the wrap-around.
             let v = self.vertex_of_halfedge(start);
@@ -547,26 +575,26 @@ impl<'a> Voronoi<'a> {
     }
 
     /// Is `[a, b]` (local indices) an edge of the triangulation? Walks the triangles around `a`: O(degree).
-    pub(crate) fn is_delaunay_edge(&self, a: u32, b: u32) -> bool {
+    pub(crate) fn is_delaunay_edge(&self, a: LocalPoint, b: LocalPoint) -> bool {
         self.delaunay_halfedge(a, b).is_some()
     }
 
     /// The half-edge from local point `a` to `b`, or from `b` to `a` when `a → b` is a hull edge seen
     /// from outside; `None` when `[a, b]` is no edge of the triangulation. O(degree of `a`).
-    pub(crate) fn delaunay_halfedge(&self, a: u32, b: u32) -> Option<u32> {
-        let start = self.out_halfedge[a as usize];
+    pub(crate) fn delaunay_halfedge(&self, a: LocalPoint, b: LocalPoint) -> Option<HalfEdge> {
+        let start = self.out_halfedge[a.index()];
         if start == NO_TWIN || a == b {
             return None;
         }
         let mut e = start;
         loop {
-            if self.tri.dest(e as usize) == b {
+            if self.tri.dest(e) == b {
                 return Some(e);
             }
             // The incoming half-edge of this triangle ends at `a`; on the hull it is the
             // only way to meet the last neighbour clockwise.
-            let incoming = prev_in_triangle(e as usize) as u32;
-            if self.tri.org(incoming as usize) == b {
+            let incoming = e.prev();
+            if self.tri.org(incoming) == b {
                 return Some(incoming);
             }
             match self.rotate_counterclockwise(e) {
@@ -578,16 +606,22 @@ impl<'a> Voronoi<'a> {
 
     /// The Delaunay neighbours of local point `p`, counterclockwise (from the outgoing hull
     /// edge for a hull point); none for degenerate input. O(degree), nothing stored. (The
-    /// clipped cells' `neighbours_local` also pairs each neighbour with a vertex, allocates,
-    /// and gives collinear input its line neighbours; peeling wants neither.)
-    pub(crate) fn delaunay_neighbours_local(&self, p: u32) -> impl Iterator<Item = u32> + '_ {
+    /// clipped cells' `neighbour_vertices` also pairs each neighbour with a vertex,
+    /// allocates, and gives collinear input its line neighbours; peeling wants neither.)
+    pub(crate) fn delaunay_neighbours(
+        &self,
+        p: LocalPoint,
+    ) -> impl Iterator<Item = LocalPoint> + '_ {
         self.neighbours_through(p, |_| true)
     }
 
     /// The Delaunay neighbours of local point `p` along edges with a dual Voronoi edge (the
     /// Delaunay graph without the diagonals inside merged cocircular faces), counterclockwise
-    /// like [`Self::delaunay_neighbours_local`]. O(degree).
-    pub(crate) fn dual_neighbours_local(&self, p: u32) -> impl Iterator<Item = u32> + Clone + '_ {
+    /// like [`Self::delaunay_neighbours`]. O(degree).
+    pub(crate) fn dual_neighbours(
+        &self,
+        p: LocalPoint,
+    ) -> impl Iterator<Item = LocalPoint> + Clone + '_ {
         self.neighbours_through(p, |e| self.has_dual(e))
     }
 
@@ -596,10 +630,10 @@ impl<'a> Voronoi<'a> {
     /// a dual ray).
     fn neighbours_through<'s>(
         &'s self,
-        p: u32,
-        keep: impl Fn(u32) -> bool + Clone + 's,
-    ) -> impl Iterator<Item = u32> + Clone + 's {
-        let start = self.out_halfedge[p as usize];
+        p: LocalPoint,
+        keep: impl Fn(HalfEdge) -> bool + Clone + 's,
+    ) -> impl Iterator<Item = LocalPoint> + Clone + 's {
+        let start = self.out_halfedge[p.index()];
         let mut next = (start != NO_TWIN).then_some(start);
         let mut last = None;
         std::iter::from_fn(move || loop {
@@ -610,37 +644,36 @@ impl<'a> Voronoi<'a> {
                 Some(after) if after != start => Some(after),
                 Some(_) => None,
                 None => {
-                    last = Some(self.tri.org(prev_in_triangle(e as usize)));
+                    last = Some(self.tri.org(e.prev()));
                     None
                 }
             };
             if keep(e) {
-                return Some(self.tri.dest(e as usize));
+                return Some(self.tri.dest(e));
             }
         })
     }
 
     /// The half-edge out of the same point, one triangle counterclockwise; `None` past the hull.
     #[inline]
-    fn rotate_counterclockwise(&self, e: u32) -> Option<u32> {
-        let incoming = prev_in_triangle(e as usize);
-        let twin = self.tri.halfedges()[incoming];
-        (twin != NO_TWIN).then_some(twin)
+    fn rotate_counterclockwise(&self, e: HalfEdge) -> Option<HalfEdge> {
+        self.tri.twin(e.prev())
     }
 
     /// The half-edge out of the same point, one triangle clockwise; `None` past the hull.
     #[inline]
-    fn rotate_clockwise(&self, e: u32) -> Option<u32> {
-        let twin = self.tri.halfedges()[e as usize];
-        (twin != NO_TWIN).then(|| next_in_triangle(twin as usize) as u32)
+    fn rotate_clockwise(&self, e: HalfEdge) -> Option<HalfEdge> {
+        self.tri.twin(e).map(HalfEdge::next)
     }
 
     /// Pairs of consecutive points along the line when the input is collinear: the diagram is
     /// their perpendicular bisectors. Empty otherwise.
     pub fn collinear_bisectors(&self) -> Vec<[u32; 2]> {
         if self.tri.is_degenerate() {
-            let hull = self.tri.hull();
-            hull.windows(2).map(|w| [w[0], w[1]]).collect()
+            let hull = &self.tri.hull;
+            (hull.windows(2))
+                .map(|w| [w[0], w[1]].map(|p| self.tri.input_index(p)))
+                .collect()
         } else {
             Vec::new()
         }
@@ -680,16 +713,16 @@ fn lexicographic(p: [f64; 2], q: [f64; 2]) -> std::cmp::Ordering {
 #[derive(Debug, Clone)]
 pub struct CellVertices<'v, 'a> {
     voronoi: &'v Voronoi<'a>,
-    first: u32,
-    next: Option<u32>,
-    last_vertex: Option<u32>,
+    first: HalfEdge,
+    next: Option<HalfEdge>,
+    last_vertex: Option<VertexId>,
 }
 
 impl Iterator for CellVertices<'_, '_> {
-    type Item = u32;
+    type Item = VertexId;
 
     #[inline]
-    fn next(&mut self) -> Option<u32> {
+    fn next(&mut self) -> Option<VertexId> {
         while let Some(e) = self.next {
             let v = self.voronoi.vertex_of_halfedge(e);
             self.next = self
@@ -707,13 +740,17 @@ impl Iterator for CellVertices<'_, '_> {
 
 impl MergedFaces {
     /// Merges the faces joined by `cocircular_pairs` of triangles.
-    fn new(tri: &Triangulation, cocircular_pairs: &[[u32; 2]]) -> MergedFaces {
+    fn new(tri: &Triangulation, cocircular_pairs: &[[TriangleId; 2]]) -> MergedFaces {
         let vertex_of_triangle = union_cocircular(tri.triangle_count(), cocircular_pairs);
-        let vertex_count = vertex_of_triangle.iter().map(|&v| v + 1).max().unwrap_or(0) as usize;
-        let mut first_triangle = vec![u32::MAX; vertex_count];
-        for (t, &v) in vertex_of_triangle.iter().enumerate() {
-            if first_triangle[v as usize] == u32::MAX {
-                first_triangle[v as usize] = t as u32;
+        let vertex_count = (vertex_of_triangle.iter())
+            .map(|&v| v.index() + 1)
+            .max()
+            .unwrap_or(0);
+        let unset = TriangleId::new(u32::MAX);
+        let mut first_triangle = vec![unset; vertex_count];
+        for (t, &v) in tri.triangle_ids().zip(&vertex_of_triangle) {
+            if first_triangle[v.index()] == unset {
+                first_triangle[v.index()] = t;
             }
         }
         let (boundary_start, boundary) = merged_boundaries(tri, &vertex_of_triangle, vertex_count);
@@ -728,7 +765,7 @@ impl MergedFaces {
 
 /// Union–find over `triangle_count` triangles joined by `pairs`. Returns the vertex id of
 /// every triangle, numbered by first appearance.
-fn union_cocircular(triangle_count: usize, pairs: &[[u32; 2]]) -> Vec<u32> {
+fn union_cocircular(triangle_count: usize, pairs: &[[TriangleId; 2]]) -> Vec<VertexId> {
     let mut parent: Vec<u32> = (0..triangle_count as u32).collect();
     fn find(parent: &mut [u32], mut x: u32) -> u32 {
         while parent[x as usize] != x {
@@ -739,7 +776,7 @@ fn union_cocircular(triangle_count: usize, pairs: &[[u32; 2]]) -> Vec<u32> {
         x
     }
     for &[s, t] in pairs {
-        let (rs, rt) = (find(&mut parent, s), find(&mut parent, t));
+        let (rs, rt) = (find(&mut parent, s.get()), find(&mut parent, t.get()));
         if rs != rt {
             parent[rs.max(rt) as usize] = rs.min(rt);
         }
@@ -759,38 +796,40 @@ fn union_cocircular(triangle_count: usize, pairs: &[[u32; 2]]) -> Vec<u32> {
             vertex[up]
         };
     }
-    vertex
+    // In place: a vertex id is a `u32`.
+    vertex.into_iter().map(VertexId::new).collect()
 }
 
 /// For every merged vertex, the half-edges on the boundary of its face, counterclockwise,
 /// in compressed rows; single-triangle vertices get an empty row.
 fn merged_boundaries(
     tri: &Triangulation,
-    vertex_of_triangle: &[u32],
+    vertex_of_triangle: &[VertexId],
     vertex_count: usize,
-) -> (Vec<u32>, Vec<u32>) {
+) -> (Vec<u32>, Vec<HalfEdge>) {
     let halfedges = tri.halfedges();
     let mut triangles_of = vec![0u32; vertex_count];
     for &v in vertex_of_triangle {
-        triangles_of[v as usize] += 1;
+        triangles_of[v.index()] += 1;
     }
-    let merged = |e: usize| triangles_of[vertex_of_triangle[e / 3] as usize] > 1;
-    let on_boundary = |e: usize| {
-        let twin = halfedges[e];
-        twin == NO_TWIN || vertex_of_triangle[twin as usize / 3] != vertex_of_triangle[e / 3]
+    let face = |e: HalfEdge| vertex_of_triangle[e.triangle().index()];
+    let merged = |e: HalfEdge| triangles_of[face(e).index()] > 1;
+    let on_boundary = |e: HalfEdge| {
+        let twin = halfedges[e.index()];
+        twin == NO_TWIN || face(twin) != face(e)
     };
     let mut start = vec![0u32; vertex_count + 1];
-    for e in (0..halfedges.len()).filter(|&e| merged(e) && on_boundary(e)) {
-        start[vertex_of_triangle[e / 3] as usize + 1] += 1;
+    for e in (tri.halfedge_ids()).filter(|&e| merged(e) && on_boundary(e)) {
+        start[face(e).index() + 1] += 1;
     }
     for v in 0..vertex_count {
         start[v + 1] += start[v];
     }
     let mut fill = start.clone();
-    let mut boundary = vec![0u32; start[vertex_count] as usize];
-    for e in (0..halfedges.len()).filter(|&e| merged(e) && on_boundary(e)) {
-        let v = vertex_of_triangle[e / 3] as usize;
-        boundary[fill[v] as usize] = e as u32;
+    let mut boundary = vec![NO_TWIN; start[vertex_count] as usize];
+    for e in (tri.halfedge_ids()).filter(|&e| merged(e) && on_boundary(e)) {
+        let v = face(e).index();
+        boundary[fill[v] as usize] = e;
         fill[v] += 1;
     }
     // Rows are chained by matching each half-edge's destination with the next one's origin.
@@ -806,15 +845,15 @@ fn merged_boundaries(
 /// Reorders the boundary half-edges of one merged face into a counterclockwise cycle that
 /// starts at the smallest half-edge id: the triangle arrays do not depend on the order of the
 /// input points, so neither does the cycle (a start chosen by point index would).
-fn order_face_cycle(tri: &Triangulation, row: &mut [u32]) {
-    let mut by_origin: Vec<(u32, u32)> = row.iter().map(|&e| (tri.org(e as usize), e)).collect();
+fn order_face_cycle(tri: &Triangulation, row: &mut [HalfEdge]) {
+    let mut by_origin: Vec<(LocalPoint, HalfEdge)> = row.iter().map(|&e| (tri.org(e), e)).collect();
     by_origin.sort_unstable();
     let Some(mut e) = row.iter().copied().min() else {
         return;
     };
     for slot in row.iter_mut() {
         *slot = e;
-        let dest = tri.dest(e as usize);
+        let dest = tri.dest(e);
         if let Ok(i) = by_origin.binary_search_by_key(&dest, |&(o, _)| o) {
             e = by_origin[i].1;
         }
@@ -868,15 +907,15 @@ mod tests {
             let tri = crate::triangulate(&points).unwrap();
             let vor = tri.voronoi();
             let mut expected = vec![Vec::new(); tri.points.len()];
-            for e in 0..tri.halfedges().len() {
+            for e in tri.halfedge_ids() {
                 let (a, b) = (tri.org(e), tri.dest(e));
-                expected[a as usize].push(b);
-                expected[b as usize].push(a);
+                expected[a.index()].push(b);
+                expected[b.index()].push(a);
             }
-            for (p, want) in expected.iter_mut().enumerate() {
+            for (p, want) in tri.local_points().zip(&mut expected) {
                 want.sort_unstable();
                 want.dedup();
-                let mut got: Vec<u32> = vor.delaunay_neighbours_local(p as u32).collect();
+                let mut got: Vec<_> = vor.delaunay_neighbours(p).collect();
                 got.sort_unstable();
                 assert_eq!(&got, want, "n {n}, point {p}");
             }
@@ -899,9 +938,7 @@ mod tests {
                 .collect();
             let tri = triangulate(&points).unwrap();
             let vor = tri.voronoi();
-            let expected: Vec<u32> = (0..vor.vertex_count() as u32)
-                .filter(|&v| vor.has_ray(v))
-                .collect();
+            let expected: Vec<_> = vor.vertex_ids().filter(|&v| vor.has_ray(v)).collect();
             assert_eq!(vor.ray_vertices(), expected, "round {round}");
         }
     }
@@ -923,7 +960,7 @@ mod tests {
                 .collect();
             let tri = triangulate(&points).unwrap();
             let vor = tri.voronoi();
-            let edges: BTreeSet<[u32; 2]> = (0..tri.halfedges().len())
+            let edges: BTreeSet<[u32; 2]> = (tri.halfedge_ids())
                 .map(|e| {
                     let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
                     [a.min(b), a.max(b)]

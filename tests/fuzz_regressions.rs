@@ -409,8 +409,8 @@ fn rays_near_the_largest_coordinates_are_halved_normals() {
     let overflowing = vor
         .rays()
         .filter(|&(e, _, _)| {
-            let a = points[tri.halfedge_origin(e as usize) as usize];
-            let b = points[tri.halfedge_destination(e as usize) as usize];
+            let a = points[tri.halfedge_origin(e) as usize];
+            let b = points[tri.halfedge_destination(e) as usize];
             !(b[1] - a[1]).is_finite() || !(a[0] - b[0]).is_finite()
         })
         .count();

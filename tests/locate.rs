@@ -7,14 +7,14 @@ use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use proptest::prelude::*;
 use wdm_crust::delaunay::Location;
-use wdm_crust::{triangulate, Triangulation};
+use wdm_crust::{triangulate, TriangleId, Triangulation};
 use wdm_crust_testkit::Rng;
 
 mod exact;
 use exact::{orient, squared_distance};
 
 /// `q` in the closed triangle `t` (counterclockwise)?
-fn in_closed_triangle(tri: &Triangulation, t: usize, q: [f64; 2]) -> bool {
+fn in_closed_triangle(tri: &Triangulation, t: TriangleId, q: [f64; 2]) -> bool {
     let [a, b, c] = tri.triangle_points(t);
     [(a, b), (b, c), (c, a)]
         .iter()
@@ -55,17 +55,17 @@ fn check_query(tri: &Triangulation, q: [f64; 2], location: Location, nearest: Op
         Location::OnChain([a, b]) => {
             assert!(tri.is_degenerate());
             assert!(strictly_on_segment(tri.point(a), tri.point(b), q));
-            let hull = tri.hull();
+            let hull: Vec<u32> = tri.hull().collect();
             let at = hull.iter().position(|&h| h == a).expect("on the chain");
             assert!(hull.get(at + 1) == Some(&b) || (at > 0 && hull[at - 1] == b));
         }
         Location::Outside => {
             assert!(coincident.is_none(), "{q:?} is an input point");
-            for t in 0..tri.triangle_count() {
+            for t in tri.triangle_ids() {
                 assert!(!in_closed_triangle(tri, t, q), "{q:?} is in triangle {t}");
             }
             if tri.is_degenerate() {
-                let hull = tri.hull();
+                let hull: Vec<u32> = tri.hull().collect();
                 for w in hull.windows(2) {
                     assert!(!strictly_on_segment(tri.point(w[0]), tri.point(w[1]), q));
                 }
@@ -107,7 +107,7 @@ fn queries(points: &[[f64; 2]], tri: &Triangulation, rng: &mut Rng) -> Vec<[f64;
         })
         .collect();
     out.extend(points.iter().take(30));
-    for e in (0..tri.halfedges().len()).step_by(7).take(30) {
+    for e in tri.halfedge_ids().step_by(7).take(30) {
         let (a, b) = (
             tri.point(tri.halfedge_origin(e)),
             tri.point(tri.halfedge_destination(e)),
@@ -139,11 +139,13 @@ fn check_all(points: &[[f64; 2]], rng: &mut Rng) {
                 "{q:?}: no triangle, but {remembered:?}"
             ),
         }
-        let hint = rng.below(tri.triangle_count().max(1));
+        let hint = Some(TriangleId::new(
+            rng.below(tri.triangle_count().max(1)) as u32
+        ));
         for other in [tri.locate(q).unwrap(), tri.locate_from(q, hint).unwrap()] {
             // A triangle or vertex is unique; an edge has two half-edges.
             let same = match (remembered, other) {
-                (Location::Edge(a), Location::Edge(b)) => a == b || tri.halfedges()[a] == b as u32,
+                (Location::Edge(a), Location::Edge(b)) => a == b || tri.twin(a) == Some(b),
                 (a, b) => a == b,
             };
             assert!(same, "{q:?}: {remembered:?} vs {other:?}");

@@ -349,13 +349,13 @@ fn the_medial_axis_lies_inside_the_shape() {
         }
         // Every Voronoi vertex inside the sample polygon is inner, every one outside outer.
         let vor = rec.triangulation().voronoi();
-        for v in 0..vor.vertex_count() as u32 {
+        for v in vor.vertex_ids() {
             let expected = if inside(&polygon, vor.vertex_position(v)) {
                 Label::Inner
             } else {
                 Label::Outer
             };
-            assert_eq!(rec.labels()[v as usize], expected, "vertex {v}");
+            assert_eq!(rec.labels()[v.index()], expected, "vertex {v}");
         }
     }
 }
@@ -650,11 +650,9 @@ fn label_readings_differ_on_a_convex_shape_with_a_junction() {
         let literal = with(LabelRule::Literal);
         assert_eq!(score(&truth, literal.edges()), (0, 3));
         let vor = literal.triangulation().voronoi();
-        let junction = (0..vor.vertex_count() as u32)
-            .find(|&v| !vor.has_ray(v))
-            .unwrap();
-        assert_eq!(literal.labels()[junction as usize], Label::Outer);
-        assert_eq!(reached.labels()[junction as usize], Label::Inner);
+        let junction = vor.vertex_ids().find(|&v| !vor.has_ray(v)).unwrap();
+        assert_eq!(literal.labels()[junction.index()], Label::Outer);
+        assert_eq!(reached.labels()[junction.index()], Label::Inner);
         // The authors' complement convention gets this one right.
         assert_eq!(score(&truth, with(LabelRule::Complement).edges()), (0, 0));
     }
@@ -891,13 +889,13 @@ fn corridors_into_a_hole_are_closed_off() {
         let vor = tri.voronoi();
         let labels = first.labels();
         let mut duals = BTreeSet::new();
-        for v in 0..vor.vertex_count() as u32 {
+        for v in vor.vertex_ids() {
             for edge in vor.vertex_edges(v) {
                 let far = match edge.to {
-                    wdm_crust::voronoi::EdgeEnd::Vertex(u) => labels[u as usize],
+                    wdm_crust::voronoi::EdgeEnd::Vertex(u) => labels[u.index()],
                     wdm_crust::voronoi::EdgeEnd::Infinity => Label::Outer,
                 };
-                if far != labels[v as usize] {
+                if far != labels[v.index()] {
                     let [a, b] = edge.sites;
                     duals.insert((a.min(b) as usize, a.max(b) as usize));
                 }

@@ -7,6 +7,7 @@ use wdm_crust::predicates::{circumcenter_exact, ExactPoint};
 use wdm_crust::predicates::{in_circumcircle, CirclePosition};
 use wdm_crust::triangulate;
 use wdm_crust::voronoi::{EdgeEnd, Voronoi};
+use wdm_crust::VertexId;
 
 fn rational(x: f64) -> BigRational {
     BigRational::from_float(x).expect("finite")
@@ -23,7 +24,7 @@ fn check_dual(vor: &Voronoi<'_>) {
     let tri = vor.triangulation();
     let n = tri.point_count();
     let mut degree_sum = 0;
-    for v in 0..vor.vertex_count() as u32 {
+    for v in vor.vertex_ids() {
         let centre = vor.vertex_exact(v);
         let sites: Vec<u32> = vor.vertex_sites(v).collect();
         assert!(sites.len() >= 3, "vertex {v} has {} sites", sites.len());
@@ -51,7 +52,7 @@ fn check_dual(vor: &Voronoi<'_>) {
             match edge.to {
                 EdgeEnd::Vertex(u) => {
                     assert_ne!(u, v);
-                    let back = vor.edge(tri.halfedges()[edge.halfedge as usize]);
+                    let back = vor.edge(tri.halfedges()[edge.halfedge.index()]);
                     assert_eq!(back.from, u);
                     assert_eq!(back.to, EdgeEnd::Vertex(v));
                     assert_eq!(back.sites, [edge.sites[1], edge.sites[0]]);
@@ -63,7 +64,7 @@ fn check_dual(vor: &Voronoi<'_>) {
     // Cells: each vertex of p's cell has p among its sites, and the incidences agree.
     let mut cell_sum = 0;
     for p in 0..n as u32 {
-        let cell: Vec<u32> = vor.cell(p).collect();
+        let cell: Vec<VertexId> = vor.cell(p).collect();
         let mut sorted = cell.clone();
         sorted.sort_unstable();
         sorted.dedup();
@@ -86,22 +87,20 @@ fn check_dual(vor: &Voronoi<'_>) {
     assert_eq!(2 * finite + rays, degree_sum);
     // Merged faces exist exactly when some vertex has degree above 3, and a Delaunay edge
     // lacks a dual exactly when both its sides are in one face.
-    let merged = (0..vor.vertex_count() as u32).any(|v| vor.degree(v) > 3);
+    let merged = vor.vertex_ids().any(|v| vor.degree(v) > 3);
     assert_eq!(vor.has_merged_faces(), merged);
-    for e in 0..tri.halfedges().len() as u32 {
-        let twin = tri.halfedges()[e as usize];
+    for e in tri.halfedge_ids() {
+        let twin = tri.halfedges()[e.index()];
         let same_face = twin != wdm_crust::delaunay::NO_TWIN
             && vor.vertex_of_halfedge(e) == vor.vertex_of_halfedge(twin);
         assert_eq!(vor.has_dual(e), !same_face);
     }
     // Positions computed one by one (before the cache exists) equal the cached ones, and
     // round the exact circumcenter.
-    let one_by_one: Vec<[f64; 2]> = (0..vor.vertex_count() as u32)
-        .map(|v| vor.vertex_position(v))
-        .collect();
+    let one_by_one: Vec<[f64; 2]> = vor.vertex_ids().map(|v| vor.vertex_position(v)).collect();
     assert_eq!(one_by_one, vor.vertex_positions());
-    for (v, position) in one_by_one.iter().enumerate() {
-        let exact = vor.vertex_exact(v as u32);
+    for (v, position) in vor.vertex_ids().zip(&one_by_one) {
+        let exact = vor.vertex_exact(v);
         for (k, x) in [exact.x(), exact.y()].into_iter().enumerate() {
             let error = num_traits::Signed::abs(&(rational(position[k]) - x));
             let scale = rational(position[0].abs().max(position[1].abs()).max(1e-300));
@@ -133,7 +132,7 @@ fn integer_grid_vertices_are_square_centres() {
         .collect();
     expected.sort_unstable();
     assert_eq!(centres, expected);
-    for v in 0..vor.vertex_count() as u32 {
+    for v in vor.vertex_ids() {
         assert_eq!(vor.degree(v), 4);
     }
     // An interior lattice point's cell is the unit square around it.
@@ -159,16 +158,17 @@ fn lattice_points_on_a_circle_make_one_vertex() {
     let tri = triangulate(&pts).unwrap();
     let vor = tri.voronoi();
     assert_eq!(vor.vertex_count(), 1);
-    assert_eq!(vor.vertex_position(0), [3.0, -7.0]);
-    let exact = vor.vertex_exact(0);
+    let centre = VertexId::new(0);
+    assert_eq!(vor.vertex_position(centre), [3.0, -7.0]);
+    let exact = vor.vertex_exact(centre);
     assert_eq!(exact.x(), &BigRational::from_integer(BigInt::from(3)));
     assert_eq!(exact.y(), &BigRational::from_integer(BigInt::from(-7)));
-    assert_eq!(vor.degree(0), pts.len());
+    assert_eq!(vor.degree(centre), pts.len());
     assert_eq!(vor.rays().count(), pts.len());
     assert_eq!(vor.finite_edges().count(), 0);
     for p in 0..pts.len() as u32 {
         assert!(!vor.is_cell_bounded(p));
-        assert_eq!(vor.cell(p).collect::<Vec<_>>(), vec![0]);
+        assert_eq!(vor.cell(p).collect::<Vec<_>>(), vec![centre]);
     }
     check_dual(&vor);
 }
@@ -232,7 +232,7 @@ proptest! {
         let tri = triangulate(&pts).unwrap();
         let vor = tri.voronoi();
         check_dual(&vor);
-        let mut ours: Vec<(BigRational, BigRational)> = (0..vor.vertex_count() as u32)
+        let mut ours: Vec<(BigRational, BigRational)> = vor.vertex_ids()
             .map(|v| { let c = vor.vertex_exact(v); (c.x().clone(), c.y().clone()) })
             .collect();
         ours.sort();
@@ -246,7 +246,7 @@ proptest! {
         let tri = triangulate(&pts).unwrap();
         let vor = tri.voronoi();
         check_dual(&vor);
-        let mut ours: Vec<(BigRational, BigRational)> = (0..vor.vertex_count() as u32)
+        let mut ours: Vec<(BigRational, BigRational)> = vor.vertex_ids()
             .map(|v| { let c = vor.vertex_exact(v); (c.x().clone(), c.y().clone()) })
             .collect();
         ours.sort();

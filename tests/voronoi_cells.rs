@@ -161,7 +161,7 @@ fn check_tiling(points: &[[f64; 2]], bbox: &BoundingBox, all_sites: bool) -> Vec
             neighbours[t[(k + 1) % 3] as usize].push(t[k] as usize);
         }
     }
-    for w in tri.hull().windows(2) {
+    for w in tri.hull().collect::<Vec<_>>().windows(2) {
         neighbours[w[0] as usize].push(w[1] as usize);
         neighbours[w[1] as usize].push(w[0] as usize);
     }

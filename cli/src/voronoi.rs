@@ -154,7 +154,7 @@ pub fn run(args: &VoronoiArgs) -> Result<(), CliError> {
     });
 
     if format != VoronoiFormat::Geojson {
-        let infinite = (0..vor.vertex_count() as u32)
+        let infinite = (vor.vertex_ids())
             .filter(|&v| vor.vertex_position(v).iter().any(|x| !x.is_finite()))
             .count();
         super::note_infinite_vertices(&input, infinite, "Voronoi vertices");

@@ -28,10 +28,13 @@ fn library_diagram(points: &[[f64; 2]]) -> Diagram {
     let vor = tri.voronoi();
     Diagram {
         vertices: vor.vertex_positions().to_vec(),
-        edges: vor.finite_edges().map(|(_, a, b)| [a, b]).collect(),
-        rays: vor.rays().map(|(_, v, d)| (v, d)).collect(),
+        edges: vor
+            .finite_edges()
+            .map(|(_, a, b)| [a.get(), b.get()])
+            .collect(),
+        rays: vor.rays().map(|(_, v, d)| (v.get(), d)).collect(),
         cells: (0..points.len() as u32)
-            .map(|p| vor.cell(p).collect())
+            .map(|p| vor.cell(p).map(|v| v.get()).collect())
             .collect(),
     }
 }

@@ -18,7 +18,7 @@ use wdm_crust::predicates::{
 };
 use wdm_crust::reconstruct::{Curve, Label};
 use wdm_crust::voronoi::{EdgeEnd, Voronoi};
-use wdm_crust::{Error, Reconstruction, Triangulation};
+use wdm_crust::{Error, HalfEdge, Reconstruction, Triangulation, VertexId};
 
 /// The result of a checker.
 pub type Check = Result<(), String>;
@@ -309,9 +309,9 @@ pub fn check_triangulate(points: &[[f64; 2]], result: &Result<Triangulation, Err
     if !tri.is_degenerate() {
         // Every distinct point is a corner (validate checks it too) and the half-edge
         // accessors agree with the arrays.
-        for e in 0..tri.halfedges().len() {
-            let [a, b, c] = tri.triangles()[e / 3];
-            let (o, d) = match e % 3 {
+        for e in tri.halfedge_ids() {
+            let [a, b, c] = tri.triangle(e.triangle());
+            let (o, d) = match e.corner() {
                 0 => (a, b),
                 1 => (b, c),
                 _ => (c, a),
@@ -328,13 +328,13 @@ pub fn check_triangulate(points: &[[f64; 2]], result: &Result<Triangulation, Err
 /// Two triangulations are identical arrays (used for exact scaling and for permutations
 /// mapped back).
 pub fn check_same_triangulation(a: &Triangulation, b: &Triangulation) -> Check {
-    ensure!(a.triangles() == b.triangles(), "triangles differ");
+    ensure!(a.triangles().eq(b.triangles()), "triangles differ");
     ensure!(a.halfedges() == b.halfedges(), "halfedges differ");
     ensure!(
-        a.hull() == b.hull(),
+        a.hull().eq(b.hull()),
         "hulls differ: {:?} vs {:?}",
-        a.hull(),
-        b.hull()
+        a.hull().collect::<Vec<_>>(),
+        b.hull().collect::<Vec<_>>()
     );
     ensure!(a.duplicates() == b.duplicates(), "duplicates differ");
     Ok(())
@@ -509,7 +509,8 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
             ensure!(vor.cell(p).count() == 0, "degenerate: cell {p} not empty");
             ensure!(!vor.is_cell_bounded(p), "degenerate: cell {p} bounded");
         }
-        let expected: Vec<[u32; 2]> = tri.hull().windows(2).map(|w| [w[0], w[1]]).collect();
+        let hull: Vec<u32> = tri.hull().collect();
+        let expected: Vec<[u32; 2]> = hull.windows(2).map(|w| [w[0], w[1]]).collect();
         ensure!(vor.collinear_bisectors() == expected, "collinear bisectors");
         return Ok(());
     }
@@ -522,12 +523,12 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
     let ints = IntPoints::new(&pts);
     let mut centres: Vec<Option<HPoint>> = (0..vcount).map(|_| None).collect();
     let mut triangles_of = vec![0usize; vcount];
-    for t in 0..tri.triangles().len() {
-        let v = vor.vertex_of_triangle(t) as usize;
+    for t in tri.triangle_ids() {
+        let v = vor.vertex_of_triangle(t).index();
         ensure!(v < vcount, "triangle {t} has vertex {v} of {vcount}");
         triangles_of[v] += 1;
         let c = ints
-            .circumcenter(tri.triangles()[t])
+            .circumcenter(tri.triangle(t))
             .ok_or_else(|| format!("triangle {t} is collinear"))?;
         match &centres[v] {
             Some(first) => ensure!(
@@ -550,14 +551,15 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
     let mut ray_of_origin: HashMap<u32, u32> = HashMap::new();
     let mut ray_of_destination: HashMap<u32, u32> = HashMap::new();
     for v in 0..vcount as u32 {
+        let id = VertexId::new(v);
         let c = &centres[v as usize];
-        let sites: Vec<u32> = vor.vertex_sites(v).collect();
+        let sites: Vec<u32> = vor.vertex_sites(id).collect();
         let k = sites.len();
         ensure!(k >= 3, "vertex {v} has {k} sites");
         ensure!(
-            vor.degree(v) == k,
+            vor.degree(id) == k,
             "vertex {v}: degree {} vs {k} sites",
-            vor.degree(v)
+            vor.degree(id)
         );
         ensure!(
             triangles_of[v as usize] == k - 2,
@@ -587,10 +589,10 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
         }
         let exact = ints.rational(c);
         ensure!(
-            same_point(&exact, &from_exact(&vor.vertex_exact(v))),
+            same_point(&exact, &from_exact(&vor.vertex_exact(id))),
             "vertex {v}: vertex_exact is not the circumcenter of its face"
         );
-        let pos = vor.vertex_position(v);
+        let pos = vor.vertex_position(id);
         let rounded = [
             exact[0].to_f64().unwrap_or(f64::NAN),
             exact[1].to_f64().unwrap_or(f64::NAN),
@@ -600,8 +602,8 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
             "vertex {v}: position {pos:?} far from exact {rounded:?}"
         );
         let mut has_ray = false;
-        for (i, edge) in vor.vertex_edges(v).enumerate() {
-            let e = edge.halfedge as usize;
+        for (i, edge) in vor.vertex_edges(id).enumerate() {
+            let e = edge.halfedge.index();
             ensure!(
                 e < halfedges.len(),
                 "vertex {v}: half-edge {e} out of range"
@@ -611,14 +613,22 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
                 "half-edge {e} is the dual of two Voronoi edges"
             );
             seen_halfedge[e] = true;
-            ensure!(edge.from == v, "edge {e}: from {} at vertex {v}", edge.from);
             ensure!(
-                vor.vertex_of_halfedge(edge.halfedge) == v,
+                edge.from == id,
+                "edge {e}: from {} at vertex {v}",
+                edge.from
+            );
+            ensure!(
+                vor.vertex_of_halfedge(edge.halfedge) == id,
                 "edge {e}: face is not {v}"
             );
             ensure!(
                 edge.sites == [sites[i], sites[(i + 1) % k]]
-                    && edge.sites == [tri.halfedge_origin(e), tri.halfedge_destination(e)],
+                    && edge.sites
+                        == [
+                            tri.halfedge_origin(edge.halfedge),
+                            tri.halfedge_destination(edge.halfedge),
+                        ],
                 "edge {e}: sites {:?}",
                 edge.sites
             );
@@ -632,7 +642,7 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
             // opposite of what the `VoronoiEdge::sites` docs said when this was written).
             let direction = match edge.to {
                 EdgeEnd::Vertex(u) => {
-                    let o = &centres[u as usize];
+                    let o = &centres[u.index()];
                     [&o.x * &c.d - &c.x * &o.d, &o.y * &c.d - &c.y * &o.d]
                 }
                 EdgeEnd::Infinity => {
@@ -659,17 +669,20 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
                         "two rays out of one hull point"
                     );
                 }
-                EdgeEnd::Vertex(u) => {
+                EdgeEnd::Vertex(uid) => {
+                    let u = uid.get();
                     let twin = halfedges[e];
                     ensure!(twin != NO_TWIN, "edge {e}: finite but on the hull");
                     ensure!((u as usize) < vcount && u != v, "edge {e}: to {u} from {v}");
                     ensure!(
-                        vor.vertex_of_halfedge(twin) == u,
+                        vor.vertex_of_halfedge(twin) == uid,
                         "edge {e}: twin not in {u}"
                     );
                     let back = vor.edge(twin);
                     ensure!(
-                        back.from == u && back.to == EdgeEnd::Vertex(v) && back.sites == [s1, s0],
+                        back.from == uid
+                            && back.to == EdgeEnd::Vertex(id)
+                            && back.sites == [s1, s0],
                         "edge {e}: the reverse edge does not match"
                     );
                     ensure!(
@@ -682,12 +695,12 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
                 }
             }
         }
-        ensure!(vor.has_ray(v) == has_ray, "vertex {v}: has_ray");
+        ensure!(vor.has_ray(id) == has_ray, "vertex {v}: has_ray");
     }
     for (e, &twin) in halfedges.iter().enumerate() {
-        let dual =
-            twin == NO_TWIN || vor.vertex_of_halfedge(e as u32) != vor.vertex_of_halfedge(twin);
-        ensure!(vor.has_dual(e as u32) == dual, "has_dual({e})");
+        let id = HalfEdge::new(e as u32);
+        let dual = twin == NO_TWIN || vor.vertex_of_halfedge(id) != vor.vertex_of_halfedge(twin);
+        ensure!(vor.has_dual(id) == dual, "has_dual({e})");
         ensure!(
             seen_halfedge[e] == dual,
             "half-edge {e}: dual {dual} but listed {}",
@@ -698,7 +711,7 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
     // Finite edges and rays.
     let mut finite = 0usize;
     for (e, a, b) in vor.finite_edges() {
-        let twin = halfedges[e as usize];
+        let twin = halfedges[e.index()];
         ensure!(twin != NO_TWIN && e < twin, "finite edge {e}: twin {twin}");
         ensure!(
             a == vor.vertex_of_halfedge(e) && b == vor.vertex_of_halfedge(twin) && a != b,
@@ -715,10 +728,10 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
     );
     let mut rays = 0usize;
     for (e, v, dir) in vor.rays() {
-        ensure!(halfedges[e as usize] == NO_TWIN, "ray {e} has a twin");
+        ensure!(halfedges[e.index()] == NO_TWIN, "ray {e} has a twin");
         ensure!(vor.vertex_of_halfedge(e) == v, "ray {e}: vertex");
-        let a = pts[tri.halfedge_origin(e as usize) as usize];
-        let b = pts[tri.halfedge_destination(e as usize) as usize];
+        let a = pts[tri.halfedge_origin(e) as usize];
+        let b = pts[tri.halfedge_destination(e) as usize];
         // The outward normal rounded once; where a difference overflows, its half rounded once
         // (the halves of numbers that large are exact), as `rays` documents: finite always.
         let normal = [b[1] - a[1], a[0] - b[0]];
@@ -751,13 +764,13 @@ pub fn check_voronoi(vor: &Voronoi<'_>) -> Check {
     }
     let mut vertices_of_site: Vec<Vec<u32>> = vec![Vec::new(); n];
     for v in 0..vcount as u32 {
-        for s in vor.vertex_sites(v) {
+        for s in vor.vertex_sites(VertexId::new(v)) {
             vertices_of_site[s as usize].push(v);
         }
     }
     let mut cell_incidences = 0usize;
     for p in 0..n as u32 {
-        let cell: Vec<u32> = vor.cell(p).collect();
+        let cell: Vec<u32> = vor.cell(p).map(VertexId::get).collect();
         if first[p as usize] != p as usize {
             ensure!(cell.is_empty(), "duplicate {p} has a cell");
             ensure!(!vor.is_cell_bounded(p), "duplicate {p} has a bounded cell");
@@ -923,7 +936,8 @@ pub fn check_single_pass(points: &[[f64; 2]], rec: &Reconstruction) -> Check {
         vor.vertex_count()
     );
     if tri.is_degenerate() {
-        let mut chain: Vec<[u32; 2]> = tri.hull().windows(2).map(|w| key(w[0], w[1])).collect();
+        let hull: Vec<u32> = tri.hull().collect();
+        let mut chain: Vec<[u32; 2]> = hull.windows(2).map(|w| key(w[0], w[1])).collect();
         chain.sort_unstable();
         ensure!(
             rec.edges() == chain,
@@ -936,7 +950,7 @@ pub fn check_single_pass(points: &[[f64; 2]], rec: &Reconstruction) -> Check {
         return Ok(());
     }
     let mut delaunay: HashSet<[u32; 2]> = HashSet::new();
-    for e in 0..tri.halfedges().len() {
+    for e in tri.halfedge_ids() {
         delaunay.insert(key(tri.halfedge_origin(e), tri.halfedge_destination(e)));
     }
     for &[a, b] in rec.edges() {
@@ -949,12 +963,9 @@ pub fn check_single_pass(points: &[[f64; 2]], rec: &Reconstruction) -> Check {
     let mut axis_positions: Vec<[u64; 4]> = Vec::new();
     let bits = |p: [f64; 2]| [p[0].to_bits(), p[1].to_bits()];
     for (e, a, b) in vor.finite_edges() {
-        let (la, lb) = (labels[a as usize], labels[b as usize]);
+        let (la, lb) = (labels[a.index()], labels[b.index()]);
         if la != lb {
-            crust.push(key(
-                tri.halfedge_origin(e as usize),
-                tri.halfedge_destination(e as usize),
-            ));
+            crust.push(key(tri.halfedge_origin(e), tri.halfedge_destination(e)));
         } else if la == Label::Inner {
             let (pa, pb) = (bits(vor.vertex_position(a)), bits(vor.vertex_position(b)));
             let (lo, hi) = if pa <= pb { (pa, pb) } else { (pb, pa) };
@@ -962,11 +973,8 @@ pub fn check_single_pass(points: &[[f64; 2]], rec: &Reconstruction) -> Check {
         }
     }
     for (e, v, _) in vor.rays() {
-        if labels[v as usize] == Label::Inner {
-            crust.push(key(
-                tri.halfedge_origin(e as usize),
-                tri.halfedge_destination(e as usize),
-            ));
+        if labels[v.index()] == Label::Inner {
+            crust.push(key(tri.halfedge_origin(e), tri.halfedge_destination(e)));
         }
     }
     crust.sort_unstable();
@@ -1207,16 +1215,13 @@ fn vertices_by_sites(
     map: impl Fn(u32) -> u32,
 ) -> HashMap<Vec<u32>, (Option<Label>, [f64; 2])> {
     let vor = rec.triangulation().voronoi();
-    (0..vor.vertex_count() as u32)
+    vor.vertex_ids()
         .map(|v| {
             let mut sites: Vec<u32> = vor.vertex_sites(v).map(&map).collect();
             sites.sort_unstable();
             (
                 sites,
-                (
-                    rec.labels().get(v as usize).copied(),
-                    vor.vertex_position(v),
-                ),
+                (rec.labels().get(v.index()).copied(), vor.vertex_position(v)),
             )
         })
         .collect()

@@ -47,9 +47,7 @@ impl TriangulationData {
     /// The same data as the command line's JSON, in caller indices.
     pub fn of(tri: &wdm_crust::Triangulation) -> Self {
         TriangulationData {
-            triangles: (0..tri.triangle_count())
-                .map(|t| tri.triangle(t).map(i64::from))
-                .collect(),
+            triangles: tri.triangles().map(|t| t.map(i64::from)).collect(),
             hull: indices(tri.hull()),
             duplicates: index_rows(tri.duplicates()),
         }
@@ -156,7 +154,7 @@ impl Triangulation {
         let found = self.query(py, queries, threads, |locator, q| {
             locator
                 .triangle_containing(q)
-                .map(|t| t.map_or(-1, |t| t as i64))
+                .map(|t| t.map_or(-1, |t| i64::from(t.get())))
         })?;
         Ok(vector(py, found))
     }

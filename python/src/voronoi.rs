@@ -31,18 +31,18 @@ impl VoronoiData {
         let mut cell_vertices = Vec::new();
         cell_offsets.push(0);
         for p in 0..n as u32 {
-            cell_vertices.extend(vor.cell(p).map(i64::from));
+            cell_vertices.extend(vor.cell(p).map(|v| i64::from(v.get())));
             cell_offsets.push(cell_vertices.len());
         }
         VoronoiData {
             vertices: vor.vertex_positions().to_vec(),
             edges: vor
                 .finite_edges()
-                .map(|(_, a, b)| [i64::from(a), i64::from(b)])
+                .map(|(_, a, b)| [i64::from(a.get()), i64::from(b.get())])
                 .collect(),
             rays: vor
                 .rays()
-                .map(|(_, v, [dx, dy])| [f64::from(v), dx, dy])
+                .map(|(_, v, [dx, dy])| [f64::from(v.get()), dx, dy])
                 .collect(),
             cell_offsets,
             cell_vertices,

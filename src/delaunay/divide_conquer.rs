@@ -28,6 +28,7 @@
 use super::mesh::{prev, Mesh, MeshPart, GHOST};
 use super::triangulation::{Triangulation, NO_TWIN};
 use super::zorder::{input_indices, lexicographic, order, Grid};
+use crate::ids::{HalfEdge, LocalPoint};
 use crate::kernel::basic::orient_in;
 use crate::kernel::scale::shift_by;
 use crate::kernel::static_filter::{Lifted, StaticFilter};
@@ -98,19 +99,24 @@ fn build_as_given<const IN_RANGE: bool>(points: &[[f64; 2]]) -> Triangulation {
             } else {
                 ring.ring_next(start.ghost)
             };
-            let done = mesh.finish(g, NO_TWIN);
-            (triangles, halfedges, hull) = (done.triangles, done.halfedges, done.hull);
+            let done = mesh.finish(g, NO_TWIN.get());
+            // In place (each id is a `u32`): the store becomes the result.
+            triangles = (done.triangles.into_iter())
+                .map(|t| t.map(LocalPoint::new))
+                .collect();
+            halfedges = done.halfedges.into_iter().map(HalfEdge::new).collect();
+            hull = done.hull.into_iter().map(LocalPoint::new).collect();
         }
     } else {
-        hull = vec![0];
+        hull = vec![LocalPoint::new(0)];
     }
     // The construction reorders points inside ranges (re-keyed clusters): the final order
     // is the one the items are in now.
     let input_of = input_indices(&items, &grid);
     drop(items);
-    let mut local_of = vec![0u32; points.len()];
+    let mut local_of = vec![LocalPoint::new(0); points.len()];
     for (local, &input) in input_of.iter().enumerate() {
-        local_of[input as usize] = local as u32;
+        local_of[input as usize] = LocalPoint::new(local as u32);
     }
     for &[duplicate, kept] in &ordered.duplicates {
         local_of[duplicate as usize] = local_of[kept as usize];
@@ -146,9 +152,9 @@ fn construct<const IN_RANGE: bool>(
 }
 
 /// Collinear points in lexicographic order (their order along the line).
-fn collinear_chain(pts: &[[f64; 2]]) -> Vec<u32> {
-    let mut order: Vec<u32> = (0..pts.len() as u32).collect();
-    order.sort_unstable_by(|&a, &b| lexicographic(pts[a as usize], pts[b as usize]));
+fn collinear_chain(pts: &[[f64; 2]]) -> Vec<LocalPoint> {
+    let mut order: Vec<LocalPoint> = crate::ids::ids(pts.len()).collect();
+    order.sort_unstable_by(|&a, &b| lexicographic(pts[a.index()], pts[b.index()]));
     order
 }
 
@@ -690,7 +696,7 @@ mod tests {
 
     /// Triangles by coordinates, each rotated to start at its smallest corner, sorted.
     fn by_coordinates(tri: &Triangulation) -> Vec<[[u64; 2]; 3]> {
-        let key = |v: u32| tri.points[v as usize].map(f64::to_bits);
+        let key = |v: LocalPoint| tri.position(v).map(f64::to_bits);
         let mut all: Vec<[[u64; 2]; 3]> = tri
             .triangles
             .iter()
@@ -724,7 +730,7 @@ mod tests {
             assert_eq!(t.triangles, tri.triangles);
             assert_eq!(t.halfedges, tri.halfedges);
             let hull = |t: &Triangulation| -> Vec<[f64; 2]> {
-                t.hull.iter().map(|&v| t.points[v as usize]).collect()
+                t.hull.iter().map(|&v| t.position(v)).collect()
             };
             assert_eq!(hull(&t), hull(&tri), "same hull from the same first point");
         }

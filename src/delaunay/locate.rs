@@ -37,8 +37,9 @@
 
 use std::sync::Arc;
 
-use super::triangulation::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
+use super::triangulation::{Triangulation, NO_TWIN};
 use crate::error::{check_coordinate, Error};
+use crate::ids::{HalfEdge, LocalPoint, TriangleId};
 use crate::kernel::metric::distance_order;
 use crate::kernel::{orient, Sign};
 
@@ -46,10 +47,10 @@ use crate::kernel::{orient, Sign};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Location {
     /// Strictly inside triangle `t` (an id for [`Triangulation::triangle`]).
-    Triangle(usize),
+    Triangle(TriangleId),
     /// On the relative interior of the edge of half-edge `e` (see [`Triangulation`] for
     /// half-edge ids; its twin, if any, is the same edge seen from the other triangle).
-    Edge(usize),
+    Edge(HalfEdge),
     /// On input point `i` (a caller index; the first occurrence for duplicated coordinates).
     Vertex(u32),
     /// Strictly between the consecutive points `[a, b]` (caller indices) of a degenerate
@@ -63,9 +64,9 @@ pub enum Location {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Walked {
     /// In the closed triangle.
-    Inside(usize),
+    Inside(TriangleId),
     /// Strictly right of this hull half-edge.
-    Beyond(usize),
+    Beyond(HalfEdge),
 }
 
 /// Repeated queries on one triangulation. Each walk starts from a coarse grid of start
@@ -93,9 +94,9 @@ enum Walked {
 pub struct Locator<'a> {
     tri: &'a Triangulation,
     /// The triangle the last location walk ended in.
-    last: usize,
+    last: Option<TriangleId>,
     /// A half-edge leaving the last nearest point found.
-    last_nearest: usize,
+    last_nearest: Option<HalfEdge>,
     /// Shared by the clones, so that a clone (a locator per thread or per batch of queries)
     /// costs nothing.
     grid: Arc<StartGrid>,
@@ -106,8 +107,8 @@ impl<'a> Locator<'a> {
     pub fn new(tri: &'a Triangulation) -> Self {
         Locator {
             tri,
-            last: usize::MAX,
-            last_nearest: usize::MAX,
+            last: None,
+            last_nearest: None,
             grid: Arc::new(StartGrid::new(tri)),
         }
     }
@@ -141,15 +142,14 @@ impl<'a> Locator<'a> {
         // The greedy walk works from any point: from the nearer (in floating point, only a
         // start) of the last answer and the grid's start.
         let tri = self.tri;
-        let grid = self.grid.start(q).map(|t| 3 * t);
-        let last = (self.last_nearest < tri.halfedges.len()).then_some(self.last_nearest);
-        let start = match (grid, last) {
+        let grid = self.grid.start(q).map(|t| t.halfedge(0));
+        let start = match (grid, self.last_nearest) {
             (Some(g), Some(l)) => tri.nearer_start(q, g, l),
             (Some(e), None) | (None, Some(e)) => e,
-            (None, None) => 3 * tri.sampled_start(q),
+            (None, None) => tri.sampled_start(q).halfedge(0),
         };
         let (v, outgoing) = tri.greedy_nearest(q, start);
-        self.last_nearest = outgoing;
+        self.last_nearest = Some(outgoing);
         Ok(Some(tri.input_index(v)))
     }
 
@@ -174,7 +174,7 @@ impl<'a> Locator<'a> {
     /// assert_eq!(locator.triangle_containing([5.0, 1.0])?, None);
     /// # Ok::<(), wdm_crust::Error>(())
     /// ```
-    pub fn triangle_containing(&mut self, q: [f64; 2]) -> Result<Option<usize>, Error> {
+    pub fn triangle_containing(&mut self, q: [f64; 2]) -> Result<Option<TriangleId>, Error> {
         check_query(q)?;
         if self.tri.is_degenerate() {
             return Ok(None);
@@ -189,21 +189,20 @@ impl<'a> Locator<'a> {
 
     /// The start of a location walk: the grid's triangle or the last one, whichever has its
     /// first corner nearer (in floating point: only a start).
-    fn start(&self, q: [f64; 2]) -> usize {
+    fn start(&self, q: [f64; 2]) -> TriangleId {
         let tri = self.tri;
-        let last = (self.last < tri.triangle_count()).then_some(self.last);
-        match (self.grid.start(q), last) {
-            (Some(g), Some(l)) => tri.nearer_start(q, 3 * g, 3 * l) / 3,
+        match (self.grid.start(q), self.last) {
+            (Some(g), Some(l)) => (tri.nearer_start(q, g.halfedge(0), l.halfedge(0))).triangle(),
             (Some(t), None) | (None, Some(t)) => t,
             (None, None) => tri.sampled_start(q),
         }
     }
 
     fn remember(&mut self, walked: Walked) {
-        self.last = match walked {
+        self.last = Some(match walked {
             Walked::Inside(t) => t,
-            Walked::Beyond(e) => e / 3,
-        };
+            Walked::Beyond(e) => e.triangle(),
+        });
     }
 }
 
@@ -216,11 +215,11 @@ struct StartGrid {
     /// Cells per unit length, in x and y.
     scale: [f64; 2],
     side: usize,
-    cells: Vec<u32>,
+    cells: Vec<TriangleId>,
 }
 
 impl StartGrid {
-    const EMPTY: u32 = u32::MAX;
+    const EMPTY: TriangleId = TriangleId::new(u32::MAX);
 
     fn new(tri: &Triangulation) -> StartGrid {
         let count = tri.triangles.len();
@@ -253,14 +252,14 @@ impl StartGrid {
         // land there too), then every empty cell takes a triangle of the nearest filled cell
         // (a breadth-first fill over the grid), so that no query starts far away.
         let mut queue = std::collections::VecDeque::new();
-        for (t, corners) in tri.triangles.iter().enumerate() {
-            let [a, b, c] = corners.map(|p| tri.points[p as usize]);
+        for t in tri.triangle_ids() {
+            let [a, b, c] = tri.triangle_points(t);
             let centroid = [0, 1].map(|k| a[k] / 3.0 + b[k] / 3.0 + c[k] / 3.0);
             if let Some(cell) = grid.cell(centroid) {
                 if grid.cells[cell] == Self::EMPTY {
                     queue.push_back(cell);
                 }
-                grid.cells[cell] = t as u32;
+                grid.cells[cell] = t;
             }
         }
         while let Some(cell) = queue.pop_front() {
@@ -293,9 +292,9 @@ impl StartGrid {
         Some(index(1) * self.side + index(0))
     }
 
-    fn start(&self, q: [f64; 2]) -> Option<usize> {
+    fn start(&self, q: [f64; 2]) -> Option<TriangleId> {
         let t = *self.cells.get(self.cell(q)?)?;
-        (t != Self::EMPTY).then_some(t as usize)
+        (t != Self::EMPTY).then_some(t)
     }
 }
 
@@ -318,7 +317,7 @@ impl Triangulation {
     /// use wdm_crust::delaunay::Location;
     ///
     /// let tri = wdm_crust::triangulate(&[[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]])?;
-    /// assert_eq!(tri.locate([0.5, 0.5])?, Location::Triangle(0));
+    /// assert_eq!(tri.locate([0.5, 0.5])?, Location::Triangle(wdm_crust::TriangleId::new(0)));
     /// let Location::Edge(e) = tri.locate([1.0, 1.0])? else { panic!("on an edge") };
     /// let mut ends = [tri.halfedge_origin(e), tri.halfedge_destination(e)];
     /// ends.sort();
@@ -329,23 +328,22 @@ impl Triangulation {
     /// # Ok::<(), wdm_crust::Error>(())
     /// ```
     pub fn locate(&self, q: [f64; 2]) -> Result<Location, Error> {
-        self.locate_from(q, usize::MAX)
+        self.locate_from(q, None)
     }
 
-    /// [`locate`](Self::locate) with the walk starting at triangle `hint` (an id out of
-    /// range is ignored).
+    /// [`locate`](Self::locate) with the walk starting at triangle `hint` (`None` or an id
+    /// out of range: a start of its own).
     ///
     /// # Errors
     /// As [`locate`](Self::locate).
-    pub fn locate_from(&self, q: [f64; 2], hint: usize) -> Result<Location, Error> {
+    pub fn locate_from(&self, q: [f64; 2], hint: Option<TriangleId>) -> Result<Location, Error> {
         check_query(q)?;
         if self.is_degenerate() {
             return Ok(self.locate_on_chain(q));
         }
-        let start = if hint < self.triangles.len() {
-            hint
-        } else {
-            self.sampled_start(q)
+        let start = match hint {
+            Some(t) if t.index() < self.triangles.len() => t,
+            _ => self.sampled_start(q),
         };
         Ok(self.classify(q, self.walk(q, start)))
     }
@@ -368,14 +366,14 @@ impl Triangulation {
         if self.is_degenerate() {
             return Ok(self.nearest_by_scan(q));
         }
-        let (v, _) = self.greedy_nearest(q, 3 * self.sampled_start(q));
+        let (v, _) = self.greedy_nearest(q, self.sampled_start(q).halfedge(0));
         Ok(Some(self.input_index(v)))
     }
 
     /// Of the half-edges `a` and `b`, the one whose origin is nearer `q` in floating point.
-    fn nearer_start(&self, q: [f64; 2], a: usize, b: usize) -> usize {
-        let distance = |e: usize| {
-            let p = self.point_at(self.org(e));
+    fn nearer_start(&self, q: [f64; 2], a: HalfEdge, b: HalfEdge) -> HalfEdge {
+        let distance = |e: HalfEdge| {
+            let p = self.position(self.org(e));
             (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)
         };
         if distance(b) < distance(a) {
@@ -390,43 +388,37 @@ impl Triangulation {
         Locator::new(self)
     }
 
-    #[inline]
-    fn point_at(&self, p: u32) -> [f64; 2] {
-        self.points[p as usize]
-    }
-
     /// The nearest (by the first corner, in floating point: only a start, not a decision)
     /// of about ∛T triangles spread over the ids, which follow the points' Z order.
-    fn sampled_start(&self, q: [f64; 2]) -> usize {
+    fn sampled_start(&self, q: [f64; 2]) -> TriangleId {
         let count = self.triangles.len();
         let samples = ((count as f64).cbrt() as usize).max(1);
         let stride = (count / samples).max(1);
-        let distance = |t: usize| {
-            let p = self.point_at(self.triangles[t][0]);
+        let distance = |t: TriangleId| {
+            let p = self.position(self.corners(t)[0]);
             (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)
         };
-        (0..count)
+        (self.triangle_ids())
             .step_by(stride)
             .min_by(|&a, &b| distance(a).total_cmp(&distance(b)))
-            .unwrap_or(0)
+            .unwrap_or(TriangleId::new(0))
     }
 
     /// The visibility walk from triangle `start` (a valid id; the triangulation has
     /// triangles).
-    fn walk(&self, q: [f64; 2], start: usize) -> Walked {
+    fn walk(&self, q: [f64; 2], start: TriangleId) -> Walked {
         let mut t = start;
         // The half-edge the walk entered `t` by: `q` is strictly left of it.
-        let mut entered = usize::MAX;
+        let mut entered = NO_TWIN;
         for _ in 0..=self.triangles.len() {
             match self.exit(q, t, entered) {
                 None => return Walked::Inside(t),
                 Some(e) => {
-                    let twin = self.halfedges[e];
-                    if twin == NO_TWIN {
+                    let Some(twin) = self.twin(e) else {
                         return Walked::Beyond(e);
-                    }
-                    entered = twin as usize;
-                    t = entered / 3;
+                    };
+                    entered = twin;
+                    t = entered.triangle();
                 }
             }
         }
@@ -435,9 +427,10 @@ impl Triangulation {
 
     /// A half-edge of triangle `t` other than `entered` with `q` strictly on its right.
     #[inline]
-    fn exit(&self, q: [f64; 2], t: usize, entered: usize) -> Option<usize> {
-        let [a, b, c] = self.triangles[t].map(|p| self.point_at(p));
-        let edges = [(3 * t, a, b), (3 * t + 1, b, c), (3 * t + 2, c, a)];
+    fn exit(&self, q: [f64; 2], t: TriangleId, entered: HalfEdge) -> Option<HalfEdge> {
+        let [a, b, c] = self.triangle_points(t);
+        let [ab, bc, ca] = t.halfedges();
+        let edges = [(ab, a, b), (bc, b, c), (ca, c, a)];
         edges
             .into_iter()
             .find(|&(e, from, to)| e != entered && orient(from, to, q) == Sign::Negative)
@@ -447,18 +440,18 @@ impl Triangulation {
     /// Every triangle tested: the walk's fallback, never needed on a Delaunay triangulation.
     #[cold]
     fn scan(&self, q: [f64; 2]) -> Walked {
-        for t in 0..self.triangles.len() {
-            if self.exit(q, t, usize::MAX).is_none() {
+        for t in self.triangle_ids() {
+            if self.exit(q, t, NO_TWIN).is_none() {
                 return Walked::Inside(t);
             }
         }
-        let hull_edge = (0..self.halfedges.len()).find(|&e| {
-            self.halfedges[e] == NO_TWIN
-                && orient(self.point_at(self.org(e)), self.point_at(self.dest(e)), q)
+        let hull_edge = self.halfedge_ids().find(|&e| {
+            self.halfedges[e.index()] == NO_TWIN
+                && orient(self.position(self.org(e)), self.position(self.dest(e)), q)
                     == Sign::Negative
         });
         // A point in no closed triangle is strictly right of some hull edge.
-        Walked::Beyond(hull_edge.unwrap_or(0))
+        Walked::Beyond(hull_edge.unwrap_or(HalfEdge::new(0)))
     }
 
     /// The public answer for the end of a walk.
@@ -467,8 +460,8 @@ impl Triangulation {
             Walked::Beyond(_) => return Location::Outside,
             Walked::Inside(t) => t,
         };
-        let corners = self.triangles[t];
-        let p = corners.map(|c| self.point_at(c));
+        let corners = self.corners(t);
+        let p = corners.map(|c| self.position(c));
         // Side of edge k (from corner k to corner k + 1); none is negative.
         let on_line = [0, 1, 2].map(|k| orient(p[k], p[(k + 1) % 3], q) == Sign::Zero);
         match on_line {
@@ -477,9 +470,9 @@ impl Triangulation {
             [true, true, _] => Location::Vertex(self.input_index(corners[1])),
             [_, true, true] => Location::Vertex(self.input_index(corners[2])),
             [true, _, true] => Location::Vertex(self.input_index(corners[0])),
-            [true, false, false] => Location::Edge(3 * t),
-            [false, true, false] => Location::Edge(3 * t + 1),
-            [false, false, true] => Location::Edge(3 * t + 2),
+            [true, false, false] => Location::Edge(t.halfedge(0)),
+            [false, true, false] => Location::Edge(t.halfedge(1)),
+            [false, false, true] => Location::Edge(t.halfedge(2)),
         }
     }
 
@@ -487,10 +480,10 @@ impl Triangulation {
     /// points of the chain along the line, or outside.
     fn locate_on_chain(&self, q: [f64; 2]) -> Location {
         if let Some(p) = self.points.iter().position(|&p| p == q) {
-            return Location::Vertex(self.input_index(p as u32));
+            return Location::Vertex(self.input_index(LocalPoint::new(p as u32)));
         }
         for pair in self.hull.windows(2) {
-            let (a, b) = (self.point_at(pair[0]), self.point_at(pair[1]));
+            let (a, b) = (self.position(pair[0]), self.position(pair[1]));
             let within = |k: usize| a[k].min(b[k]) <= q[k] && q[k] <= a[k].max(b[k]);
             if within(0) && within(1) && orient(a, b, q) == Sign::Zero {
                 return Location::OnChain([self.input_index(pair[0]), self.input_index(pair[1])]);
@@ -501,9 +494,9 @@ impl Triangulation {
 
     /// The nearest distinct point by exact comparison with every one (a caller index).
     fn nearest_by_scan(&self, q: [f64; 2]) -> Option<u32> {
-        (0..self.points.len() as u32)
+        (self.local_points())
             .reduce(|best, p| {
-                if distance_order(q, self.point_at(p), self.point_at(best)) == Sign::Negative {
+                if distance_order(q, self.position(p), self.position(best)) == Sign::Negative {
                     p
                 } else {
                     best
@@ -514,12 +507,12 @@ impl Triangulation {
 
     /// The greedy walk on the Delaunay graph from the origin of half-edge `outgoing`: the
     /// local index of the point reached, with a half-edge leaving it.
-    fn greedy_nearest(&self, q: [f64; 2], mut outgoing: usize) -> (u32, usize) {
+    fn greedy_nearest(&self, q: [f64; 2], mut outgoing: HalfEdge) -> (LocalPoint, HalfEdge) {
         loop {
             let v = self.org(outgoing);
             let mut best = (v, outgoing);
             self.for_each_neighbour(outgoing, |w, from_w| {
-                if distance_order(q, self.point_at(w), self.point_at(best.0)) == Sign::Negative {
+                if distance_order(q, self.position(w), self.position(best.0)) == Sign::Negative {
                     best = (w, from_w);
                 }
             });
@@ -532,34 +525,29 @@ impl Triangulation {
 
     /// Calls `visit(w, e)` once for each neighbour `w` of the origin `v` of `outgoing`, with
     /// a half-edge `e` leaving `w`.
-    fn for_each_neighbour(&self, outgoing: usize, mut visit: impl FnMut(u32, usize)) {
+    fn for_each_neighbour(&self, outgoing: HalfEdge, mut visit: impl FnMut(LocalPoint, HalfEdge)) {
         // Every half-edge e leaving v names the neighbour dest(e), left by next(e).
         let mut e = outgoing;
         loop {
-            visit(self.dest(e), next_in_triangle(e));
+            visit(self.dest(e), e.next());
             // Counterclockwise around v: twin(prev(e)) leaves v again.
-            let p = prev_in_triangle(e);
-            let twin = self.halfedges[p];
-            if twin == NO_TWIN {
+            let p = e.prev();
+            let Some(twin) = self.twin(p) else {
                 // v is on the hull: prev(e) comes from the last neighbour, which no half-edge
                 // leaving v reaches.
                 visit(self.org(p), p);
                 break;
-            }
-            e = twin as usize;
+            };
+            e = twin;
             if e == outgoing {
                 return;
             }
         }
         // The rest of the fan, clockwise from `outgoing`.
         let mut e = outgoing;
-        loop {
-            let twin = self.halfedges[e];
-            if twin == NO_TWIN {
-                return;
-            }
-            e = next_in_triangle(twin as usize);
-            visit(self.dest(e), next_in_triangle(e));
+        while let Some(twin) = self.twin(e) {
+            e = twin.next();
+            visit(self.dest(e), e.next());
         }
     }
 }
@@ -584,7 +572,7 @@ mod tests {
             assert_eq!(tri.locate(p).unwrap(), Location::Vertex(i as u32));
             for hint in 0..3 {
                 assert_eq!(
-                    tri.locate_from(p, hint).unwrap(),
+                    tri.locate_from(p, Some(TriangleId::new(hint))).unwrap(),
                     Location::Vertex(i as u32)
                 );
             }
@@ -594,7 +582,7 @@ mod tests {
             Location::Triangle(_)
         ));
         assert_eq!(tri.locate([1.0, 0.0]).unwrap(), {
-            let e = (0..6)
+            let e = (tri.halfedge_ids())
                 .find(|&e| {
                     let mut ends = [tri.halfedge_origin(e), tri.halfedge_destination(e)];
                     ends.sort();
@@ -644,6 +632,8 @@ mod tests {
         ));
         assert_eq!(tri.nearest_point([1e-300, 1e-300]).unwrap(), Some(0));
         // An out-of-range hint is ignored.
-        assert!(tri.locate_from([0.1, 0.1], 99).is_ok());
+        assert!(tri
+            .locate_from([0.1, 0.1], Some(TriangleId::new(99)))
+            .is_ok());
     }
 }

@@ -19,8 +19,9 @@ mod triangulation;
 mod validate;
 mod zorder;
 
+pub use crate::ids::{HalfEdge, TriangleId};
 pub use locate::{Location, Locator};
-pub use triangulation::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
+pub use triangulation::{Triangulation, NO_TWIN};
 pub use validate::ValidationError;
 
 use crate::error::{scan_points, Error};
@@ -49,6 +50,7 @@ use crate::error::{scan_points, Error};
 /// let points = [[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [0.0, 0.0]];
 /// let tri = wdm_crust::triangulate(&points)?;
 /// assert_eq!(tri.triangles().len(), 2);
+/// assert_eq!(tri.hull().collect::<Vec<u32>>(), [0, 1, 3, 2]);
 /// assert_eq!(tri.duplicates(), &[[4, 0]]);
 /// tri.validate().expect("a Delaunay triangulation");
 /// # Ok::<(), wdm_crust::Error>(())

@@ -3,7 +3,8 @@
 
 use std::fmt;
 
-use super::triangulation::{next_in_triangle, Triangulation, NO_TWIN};
+use super::triangulation::{Triangulation, NO_TWIN};
+use crate::ids::{HalfEdge, LocalPoint, TriangleId};
 use crate::predicates::{incircle, orient2d, CirclePosition, Orientation};
 
 /// The first invariant a [`Triangulation`] was found to break.
@@ -13,17 +14,17 @@ pub enum ValidationError {
     /// A triangle is not strictly counterclockwise.
     NotCounterClockwise {
         /// Triangle index.
-        triangle: usize,
+        triangle: TriangleId,
     },
     /// A triangle uses an index out of range or a duplicate point.
     BadVertex {
         /// Triangle index.
-        triangle: usize,
+        triangle: TriangleId,
     },
     /// The half-edge array is not an involution with reversed endpoints.
     TwinMismatch {
         /// Half-edge index.
-        halfedge: usize,
+        halfedge: HalfEdge,
     },
     /// The boundary half-edges do not form the hull cycle.
     HullMismatch(String),
@@ -42,7 +43,7 @@ pub enum ValidationError {
     /// An interior edge has the opposite point strictly inside a triangle's circumcircle.
     NotLocallyDelaunay {
         /// Half-edge index.
-        halfedge: usize,
+        halfedge: HalfEdge,
     },
     /// A point is neither in the triangulation nor reported as a duplicate, or a duplicate
     /// pair is wrong.
@@ -79,9 +80,9 @@ impl Triangulation {
             return self.check_degenerate();
         }
         let mut used = vec![false; n];
-        for (t, tri) in self.triangles.iter().enumerate() {
-            for &v in tri {
-                let v = v as usize;
+        for t in self.triangle_ids() {
+            for v in self.corners(t) {
+                let v = v.index();
                 if v >= n {
                     return Err(ValidationError::BadVertex { triangle: t });
                 }
@@ -119,7 +120,7 @@ impl Triangulation {
             return unaccounted(n.min(self.input_of.len()));
         }
         for (p, &i) in self.input_of.iter().enumerate() {
-            if i as usize >= n || self.local_of[i as usize] as usize != p {
+            if i as usize >= n || self.local_of[i as usize].index() != p {
                 return unaccounted(i as usize);
             }
         }
@@ -145,13 +146,13 @@ impl Triangulation {
     /// No triangles: all distinct points must be collinear and listed along the line.
     fn check_degenerate(&self) -> Result<(), ValidationError> {
         if self.hull.len() != self.points.len()
-            || self.hull.iter().any(|&v| v as usize >= self.points.len())
+            || self.hull.iter().any(|&v| v.index() >= self.points.len())
         {
             return Err(ValidationError::HullMismatch(
                 "degenerate hull must list every distinct point once".into(),
             ));
         }
-        let p = |i: usize| self.points[self.hull[i] as usize];
+        let p = |i: usize| self.position(self.hull[i]);
         for i in 2..self.hull.len() {
             if orient2d(p(0), p(1), p(i)) != Orientation::Collinear {
                 return Err(ValidationError::HullMismatch(format!(
@@ -169,9 +170,9 @@ impl Triangulation {
         }
         let mut seen = vec![false; self.points.len()];
         for &v in &self.hull {
-            if std::mem::replace(&mut seen[v as usize], true) {
+            if std::mem::replace(&mut seen[v.index()], true) {
                 return Err(ValidationError::PointUnaccounted {
-                    point: self.input_of[v as usize] as usize,
+                    point: self.input_index(v) as usize,
                 });
             }
         }
@@ -181,17 +182,17 @@ impl Triangulation {
     fn check_twins(&self) -> Result<(), ValidationError> {
         if self.halfedges.len() != 3 * self.triangles.len() {
             return Err(ValidationError::TwinMismatch {
-                halfedge: self.halfedges.len(),
+                halfedge: HalfEdge::new(self.halfedges.len() as u32),
             });
         }
-        for (e, &twin) in self.halfedges.iter().enumerate() {
+        for (e, &twin) in self.halfedge_ids().zip(&self.halfedges) {
             if twin == NO_TWIN {
                 continue;
             }
-            let t = twin as usize;
-            let ok = t < self.halfedges.len()
+            let t = twin;
+            let ok = t.index() < self.halfedges.len()
                 && t != e
-                && self.halfedges[t] as usize == e
+                && self.halfedges[t.index()] == e
                 && self.org(t) == self.dest(e)
                 && self.dest(t) == self.org(e);
             if !ok {
@@ -206,12 +207,12 @@ impl Triangulation {
     /// be no others. The hull must be convex.
     fn check_hull(&self) -> Result<(), ValidationError> {
         let h = self.hull.len();
-        let mut boundary: Vec<(u32, u32)> = (0..self.halfedges.len())
-            .filter(|&e| self.halfedges[e] == NO_TWIN)
+        let mut boundary: Vec<(LocalPoint, LocalPoint)> = (self.halfedge_ids())
+            .filter(|&e| self.twin(e).is_none())
             .map(|e| (self.org(e), self.dest(e)))
             .collect();
         boundary.sort_unstable();
-        let mut expected: Vec<(u32, u32)> = (0..h)
+        let mut expected: Vec<(LocalPoint, LocalPoint)> = (0..h)
             .map(|i| (self.hull[i], self.hull[(i + 1) % h]))
             .collect();
         expected.sort_unstable();
@@ -221,7 +222,7 @@ impl Triangulation {
                 boundary.len()
             )));
         }
-        let p = |i: usize| self.points[self.hull[i % h] as usize];
+        let p = |i: usize| self.position(self.hull[i % h]);
         let mut strict_turns = 0;
         for i in 0..h {
             match orient2d(p(i), p(i + 1), p(i + 2)) {
@@ -239,13 +240,12 @@ impl Triangulation {
     }
 
     fn check_locally_delaunay(&self) -> Result<(), ValidationError> {
-        for (e, &twin) in self.halfedges.iter().enumerate() {
-            if twin == NO_TWIN || (twin as usize) < e {
+        for (e, &twin) in self.halfedge_ids().zip(&self.halfedges) {
+            if twin == NO_TWIN || twin < e {
                 continue;
             }
-            let t = twin as usize;
-            let opposite = self.points[self.org(next_in_triangle(next_in_triangle(t))) as usize];
-            let [a, b, c] = self.triangle_points(e / 3);
+            let opposite = self.position(self.org(twin.prev()));
+            let [a, b, c] = self.triangle_points(e.triangle());
             if incircle(a, b, c, opposite) == CirclePosition::Inside {
                 return Err(ValidationError::NotLocallyDelaunay { halfedge: e });
             }
@@ -291,10 +291,11 @@ mod tests {
         // Rebuild with the other diagonal: (0, 2) is the long one and fails incircle.
         let l = |i| tri.local_index(i);
         tri.triangles = vec![[l(0), l(1), l(2)], [l(0), l(2), l(3)]];
-        tri.halfedges = vec![NO_TWIN, NO_TWIN, 3, 2, NO_TWIN, NO_TWIN];
+        let [e2, e3] = [2, 3].map(HalfEdge::new);
+        tri.halfedges = vec![NO_TWIN, NO_TWIN, e3, e2, NO_TWIN, NO_TWIN];
         assert_eq!(
             tri.validate(),
-            Err(ValidationError::NotLocallyDelaunay { halfedge: 2 })
+            Err(ValidationError::NotLocallyDelaunay { halfedge: e2 })
         );
     }
 
@@ -303,7 +304,7 @@ mod tests {
         let mut tri = square_with_centre();
         tri.points.push([9.0, 9.0]);
         tri.input_of.push(5);
-        tri.local_of.push(5);
+        tri.local_of.push(LocalPoint::new(5));
         assert_eq!(
             tri.validate(),
             Err(ValidationError::PointUnaccounted { point: 5 })

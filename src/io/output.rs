@@ -80,7 +80,7 @@ use serde::ser::{SerializeSeq, Serializer};
 use serde::Serialize;
 
 use crate::reconstruct::{Curve, MedialAxis, Warning};
-use crate::{Reconstruction, Triangulation, Voronoi};
+use crate::{Reconstruction, Triangulation, VertexId, Voronoi};
 
 /// Size of the buffer every writer puts in front of its output.
 const BUFFER_BYTES: usize = 1 << 16;
@@ -90,7 +90,7 @@ const BUFFER_BYTES: usize = 1 << 16;
 struct TriangulationJson<'a> {
     points: usize,
     triangles: Triangles<'a>,
-    hull: Vec<u32>,
+    hull: Hull<'a>,
     duplicates: &'a [[u32; 2]],
 }
 
@@ -99,8 +99,16 @@ struct Triangles<'a>(&'a Triangulation);
 
 impl Serialize for Triangles<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        let tri = self.0;
-        serializer.collect_seq((0..tri.triangle_count()).map(|t| tri.triangle(t)))
+        serializer.collect_seq(self.0.triangles())
+    }
+}
+
+/// Serializes the hull (caller indices) one point at a time.
+struct Hull<'a>(&'a Triangulation);
+
+impl Serialize for Hull<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_seq(self.0.hull())
     }
 }
 
@@ -124,7 +132,7 @@ pub fn write_triangulation_json<W: Write>(tri: &Triangulation, out: W) -> io::Re
     let json = TriangulationJson {
         points: tri.point_count(),
         triangles: Triangles(tri),
-        hull: tri.hull(),
+        hull: Hull(tri),
         duplicates: tri.duplicates(),
     };
     serde_json::to_writer(&mut out, &json)?;
@@ -146,7 +154,7 @@ pub fn write_triangulation_json<W: Write>(tri: &Triangulation, out: W) -> io::Re
 /// assert_eq!(lines.len(), 3);
 /// assert!(lines[0].starts_with("# wdm-crust triangulation: 3 points, 1 triangles"));
 /// assert!(lines[1].starts_with("# hull "));
-/// let [a, b, c] = tri.triangles()[0];
+/// let [a, b, c] = tri.triangle(wdm_crust::TriangleId::new(0));
 /// assert_eq!(lines[2], format!("{a} {b} {c}"));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
@@ -161,7 +169,7 @@ pub fn write_triangulation_text<W: Write>(tri: &Triangulation, out: W) -> io::Re
         tri.duplicates().len()
     )?;
     let mut line = IndexLine::default();
-    if !tri.hull().is_empty() {
+    if tri.hull().len() > 0 {
         out.write_all(b"# hull")?;
         for i in tri.hull() {
             line.clear();
@@ -178,9 +186,9 @@ pub fn write_triangulation_text<W: Write>(tri: &Triangulation, out: W) -> io::Re
         out.write_all(line.as_bytes())?;
         out.write_all(b"\n")?;
     }
-    for t in 0..tri.triangle_count() {
+    for triangle in tri.triangles() {
         line.clear();
-        for i in tri.triangle(t) {
+        for i in triangle {
             line.push(i);
         }
         line.end();
@@ -193,8 +201,8 @@ pub fn write_triangulation_text<W: Write>(tri: &Triangulation, out: W) -> io::Re
 #[derive(Serialize)]
 struct VoronoiJson<'v, 'a> {
     vertices: &'v [[f64; 2]],
-    edges: Vec<[u32; 2]>,
-    rays: Vec<(u32, f64, f64)>,
+    edges: Vec<[VertexId; 2]>,
+    rays: Vec<(VertexId, f64, f64)>,
     cells: Cells<'v, 'a>,
 }
 
@@ -267,7 +275,7 @@ pub fn write_voronoi_json<W: Write>(vor: &Voronoi<'_>, out: W) -> io::Result<()>
 pub fn write_voronoi_text<W: Write>(vor: &Voronoi<'_>, out: W) -> io::Result<()> {
     let mut out = BufWriter::with_capacity(BUFFER_BYTES, out);
     let tri = vor.triangulation();
-    let edges: Vec<(u32, u32)> = vor.finite_edges().map(|(_, a, b)| (a, b)).collect();
+    let edges: Vec<(VertexId, VertexId)> = vor.finite_edges().map(|(_, a, b)| (a, b)).collect();
     writeln!(
         out,
         "# wdm-crust voronoi: {} points, {} vertices, {} edges, {} rays",
@@ -291,8 +299,8 @@ pub fn write_voronoi_text<W: Write>(vor: &Voronoi<'_>, out: W) -> io::Result<()>
     let mut line = IndexLine::default();
     for (a, b) in edges {
         line.clear();
-        line.push(a);
-        line.push(b);
+        line.push(a.get());
+        line.push(b.get());
         line.end();
         out.write_all(b"e")?;
         out.write_all(line.as_bytes())?;
@@ -304,7 +312,7 @@ pub fn write_voronoi_text<W: Write>(vor: &Voronoi<'_>, out: W) -> io::Result<()>
         line.clear();
         line.push(p);
         for v in vor.cell(p) {
-            line.push(v);
+            line.push(v.get());
         }
         line.end();
         out.write_all(b"c")?;
@@ -512,9 +520,9 @@ mod tests {
         assert_eq!(value["triangles"].as_array().unwrap().len(), 2);
         assert_eq!(value["hull"].as_array().unwrap().len(), 4);
         let triangles: Vec<[u32; 3]> = serde_json::from_value(value["triangles"].clone()).unwrap();
-        assert_eq!(triangles, tri.triangles());
+        assert_eq!(triangles, tri.triangles().collect::<Vec<_>>());
         let hull: Vec<u32> = serde_json::from_value(value["hull"].clone()).unwrap();
-        assert_eq!(hull, tri.hull());
+        assert_eq!(hull, tri.hull().collect::<Vec<_>>());
     }
 
     #[test]
@@ -528,7 +536,7 @@ mod tests {
             lines[0],
             "# wdm-crust triangulation: 5 points, 2 triangles, 4 hull points, 1 duplicates"
         );
-        let hull: Vec<String> = tri.hull().iter().map(u32::to_string).collect();
+        let hull: Vec<String> = tri.hull().map(|i| i.to_string()).collect();
         assert_eq!(lines[1], format!("# hull {}", hull.join(" ")));
         assert_eq!(lines[2], "# duplicate 4 0");
         let triangles: Vec<[u32; 3]> = lines[3..]
@@ -538,7 +546,7 @@ mod tests {
                 [v[0], v[1], v[2]]
             })
             .collect();
-        assert_eq!(triangles, tri.triangles());
+        assert_eq!(triangles, tri.triangles().collect::<Vec<_>>());
     }
 
     #[test]
@@ -579,11 +587,12 @@ mod tests {
                 "{a:?} {b:?}"
             );
         }
-        let rays: Vec<(u32, f64, f64)> = serde_json::from_value(value["rays"].clone()).unwrap();
-        let expected: Vec<(u32, f64, f64)> =
+        let rays: Vec<(VertexId, f64, f64)> =
+            serde_json::from_value(value["rays"].clone()).unwrap();
+        let expected: Vec<(VertexId, f64, f64)> =
             vor.rays().map(|(_, v, [dx, dy])| (v, dx, dy)).collect();
         assert_eq!(rays, expected);
-        let cells: Vec<Vec<u32>> = serde_json::from_value(value["cells"].clone()).unwrap();
+        let cells: Vec<Vec<VertexId>> = serde_json::from_value(value["cells"].clone()).unwrap();
         assert_eq!(cells.len(), 5);
         assert_eq!(cells[4], vor.cell(4).collect::<Vec<_>>());
 

@@ -159,12 +159,12 @@ pub fn write_reconstruction_svg<W: Write>(
     if options.delaunay {
         w.open_stroke_group("delaunay", DELAUNAY, 0.7)?;
         if tri.is_degenerate() {
-            for pair in tri.hull().windows(2) {
-                w.segment(canvas.segment(points[pair[0] as usize], points[pair[1] as usize]))?;
+            for (a, b) in tri.hull().zip(tri.hull().skip(1)) {
+                w.segment(canvas.segment(points[a as usize], points[b as usize]))?;
             }
         } else {
-            for (e, &twin) in tri.halfedges().iter().enumerate() {
-                if twin == NO_TWIN || (e as u32) < twin {
+            for (e, &twin) in tri.halfedge_ids().zip(tri.halfedges()) {
+                if twin == NO_TWIN || e < twin {
                     let a = points[tri.halfedge_origin(e) as usize];
                     let b = points[tri.halfedge_destination(e) as usize];
                     w.segment(canvas.segment(a, b))?;
@@ -180,10 +180,10 @@ pub fn write_reconstruction_svg<W: Write>(
         w.open_stroke_group("voronoi", VORONOI, 0.8)?;
         let positions = vor.vertex_positions();
         for (_, a, b) in vor.finite_edges() {
-            w.segment(canvas.segment(positions[a as usize], positions[b as usize]))?;
+            w.segment(canvas.segment(positions[a.index()], positions[b.index()]))?;
         }
         for (_, v, d) in vor.rays() {
-            w.segment(canvas.ray(positions[v as usize], d))?;
+            w.segment(canvas.ray(positions[v.index()], d))?;
         }
         for [a, b] in vor.collinear_bisectors() {
             w.segment(canvas.bisector(points[a as usize], points[b as usize]))?;

@@ -162,7 +162,7 @@ fn lexicographic(a: [f64; 2], b: [f64; 2]) -> Ordering {
 pub(crate) fn chain_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
     tri.hull
         .windows(2)
-        .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
+        .map(|w| [w[0].min(w[1]).get(), w[0].max(w[1]).get()])
         .collect()
 }
 

@@ -5,7 +5,7 @@ use std::cmp::Ordering;
 use std::hash::{BuildHasherDefault, Hasher};
 
 use super::lengths::distance;
-use crate::delaunay::{Triangulation, NO_TWIN};
+use crate::delaunay::{HalfEdge, Triangulation, NO_TWIN};
 use crate::parallel;
 
 /// The Delaunay graph of the triangulation, neighbours by local index.
@@ -35,22 +35,22 @@ impl Graph {
         let n = tri.points.len();
         let twins = tri.halfedges();
         let mut count = vec![0u32; n + 1];
-        let undirected = |e: usize| twins[e] == NO_TWIN || e < twins[e] as usize;
-        for e in (0..twins.len()).filter(|&e| undirected(e)) {
-            count[tri.org(e) as usize + 1] += 1;
-            count[tri.dest(e) as usize + 1] += 1;
+        let undirected = |e: HalfEdge| twins[e.index()] == NO_TWIN || e < twins[e.index()];
+        for e in tri.halfedge_ids().filter(|&e| undirected(e)) {
+            count[tri.org(e).index() + 1] += 1;
+            count[tri.dest(e).index() + 1] += 1;
         }
         for i in 0..n {
             count[i + 1] += count[i];
         }
         let mut fill = count.clone();
         let mut neighbours = vec![0u32; count[n] as usize];
-        for e in (0..twins.len()).filter(|&e| undirected(e)) {
+        for e in tri.halfedge_ids().filter(|&e| undirected(e)) {
             let (a, b) = (tri.org(e), tri.dest(e));
-            neighbours[fill[a as usize] as usize] = b;
-            fill[a as usize] += 1;
-            neighbours[fill[b as usize] as usize] = a;
-            fill[b as usize] += 1;
+            neighbours[fill[a.index()] as usize] = b.get();
+            fill[a.index()] += 1;
+            neighbours[fill[b.index()] as usize] = a.get();
+            fill[b.index()] += 1;
         }
         Graph {
             offsets: count,

@@ -26,7 +26,8 @@ use super::lengths::distance;
 use super::proximity::closer;
 use super::result::{Reconstruction, Warning, WarningCode};
 use super::thresholds::warnings::{CLOSE_CURVE_STEPS, GAP_EDGE_DOUBLINGS, LONG_EDGE_DOUBLINGS};
-use crate::delaunay::{prev_in_triangle, NO_TWIN};
+use crate::delaunay::NO_TWIN;
+use crate::ids::LocalPoint;
 use crate::kernel::metric::{length_order, scaled_length_order};
 use crate::predicates::{incircle, CirclePosition};
 
@@ -143,7 +144,7 @@ impl CurveView {
         let edges: Vec<[u32; 2]> = rec
             .edges
             .iter()
-            .map(|e| e.map(|i| tri.local_index(i)))
+            .map(|e| e.map(|i| tri.local_index(i).get()))
             .collect();
         let mut start = vec![0u32; n + 1];
         for &[a, b] in &edges {
@@ -165,7 +166,9 @@ impl CurveView {
         let mut place = vec![(NO_CURVE, 0); n];
         let mut curves = Vec::with_capacity(rec.curves.len());
         for (c, curve) in rec.curves.iter().enumerate() {
-            let local: Vec<u32> = curve.points.iter().map(|&i| tri.local_index(i)).collect();
+            let local: Vec<u32> = (curve.points.iter())
+                .map(|&i| tri.local_index(i).get())
+                .collect();
             for (k, &p) in local.iter().enumerate() {
                 place[p as usize] = if degree(p as usize) > 2 {
                     (JUNCTION, 0)
@@ -256,11 +259,11 @@ impl Survey {
         let mut crowded = vec![false; n];
         let (mut close_pairs, mut first_close) = (0usize, None::<[u32; 2]>);
         let halfedges = tri.halfedges();
-        for (e, &twin) in halfedges.iter().enumerate() {
-            if twin != NO_TWIN && (twin as usize) < e {
+        for (e, &twin) in tri.halfedge_ids().zip(halfedges) {
+            if twin != NO_TWIN && twin < e {
                 continue;
             }
-            let (a, b) = (tri.org(e), tri.dest(e));
+            let (a, b) = (tri.org(e).get(), tri.dest(e).get());
             for (p, q) in [(a, b), (b, a)] {
                 if end[p as usize] {
                     let best = &mut nearest_of_end[p as usize];
@@ -284,8 +287,8 @@ impl Survey {
                 continue;
             }
             if twin != NO_TWIN {
-                let c = tri.org(prev_in_triangle(e));
-                let d = tri.org(prev_in_triangle(twin as usize));
+                let c = tri.org(e.prev()).get();
+                let d = tri.org(twin.prev()).get();
                 if incircle(at(a), at(b), at(c), at(d)) == CirclePosition::On {
                     continue;
                 }
@@ -297,7 +300,10 @@ impl Survey {
                 .is_none_or(|steps| steps > CLOSE_CURVE_STEPS);
             if a_within && b_within && far_apart {
                 close_pairs += 1;
-                let (i, j) = (tri.input_index(a), tri.input_index(b));
+                let (i, j) = (
+                    tri.input_index(LocalPoint::new(a)),
+                    tri.input_index(LocalPoint::new(b)),
+                );
                 let named = [i.min(j), i.max(j)];
                 if first_close.is_none_or(|f| named < f) {
                     first_close = Some(named);
@@ -399,7 +405,11 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
             }
             *flagged = true;
             let side = beside.iter().map(|&f| length(f)).fold(0.0, f64::max);
-            note(&mut long, length(ab) / side, ab.map(|p| tri.input_index(p)));
+            note(
+                &mut long,
+                length(ab) / side,
+                ab.map(|p| tri.input_index(LocalPoint::new(p))),
+            );
         }
         // A loop whose longest edge is far longer than every other one: an open curve whose
         // ends were joined.
@@ -421,7 +431,7 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
                 note(
                     &mut gap,
                     length(edge(longest)) / length(edge(second)),
-                    edge(longest).map(|p| tri.input_index(p)),
+                    edge(longest).map(|p| tri.input_index(LocalPoint::new(p))),
                 );
             }
         }
@@ -441,7 +451,7 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
                     "curve edges are far longer"
                 ),
                 round_ratio(long.1),
-                position(at(tri.local_index(i)))
+                position(at(tri.local_index(i).get()))
             ),
             points: vec![i, j],
         });
@@ -454,7 +464,7 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
                 "{} across a gap: the edge between points {i} and {j} at {} is {}× the loop's \
                  next longest; if the curve is open there, try --algorithm crust",
                 count(gap.0, "closed loop closes", "closed loops close"),
-                position(at(tri.local_index(i))),
+                position(at(tri.local_index(i).get())),
                 round_ratio(gap.1)
             ),
             points: vec![i, j],
@@ -484,7 +494,7 @@ fn curves_too_close(rec: &Reconstruction, survey: &Survey) -> Option<Warning> {
              at {}): the samples cannot tell them apart there, so they may be merged or split \
              wrongly; sample more densely where curves nearly touch",
             count(survey.close_pairs, "place", "places"),
-            position(tri.points[tri.local_index(i) as usize])
+            position(tri.point(i))
         ),
         points: vec![i, j],
     })

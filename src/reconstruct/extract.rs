@@ -5,6 +5,7 @@ use super::frame::Frame;
 use super::result::MedialAxis;
 use super::wdm::Label;
 use crate::delaunay::{Triangulation, NO_TWIN};
+use crate::ids::{HalfEdge, TriangleId, VertexId};
 use crate::parallel;
 use crate::voronoi::{EdgeEnd, Voronoi};
 
@@ -46,15 +47,15 @@ fn crust_edges_of_faces(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
     // edges a vertex but at merged faces.
     parallel::flat_map_chunks_reserved(vor.vertex_count(), 3, |vertices, edges| {
         for v in vertices {
-            let v = v as u32;
-            for edge in vor.vertex_edges_local(v) {
+            let v = VertexId::new(v as u32);
+            for edge in vor.face_edges(v) {
                 let far = match edge.to {
                     EdgeEnd::Vertex(u) if u < v => continue, // each finite edge once
-                    EdgeEnd::Vertex(u) => labels[u as usize],
+                    EdgeEnd::Vertex(u) => labels[u.index()],
                     EdgeEnd::Infinity => Label::Outer,
                 };
-                if EdgeClass::of(labels[v as usize], far) == EdgeClass::Branch {
-                    let [a, b] = edge.sites;
+                if EdgeClass::of(labels[v.index()], far) == EdgeClass::Branch {
+                    let [a, b] = edge.sites.map(|p| p.get());
                     edges.push([a.min(b), a.max(b)]);
                 }
             }
@@ -71,16 +72,18 @@ fn crust_edges_of_triangles(tri: &Triangulation, labels: &[Label]) -> Vec<[u32; 
     parallel::flat_map_chunks_reserved(labels.len(), 3, |triangles, edges| {
         for t in triangles {
             let own = labels[t];
-            for (e, &twin) in (3 * t..).zip(&halfedges[3 * t..3 * t + 3]) {
+            let t = TriangleId::new(t as u32);
+            for e in t.halfedges() {
+                let twin = halfedges[e.index()];
                 let far = if twin == NO_TWIN {
                     Label::Outer
-                } else if (twin as usize) / 3 < t {
+                } else if twin.triangle() < t {
                     continue; // each finite edge once, from its smaller triangle
                 } else {
-                    labels[twin as usize / 3]
+                    labels[twin.triangle().index()]
                 };
                 if own != far {
-                    let (a, b) = (tri.org(e), tri.dest(e));
+                    let (a, b) = (tri.org(e).get(), tri.dest(e).get());
                     edges.push([a.min(b), a.max(b)]);
                 }
             }
@@ -104,25 +107,25 @@ pub(super) fn medial_axis(
     let tri = vor.triangulation();
     let mut index = vec![u32::MAX; vor.vertex_count()];
     let mut axis = MedialAxis::default();
-    let mut renumber = |v: u32, axis: &mut MedialAxis| {
-        if index[v as usize] == u32::MAX {
-            index[v as usize] = axis.vertices.len() as u32;
+    let mut renumber = |v: VertexId, axis: &mut MedialAxis| {
+        if index[v.index()] == u32::MAX {
+            index[v.index()] = axis.vertices.len() as u32;
             let centre = vor.vertex_position(v);
             let centre = frame.circumcenter_to_caller(centre, || vor.canonical_triangle(v));
             axis.vertices.push(centre);
         }
-        index[v as usize]
+        index[v.index()]
     };
-    let crosses_a_curve = |e: u32| {
-        let (p, q) = (tri.org(e as usize), tri.dest(e as usize));
+    let crosses_a_curve = |e: HalfEdge| {
+        let (p, q) = (tri.org(e).get(), tri.dest(e).get());
         !later_pass_crust.is_empty()
             && later_pass_crust
                 .binary_search(&[p.min(q), p.max(q)])
                 .is_ok()
     };
     for (e, a, b) in vor.finite_edges() {
-        if labels[a as usize] == Label::Inner
-            && labels[b as usize] == Label::Inner
+        if labels[a.index()] == Label::Inner
+            && labels[b.index()] == Label::Inner
             && !crosses_a_curve(e)
         {
             let (ia, ib) = (renumber(a, &mut axis), renumber(b, &mut axis));
@@ -149,8 +152,9 @@ mod tests {
             let tri = crate::triangulate(&points).unwrap();
             let vor = tri.voronoi();
             assert!(!vor.has_merged_faces(), "round {round}");
-            let flow = crate::reconstruct::wdm::labels_local(&vor, Default::default());
-            let random: Vec<Label> = (0..vor.vertex_count())
+            let flow = crate::reconstruct::wdm::labels(&vor, Default::default());
+            let random: Vec<Label> = vor
+                .vertex_ids()
                 .map(|_| {
                     if rng.f64() < 0.5 {
                         Label::Inner

@@ -204,7 +204,8 @@ use super::thresholds::medial_axis::{
     NOISE_TOLERANCE, PRUNE_ANGLE_DEGREES, SPREAD_SIGNIFICANCE,
 };
 use crate::delaunay::triangulate;
-use crate::delaunay::{prev_in_triangle, Triangulation, NO_TWIN};
+use crate::delaunay::{HalfEdge, Triangulation, NO_TWIN};
+use crate::ids::{LocalPoint, VertexId};
 use crate::kernel::metric::dot_sign;
 use crate::kernel::Sign;
 use crate::parallel;
@@ -255,7 +256,7 @@ pub(super) fn pruned_medial_axis(
         None
     } else if let Some(cavity) = Cavity::around(&vor, &off_loop) {
         for &v in &cavity.replaced {
-            inside[v as usize] = false;
+            inside[v.index()] = false;
         }
         Some(cavity)
     } else {
@@ -299,7 +300,7 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&Curve], frame: Frame) -> MedialAxis {
             let positions = position..position + c.points.len() as u32;
             position += c.points.len() as u32;
             Curve {
-                points: positions.map(|i| sub.local_index(i)).collect(),
+                points: positions.map(|i| sub.local_index(i).get()).collect(),
                 closed: true,
             }
         })
@@ -367,14 +368,18 @@ fn loop_edges(loops: &[&Curve]) -> Vec<[u32; 2]> {
 
 /// The points of `vor` on none of the loops `edges` (local pairs) with a face
 /// `inside` them. No loop edge ends at such a point, so all its faces have one parity.
-fn off_loop_points_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]], inside: &[bool]) -> Vec<u32> {
+fn off_loop_points_inside(
+    vor: &Voronoi<'_>,
+    edges: &[[u32; 2]],
+    inside: &[bool],
+) -> Vec<LocalPoint> {
     let mut on_loop = vec![false; vor.triangulation().distinct_point_count()];
     for &[a, b] in edges {
         on_loop[a as usize] = true;
         on_loop[b as usize] = true;
     }
-    (0..on_loop.len() as u32)
-        .filter(|&p| !on_loop[p as usize] && vor.cell_local(p).any(|v| inside[v as usize]))
+    (vor.triangulation().local_points())
+        .filter(|&p| !on_loop[p.index()] && vor.cell_vertices(p).any(|v| inside[v.index()]))
         .collect()
 }
 
@@ -404,18 +409,19 @@ impl LoopMarks {
         let mut unresolved = false;
         // Finding a loop edge's half-edge walks around its end: in parallel.
         let found = parallel::map_range(edges.len(), |i| {
-            let [a, b] = edges[i];
+            let [a, b] = edges[i].map(LocalPoint::new);
             vor.delaunay_halfedge(a, b)
         });
-        for (&[a, b], found) in edges.iter().zip(found) {
+        for (&edge, found) in edges.iter().zip(found) {
+            let [a, b] = edge.map(LocalPoint::new);
             match found {
                 Some(e) => {
-                    on_loop.set(e as usize);
-                    if let Some(&twin) = halfedges.get(e as usize).filter(|&&t| t != NO_TWIN) {
-                        on_loop.set(twin as usize);
+                    on_loop.set(e.index());
+                    if let Some(&twin) = halfedges.get(e.index()).filter(|&&t| t != NO_TWIN) {
+                        on_loop.set(twin.index());
                     }
                     if !vor.has_dual(e) {
-                        on_chord[vor.vertex_of_halfedge(e) as usize] = true;
+                        on_chord[vor.vertex_of_halfedge(e).index()] = true;
                     }
                 }
                 // Not an edge of this triangulation: a chord of the merged face that holds
@@ -423,9 +429,9 @@ impl LoopMarks {
                 // an edge that a later pass of the peeling drew on its own points.
                 None => {
                     let mut shared = false;
-                    for v in vor.cell_local(a) {
-                        if vor.cell_local(b).any(|w| w == v) {
-                            on_chord[v as usize] = true;
+                    for v in vor.cell_vertices(a) {
+                        if vor.cell_vertices(b).any(|w| w == v) {
+                            on_chord[v.index()] = true;
                             shared = true;
                         }
                     }
@@ -438,7 +444,7 @@ impl LoopMarks {
                         match faces_across(vor, a, b).filter(|_| across) {
                             Some(faces) => {
                                 for v in faces {
-                                    on_chord[v as usize] = true;
+                                    on_chord[v.index()] = true;
                                 }
                             }
                             None => unresolved = true,
@@ -460,7 +466,7 @@ impl LoopMarks {
     /// marks become the search's (a copy was 2 bytes a point at the memory peak).
     fn inside_faces(&mut self, vor: &Voronoi<'_>) -> Vec<bool> {
         let on_chord = std::mem::take(&mut self.on_chord);
-        parity_from_infinity(vor, on_chord, |e| self.on_loop.get(e as usize))
+        parity_from_infinity(vor, on_chord, |e| self.on_loop.get(e.index()))
     }
 }
 
@@ -535,33 +541,36 @@ impl Graph {
         // when the angle at `c`, a corner of the face on the edge's left, is obtuse: an
         // exact sign of input points (the orientation of the constructed circumcenter, of
         // higher degree, took a fifth of the balls' time).
-        let beyond_edge = |e: usize, c: u32| loops.on_loop.get(e) && beyond_of_corner(tri, e, c);
-        let beyond = |v: u32| {
-            vor.vertex_edges_local(v).any(|edge| {
-                let e = edge.halfedge as usize;
-                beyond_edge(e, tri.org(prev_in_triangle(e)))
+        let beyond_edge = |e: HalfEdge, c: LocalPoint| {
+            loops.on_loop.get(e.index()) && beyond_of_corner(tri, e, c)
+        };
+        let beyond = |v: VertexId| {
+            vor.face_edges(v).any(|edge| {
+                let e = edge.halfedge;
+                beyond_edge(e, tri.org(e.prev()))
             })
         };
         // The slack: `CLEAN` when the face's samples do not zig-zag, `SPREAD` when they
         // spread wide for the ball and its noise (measured on the face's triangle: for a
         // merged face, one of its triangles), else the noise slack.
-        let slack = |sites: &mut dyn Iterator<Item = u32>, face: [[f64; 2]; 3], radius: f64| {
-            let (amplitude, noisy) = sites
-                .map(|p| noise[p as usize])
-                .fold((0.0f32, false), |(a, noisy), n| {
-                    (a.max(n.abs()), noisy || n.is_sign_negative())
-                });
-            if !noisy {
-                return CLEAN;
-            }
-            let [a, b, c] = face;
-            let spread = distance(a, b).max(distance(b, c)).max(distance(c, a)) / 2.0;
-            if spread * spread >= SPREAD_SIGNIFICANCE * radius * f64::from(amplitude) {
-                SPREAD
-            } else {
-                NOISE_TOLERANCE as f32 * amplitude
-            }
-        };
+        let slack =
+            |sites: &mut dyn Iterator<Item = LocalPoint>, face: [[f64; 2]; 3], radius: f64| {
+                let (amplitude, noisy) = sites
+                    .map(|p| noise[p.index()])
+                    .fold((0.0f32, false), |(a, noisy), n| {
+                        (a.max(n.abs()), noisy || n.is_sign_negative())
+                    });
+                if !noisy {
+                    return CLEAN;
+                }
+                let [a, b, c] = face;
+                let spread = distance(a, b).max(distance(b, c)).max(distance(c, a)) / 2.0;
+                if spread * spread >= SPREAD_SIGNIFICANCE * radius * f64::from(amplitude) {
+                    SPREAD
+                } else {
+                    NOISE_TOLERANCE as f32 * amplitude
+                }
+            };
         let slots = vertex_count as usize + new_triangles.len();
         let mut numbered = first_use::inside_edges(vor, &inside, slots);
         let mut new_beyond = vec![false; new_triangles.len()];
@@ -570,17 +579,17 @@ impl Graph {
                 numbered.add(vertex_count + s, vertex_count + t);
             }
             for &(k, e) in &cavity.boundary {
-                let ends = [tri.org(e as usize), tri.dest(e as usize)];
+                let ends = [tri.org(e), tri.dest(e)];
                 if let Some(&c) = new_triangles[k as usize].iter().find(|p| !ends.contains(p)) {
-                    new_beyond[k as usize] |= beyond_edge(e as usize, c);
+                    new_beyond[k as usize] |= beyond_edge(e, c);
                 }
-                let twin = tri.halfedges()[e as usize];
-                if twin == NO_TWIN || loops.on_loop.get(e as usize) {
+                let twin = tri.halfedges()[e.index()];
+                if twin == NO_TWIN || loops.on_loop.get(e.index()) {
                     continue;
                 }
                 let w = vor.vertex_of_halfedge(twin);
-                if inside[w as usize] {
-                    numbered.add(vertex_count + k, w);
+                if inside[w.index()] {
+                    numbered.add(vertex_count + k, w.get());
                 }
             }
         }
@@ -599,18 +608,19 @@ impl Graph {
         let mut ball = parallel::map_range(used.len(), |i| {
             let v = used[i];
             if v < vertex_count {
+                let v = VertexId::new(v);
                 let face = vor.vertex_triangle(v);
                 let centre = vor.vertex_position(v);
                 let radius = distance(centre, face[smallest_corner(face)]);
                 Ball {
                     centre,
                     radius,
-                    slack: slack(&mut vor.vertex_sites_local(v), face, radius),
+                    slack: slack(&mut vor.face_corners(v), face, radius),
                     first_use_and_beyond: tag(i, beyond(v)),
                 }
             } else {
                 let k = (v - vertex_count) as usize;
-                let face = new_triangles[k].map(|p| tri.points[p as usize]);
+                let face = new_triangles[k].map(|p| tri.position(p));
                 let centre = rounded_circumcenter(face);
                 let radius = distance(centre, face[smallest_corner(face)]);
                 Ball {
@@ -630,9 +640,9 @@ impl Graph {
                 let v = used[i];
                 let triangle = || {
                     if v < vertex_count {
-                        vor.canonical_triangle(v)
+                        vor.canonical_triangle(VertexId::new(v))
                     } else {
-                        new_triangles[(v - vertex_count) as usize].map(|p| tri.points[p as usize])
+                        new_triangles[(v - vertex_count) as usize].map(|p| tri.position(p))
                     }
                 };
                 if frame.rounds_like_the_caller(centre, triangle) {
@@ -760,8 +770,8 @@ fn axis_of(
 /// Whether the circumcenter of the triangle of half-edge `e` (local, of `tri`) and corner
 /// `c`, which lies on its left, lies strictly on its right: the angle at `c` is obtuse,
 /// `(a − c)·(b − c) < 0` (exact).
-fn beyond_of_corner(tri: &Triangulation, e: usize, c: u32) -> bool {
-    let at = |p: u32| tri.points[p as usize];
+fn beyond_of_corner(tri: &Triangulation, e: HalfEdge, c: LocalPoint) -> bool {
+    let at = |p: LocalPoint| tri.position(p);
     dot_sign(at(c), at(tri.org(e)), at(tri.dest(e))) == Sign::Negative
 }
 
@@ -803,9 +813,9 @@ mod tests {
         let (mut beyond, mut on) = (0, 0);
         for points in sets {
             let tri = triangulate(&points).unwrap();
-            for e in 0..tri.halfedges().len() {
-                let c = tri.org(prev_in_triangle(e));
-                let at = |p: u32| tri.points[p as usize];
+            for e in tri.halfedge_ids() {
+                let c = tri.org(e.prev());
+                let at = |p: LocalPoint| tri.position(p);
                 let face = [at(tri.org(e)), at(tri.dest(e)), at(c)];
                 let side = orient2d_circumcenter(face[0], face[1], face);
                 beyond += usize::from(side == Orientation::Clockwise);
@@ -823,7 +833,7 @@ mod tests {
             .iter()
             .map(|c| Curve {
                 closed: c.closed,
-                points: c.points.iter().map(|&i| tri.local_index(i)).collect(),
+                points: c.points.iter().map(|&i| tri.local_index(i).get()).collect(),
             })
             .collect()
     }

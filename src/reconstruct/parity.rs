@@ -2,6 +2,7 @@
 //! edges crossed on the way from infinity, by a depth-first search on one thread, or on
 //! all threads by the connected components of the faces that no loop separates.
 
+use crate::ids::HalfEdge;
 use crate::voronoi::{EdgeEnd, Voronoi};
 
 /// Every Voronoi vertex not marked in `blocked`: is it separated from infinity by an odd
@@ -14,7 +15,7 @@ use crate::voronoi::{EdgeEnd, Voronoi};
 pub(in crate::reconstruct) fn parity_from_infinity(
     vor: &Voronoi<'_>,
     blocked: Vec<bool>,
-    crosses: impl Fn(u32) -> bool + Sync,
+    crosses: impl Fn(HalfEdge) -> bool + Sync,
 ) -> Vec<bool> {
     // The components do about two and a half times the depth-first search's work (at 10^7
     // points: 0.56 s one thread, 0.72–0.75 s for the components on two), so they pay from
@@ -32,23 +33,23 @@ pub(in crate::reconstruct) fn parity_from_infinity(
 fn depth_first(
     vor: &Voronoi<'_>,
     mut blocked: Vec<bool>,
-    crosses: impl Fn(u32) -> bool,
+    crosses: impl Fn(HalfEdge) -> bool,
 ) -> Vec<bool> {
     let seen = &mut blocked;
     let mut inside = vec![false; vor.vertex_count()];
     let mut stack = Vec::new();
     for (e, v, _) in vor.rays() {
-        if !seen[v as usize] {
-            seen[v as usize] = true;
-            inside[v as usize] = crosses(e);
+        if !seen[v.index()] {
+            seen[v.index()] = true;
+            inside[v.index()] = crosses(e);
             stack.push(v);
         }
         while let Some(v) = stack.pop() {
-            for edge in vor.vertex_edges_local(v) {
+            for edge in vor.face_edges(v) {
                 if let EdgeEnd::Vertex(u) = edge.to {
-                    if !seen[u as usize] {
-                        seen[u as usize] = true;
-                        inside[u as usize] = inside[v as usize] ^ crosses(edge.halfedge);
+                    if !seen[u.index()] {
+                        seen[u.index()] = true;
+                        inside[u.index()] = inside[v.index()] ^ crosses(edge.halfedge);
                         stack.push(u);
                     }
                 }
@@ -72,6 +73,7 @@ mod components {
     use rayon::prelude::*;
 
     use crate::delaunay::NO_TWIN;
+    use crate::ids::HalfEdge;
     use crate::parallel;
     use crate::voronoi::Voronoi;
 
@@ -84,7 +86,7 @@ mod components {
     pub(super) fn parity(
         vor: &Voronoi<'_>,
         blocked: &[bool],
-        crosses: impl Fn(u32) -> bool + Sync,
+        crosses: impl Fn(HalfEdge) -> bool + Sync,
     ) -> Vec<bool> {
         let halfedges = vor.triangulation().halfedges();
         let forest = Forest::new(vor.vertex_count());
@@ -92,12 +94,13 @@ mod components {
         // Every finite Voronoi edge once (from its smaller half-edge) between open vertices,
         // with whether it crosses a loop.
         let edges = |range: std::ops::Range<usize>| {
-            range.map(|e| e as u32).filter_map(|e| {
-                let twin = halfedges[e as usize];
+            range.map(|e| HalfEdge::new(e as u32)).filter_map(|e| {
+                let twin = halfedges[e.index()];
                 if twin == NO_TWIN || e > twin || !vor.has_dual(e) {
                     return None;
                 }
                 let (a, b) = (vor.vertex_of_halfedge(e), vor.vertex_of_halfedge(twin));
+                let (a, b) = (a.get(), b.get());
                 (open(a) && open(b)).then(|| (a, b, crosses(e)))
             })
         };
@@ -138,6 +141,7 @@ mod components {
         let mut parity = vec![UNREACHED; vor.vertex_count()];
         let mut stack = Vec::new();
         for (e, v, _) in vor.rays() {
+            let v = v.get();
             let c = root[v as usize];
             if !open(v) || parity[c as usize] != UNREACHED {
                 continue;
@@ -234,7 +238,7 @@ mod tests {
         let tri = triangulate(&points).unwrap();
         let vor = tri.voronoi();
         let n = vor.vertex_count();
-        let region: Vec<bool> = (0..n as u32)
+        let region: Vec<bool> = (vor.vertex_ids())
             .map(|v| {
                 let [x, y] = vor.vertex_position(v);
                 let ring = (x - 0.5).hypot(y - 0.5);
@@ -243,10 +247,10 @@ mod tests {
             })
             .collect();
         let halfedges = tri.halfedges();
-        let crosses = |e: u32| {
-            let twin = halfedges[e as usize];
-            let far = twin != NO_TWIN && region[vor.vertex_of_halfedge(twin) as usize];
-            region[vor.vertex_of_halfedge(e) as usize] != far
+        let crosses = |e: HalfEdge| {
+            let twin = halfedges[e.index()];
+            let far = twin != NO_TWIN && region[vor.vertex_of_halfedge(twin).index()];
+            region[vor.vertex_of_halfedge(e).index()] != far
         };
         let blocked: Vec<bool> = (0..n).map(|_| rng.below(50) == 0).collect();
         let one = depth_first(&vor, vec![false; n], crosses);

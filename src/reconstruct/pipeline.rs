@@ -12,13 +12,14 @@ use super::repairs::detours::repair_detours;
 use super::repairs::ears::{drop_islets, repair_ears, Ears};
 use super::repairs::peel::{hole_edges, parity_inside, peel, Peeling};
 use super::repairs::shared::Repair;
-use super::result::{untouched_local_points, untouched_points, MedialAxis, Reconstruction};
+use super::result::{untouched_points, MedialAxis, Reconstruction};
 use super::smooth;
 use super::thinning;
 use super::wdm::{self, Label, LabelRule};
 use super::{crust, nn_crust};
 use crate::delaunay::Triangulation;
 use crate::error::Error;
+use crate::ids::{typed_edges, untyped_edges, LocalPoint};
 use crate::voronoi::Voronoi;
 
 /// WDM_CRUST and WDM_MAT of `points` with the default [`Options`].
@@ -206,14 +207,14 @@ fn baseline(tri: &Triangulation, options: &Options, lap: &mut dyn FnMut(Phase)) 
     let edges = if tri.is_degenerate() {
         chain_edges(tri)
     } else if options.algorithm() == Algorithm::Crust {
-        crust::crust_edges_local(tri)
+        untyped_edges(crust::edges_of(tri))
     } else {
-        nn_crust::nn_crust_edges_local(tri)
+        untyped_edges(nn_crust::edges_of(tri))
     };
     lap(Phase::Extract);
     let curves = assemble(tri, &edges);
-    let edges = tri.to_input_edges(edges);
-    let unassigned = untouched_points(tri, &edges);
+    let unassigned = untouched_points(tri, edges.iter().map(|e| e.map(LocalPoint::new)));
+    let edges = tri.to_input_edges(typed_edges(edges));
     lap(Phase::Curves);
     Outcome {
         labels: Vec::new(),
@@ -274,7 +275,7 @@ impl<'t> WdmRun<'t> {
         lap(Phase::Voronoi);
         // Only the labels go on: the sources and the visit marks are freed here (10 bytes per
         // point at the memory peak, which is later).
-        let mut labels = wdm::labels_local(&vor, options.label_rule());
+        let mut labels = wdm::labels(&vor, options.label_rule());
         // The water flow's rounded circumcenters of all vertices (32 bytes a point): nothing
         // up to the pruned axis reads them, and it computes its balls' centres again, so they
         // are not held through the repairs and peeling. The raw axis reads them back.
@@ -352,9 +353,9 @@ impl<'t> WdmRun<'t> {
         lap(Phase::OpenCurves);
         // In local indices until the axis has read them (see `assemble_unnamed`).
         let curves = curves::assemble_unnamed(tri.points.len(), &edges, &tri.points, |p| {
-            tri.input_index(p)
+            tri.input_index(LocalPoint::new(p))
         });
-        let unassigned = untouched_local_points(tri, &edges);
+        let unassigned = untouched_points(tri, edges.iter().map(|e| e.map(LocalPoint::new)));
         let holes = if holes_possible {
             // The edges are distinct: those of the first pass the repair kept, then the
             // later ones. So a final edge is none of the first pass's exactly when it is a
@@ -420,7 +421,7 @@ impl<'t> WdmRun<'t> {
             }
         };
         for p in curves.iter_mut().flat_map(|c| c.points.iter_mut()) {
-            *p = tri.input_index(*p);
+            *p = tri.input_index(LocalPoint::new(*p));
         }
         let edges = curves::edges_of(&curves);
         Outcome {
@@ -449,7 +450,7 @@ fn thinned(
 ) -> Result<Reconstruction, Error> {
     let mut ids: Vec<u32> = representatives
         .iter()
-        .map(|&p| tri.input_index(p))
+        .map(|&p| tri.input_index(LocalPoint::new(p)))
         .collect();
     ids.sort_unstable();
     let chosen: Vec<[f64; 2]> = ids.iter().map(|&i| points[i as usize]).collect();
@@ -525,7 +526,7 @@ fn smoothing(
         .iter()
         .map(|c| curves::Curve {
             closed: c.closed,
-            points: c.points.iter().map(|&i| tri.local_index(i)).collect(),
+            points: c.points.iter().map(|&i| tri.local_index(i).get()).collect(),
         })
         .collect();
     Some(smooth::fitted_positions(tri, &local))
@@ -534,7 +535,9 @@ fn smoothing(
 /// The curves of distinct local `edges`, in caller indices (see
 /// [`curves::assemble_named`]).
 fn assemble(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<curves::Curve> {
-    curves::assemble_named(tri.points.len(), edges, &tri.points, |p| tri.input_index(p))
+    curves::assemble_named(tri.points.len(), edges, &tri.points, |p| {
+        tri.input_index(LocalPoint::new(p))
+    })
 }
 
 #[cfg(test)]
@@ -550,13 +553,13 @@ mod tests {
     /// WDM_CRUST edges off the public view of the dual (caller indices).
     fn public_crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
         let mut edges = Vec::new();
-        for v in 0..vor.vertex_count() as u32 {
+        for v in vor.vertex_ids() {
             for edge in vor.vertex_edges(v) {
                 let far = match edge.to {
-                    EdgeEnd::Vertex(u) => labels[u as usize],
+                    EdgeEnd::Vertex(u) => labels[u.index()],
                     EdgeEnd::Infinity => Label::Outer,
                 };
-                if EdgeClass::of(labels[v as usize], far) == EdgeClass::Branch {
+                if EdgeClass::of(labels[v.index()], far) == EdgeClass::Branch {
                     let [a, b] = edge.sites;
                     edges.push([a.min(b), a.max(b)]);
                 }
@@ -647,8 +650,13 @@ mod tests {
                 ears_repaired += usize::from(repaired > 0);
                 assert_eq!(rec.labels(), &labels[..], "round {round}");
                 let first_pass = public_crust_edges(&vor, &labels);
-                assert_eq!(tri.to_input_edges(local), first_pass, "round {round}");
-                let delaunay: BTreeSet<[u32; 2]> = (0..tri.halfedges().len())
+                assert_eq!(
+                    tri.to_input_edges(typed_edges(local)),
+                    first_pass,
+                    "round {round}"
+                );
+                let delaunay: BTreeSet<[u32; 2]> = tri
+                    .halfedge_ids()
                     .map(|e| {
                         let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
                         [a.min(b), a.max(b)]
@@ -675,8 +683,8 @@ mod tests {
                 assert_eq!(rec.edges(), &edges[..], "round {round}");
                 let curves = curves::assemble(points.len(), &edges, &points);
                 assert_eq!(rec.curves(), &curves[..], "round {round}");
-                assert_eq!(rec.triangulation().triangles(), tri.triangles());
-                assert_eq!(rec.triangulation().hull(), tri.hull());
+                assert!(rec.triangulation().triangles().eq(tri.triangles()));
+                assert!(rec.triangulation().hull().eq(tri.hull()));
                 let untouched: Vec<u32> = (0..points.len() as u32)
                     .filter(|&i| !tri.is_duplicate(i) && !edges.iter().flatten().any(|&p| p == i))
                     .collect();

@@ -18,7 +18,8 @@
 
 use std::cmp::Ordering;
 
-use crate::delaunay::{next_in_triangle, prev_in_triangle, Triangulation, NO_TWIN};
+use crate::delaunay::{Triangulation, NO_TWIN};
+use crate::ids::LocalPoint;
 use crate::kernel::metric::{distance_order, dot_sign};
 use crate::kernel::Sign;
 use crate::predicates::{incircle, CirclePosition};
@@ -67,8 +68,8 @@ impl DelaunayGraph {
         let points = &tri.points;
         let halfedges = tri.halfedges();
         let mut pairs: Vec<(u32, u32)> = Vec::new();
-        for (e, &twin) in halfedges.iter().enumerate() {
-            let (a, b) = (tri.org(e), tri.dest(e));
+        for (e, &twin) in tri.halfedge_ids().zip(halfedges) {
+            let (a, b) = (tri.org(e).get(), tri.dest(e).get());
             let mut push = |p: u32, q: u32| {
                 if row(p) {
                     pairs.push((p, q));
@@ -81,17 +82,17 @@ impl DelaunayGraph {
             }
             // Each interior edge from the half-edge with the smaller index; kept unless the
             // triangles on its two sides share their circumcircle.
-            if (twin as usize) < e {
+            if twin < e {
                 continue;
             }
-            let c = tri.org(prev_in_triangle(e));
-            let d = tri.org(prev_in_triangle(twin as usize));
+            let c = tri.org(e.prev()).get();
+            let d = tri.org(twin.prev()).get();
             let at = |i: u32| points[i as usize];
             if (row(a) || row(b)) && incircle(at(a), at(b), at(c), at(d)) != CirclePosition::On {
                 push(a, b);
                 push(b, a);
             }
-            debug_assert_eq!(tri.org(next_in_triangle(e)), b);
+            debug_assert_eq!(tri.org(e.next()).get(), b);
         }
         pairs.sort_unstable();
         let mut start = vec![0usize; points.len() + 1];
@@ -118,7 +119,7 @@ impl DelaunayGraph {
         for (r, &p) in listed.iter().enumerate() {
             row_of[p as usize] = r as u32;
             start.push(targets.len());
-            targets.extend(vor.dual_neighbours_local(p));
+            targets.extend(vor.dual_neighbours(LocalPoint::new(p)).map(LocalPoint::get));
         }
         start.push(targets.len());
         DelaunayGraph {

@@ -6,6 +6,7 @@ use super::curves::{self, Curve};
 use super::options::{Algorithm, MedialAxisMode};
 use super::wdm::Label;
 use crate::delaunay::Triangulation;
+use crate::ids::LocalPoint;
 
 /// The medial axis approximation: segments between Voronoi vertices inside the shape.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -103,7 +104,7 @@ impl Reconstruction {
             return None;
         }
         Some(match &self.fitted {
-            Some(fitted) => fitted[self.triangulation.local_index(i) as usize],
+            Some(fitted) => fitted[self.triangulation.local_index(i).index()],
             None => self.triangulation.point(i),
         })
     }
@@ -129,7 +130,11 @@ impl Reconstruction {
 
     /// Distinct points that no reconstructed edge touches.
     pub fn untouched_points(&self) -> Vec<u32> {
-        untouched_points(&self.triangulation, &self.edges)
+        let tri = &self.triangulation;
+        untouched_points(
+            tri,
+            self.edges.iter().map(|e| e.map(|i| tri.local_index(i))),
+        )
     }
 
     /// Distinct points on no reconstructed curve (outliers, leftovers of noise), sorted, in
@@ -150,30 +155,20 @@ impl Reconstruction {
     }
 }
 
-/// The distinct points of `tri` (caller indices, sorted) that no edge of `edges` (caller
-/// indices) touches.
-pub(super) fn untouched_points(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<u32> {
-    let mut touched = vec![false; tri.point_count()];
-    for &[a, b] in edges {
-        touched[a as usize] = true;
-        touched[b as usize] = true;
-    }
-    (0..tri.point_count() as u32)
-        .filter(|&i| !touched[i as usize] && !tri.is_duplicate(i))
-        .collect()
-}
-
-/// [`untouched_points`] of `edges` in local indices.
-pub(super) fn untouched_local_points(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<u32> {
+/// The distinct points of `tri` (caller indices, sorted) that no edge of `edges` touches.
+pub(super) fn untouched_points(
+    tri: &Triangulation,
+    edges: impl Iterator<Item = [LocalPoint; 2]>,
+) -> Vec<u32> {
     let mut touched = vec![false; tri.distinct_point_count()];
-    for &[a, b] in edges {
-        touched[a as usize] = true;
-        touched[b as usize] = true;
+    for [a, b] in edges {
+        touched[a.index()] = true;
+        touched[b.index()] = true;
     }
     // Read in local order (a point's caller index is where its first occurrence was): the
     // caller's order jumps all over the marks, a cache miss per point at 10^7.
-    let mut untouched: Vec<u32> = (0..touched.len() as u32)
-        .filter(|&p| !touched[p as usize])
+    let mut untouched: Vec<u32> = (tri.local_points())
+        .filter(|&p| !touched[p.index()])
         .map(|p| tri.input_index(p))
         .collect();
     untouched.sort_unstable();

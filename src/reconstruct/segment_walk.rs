@@ -7,7 +7,8 @@
 use std::ops::ControlFlow;
 
 use super::curves::Adjacency;
-use crate::delaunay::{next_in_triangle, prev_in_triangle, NO_TWIN};
+use crate::delaunay::{HalfEdge, NO_TWIN};
+use crate::ids::{LocalPoint, VertexId};
 use crate::kernel::{orient, Sign};
 use crate::voronoi::Voronoi;
 
@@ -16,12 +17,19 @@ use crate::voronoi::Voronoi;
 /// crosses nothing. Otherwise every triangulation edge the open segment crosses is tested; a
 /// point on the segment (collinear, strictly between `a` and `b`) counts as a crossing: a
 /// curve never runs over a sample.
-pub(super) fn crosses_a_curve(full: &Voronoi<'_>, curve: &Adjacency, a: u32, b: u32) -> bool {
+pub(super) fn crosses_a_curve(
+    full: &Voronoi<'_>,
+    curve: &Adjacency,
+    a: LocalPoint,
+    b: LocalPoint,
+) -> bool {
     if a == b || full.is_delaunay_edge(a, b) {
         return false;
     }
     let tri = full.triangulation();
-    let on_curve = |u: u32, v: u32| curve.neighbours(u).iter().any(|&(_, w)| w == v);
+    let on_curve = |u: LocalPoint, v: LocalPoint| {
+        (curve.neighbours(u.get()).iter()).any(|&(_, w)| w == v.get())
+    };
     let reached = walk(full, a, b, |x| {
         if on_curve(tri.org(x), tri.dest(x)) {
             ControlFlow::Break(())
@@ -35,14 +43,18 @@ pub(super) fn crosses_a_curve(full: &Voronoi<'_>, curve: &Adjacency, a: u32, b: 
 /// The faces (Voronoi vertices, in order, a merged face once per triangle of it) that the
 /// open segment from local point `a` to local point `b` passes through, when it is no edge of
 /// the triangulation; `None` where it runs through another sample point.
-pub(super) fn faces_across(full: &Voronoi<'_>, a: u32, b: u32) -> Option<Vec<u32>> {
+pub(super) fn faces_across(
+    full: &Voronoi<'_>,
+    a: LocalPoint,
+    b: LocalPoint,
+) -> Option<Vec<VertexId>> {
     let twins = full.triangulation().halfedges();
     let mut faces = Vec::new();
     let reached = walk(full, a, b, |x| {
         if faces.is_empty() {
-            faces.push(full.vertex_of_halfedge(x as u32));
+            faces.push(full.vertex_of_halfedge(x));
         }
-        faces.push(full.vertex_of_halfedge(twins[x]));
+        faces.push(full.vertex_of_halfedge(twins[x.index()]));
         ControlFlow::Continue(())
     });
     reached.then_some(faces)
@@ -55,18 +67,18 @@ pub(super) fn faces_across(full: &Voronoi<'_>, a: u32, b: u32) -> Option<Vec<u32
 /// false when `crossing` stops it or the segment runs through another sample point.
 fn walk(
     full: &Voronoi<'_>,
-    a: u32,
-    b: u32,
-    mut crossing: impl FnMut(usize) -> ControlFlow<()>,
+    a: LocalPoint,
+    b: LocalPoint,
+    mut crossing: impl FnMut(HalfEdge) -> ControlFlow<()>,
 ) -> bool {
     let tri = full.triangulation();
-    let at = |p: u32| tri.points[p as usize];
+    let at = |p: LocalPoint| tri.position(p);
     let (pa, pb) = (at(a), at(b));
-    let side = |p: u32| orient(pa, pb, at(p));
-    let twin = |e: usize| tri.halfedges()[e];
+    let side = |p: LocalPoint| orient(pa, pb, at(p));
+    let twin = |e: HalfEdge| tri.halfedges()[e.index()];
     // A point collinear with the segment lies on it when it lies on the side of `a` towards
     // `b` (for collinear points, comparing coordinates is exact); such a point blocks.
-    let ahead = |p: u32| {
+    let ahead = |p: LocalPoint| {
         let q = at(p);
         let same = |x: f64, y: f64, z: f64| (y - x).signum() == (z - x).signum() || y == x;
         same(pa[0], q[0], pb[0]) && same(pa[1], q[1], pb[1])
@@ -74,17 +86,17 @@ fn walk(
     // The triangle around `a` that the segment leaves `a` through: the half-edge `x` of
     // it opposite `a`, whose ends lie left and right of the segment.
     let Some(first) = full
-        .delaunay_neighbours_local(a)
+        .delaunay_neighbours(a)
         .next()
         .and_then(|q| full.delaunay_halfedge(a, q))
-        .filter(|&e| tri.org(e as usize) == a)
+        .filter(|&e| tri.org(e) == a)
     else {
         return false;
     };
-    let mut e = first as usize;
+    let mut e = first;
     let mut crossed = None;
     loop {
-        let (d, c) = (tri.dest(e), tri.org(prev_in_triangle(e)));
+        let (d, c) = (tri.dest(e), tri.org(e.prev()));
         let (sd, sc) = (side(d), side(c));
         if (sd == Sign::Zero && ahead(d)) || (sc == Sign::Zero && ahead(c)) {
             return false;
@@ -92,14 +104,14 @@ fn walk(
         // Triangle `a, d, c` is counterclockwise: the segment runs between `d` (right) and
         // `c` (left).
         if sd == Sign::Negative && sc == Sign::Positive {
-            crossed = Some(next_in_triangle(e));
+            crossed = Some(e.next());
             break;
         }
-        let incoming = twin(prev_in_triangle(e));
-        if incoming == NO_TWIN || incoming as usize == first as usize {
+        let incoming = twin(e.prev());
+        if incoming == NO_TWIN || incoming == first {
             break;
         }
-        e = incoming as usize;
+        e = incoming;
     }
     let Some(mut x) = crossed else {
         return false;
@@ -111,17 +123,16 @@ fn walk(
             return false;
         }
         // `y` runs from left to right; the third point of its triangle is `w`.
-        let y = y as usize;
-        let w = tri.dest(next_in_triangle(y));
+        let w = tri.dest(y.next());
         if w == b {
             return true;
         }
         x = match side(w) {
             Sign::Zero => return false,
             // `w` left: the segment leaves through `right → w`, the edge after `y`.
-            Sign::Positive => next_in_triangle(y),
+            Sign::Positive => y.next(),
             // `w` right: it leaves through `w → left`, the edge before `y`.
-            Sign::Negative => prev_in_triangle(y),
+            Sign::Negative => y.prev(),
         };
     }
     false
@@ -196,6 +207,7 @@ mod tests {
             for _ in 0..30 {
                 let m = local.len();
                 let (a, b) = (rng.below(m) as u32, rng.below(m) as u32);
+                let (a, b) = (LocalPoint::new(a), LocalPoint::new(b));
                 if a == b || vor.is_delaunay_edge(a, b) {
                     continue;
                 }
@@ -203,10 +215,10 @@ mod tests {
                     continue;
                 };
                 walked += 1;
-                let (pa, pb) = (local[a as usize], local[b as usize]);
-                let mut expected: Vec<u32> = (0..tri.triangles.len())
+                let (pa, pb) = (local[a.index()], local[b.index()]);
+                let mut expected: Vec<VertexId> = (tri.triangle_ids())
                     .filter(|&t| {
-                        let corners = tri.triangles[t].map(|p| local[p as usize]);
+                        let corners = tri.triangle_points(t);
                         let sides = corners.map(|q| orient(pa, pb, q));
                         let apart = sides.iter().all(|&s| s != Sign::Positive)
                             || sides.iter().all(|&s| s != Sign::Negative);
@@ -240,9 +252,10 @@ mod tests {
             let local = &tri.points;
             let m = local.len() as u32;
             // A random third of the triangulation's edges is the "curve".
-            let mut curve: Vec<[u32; 2]> = (0..tri.halfedges().len())
+            let mut curve: Vec<[u32; 2]> = tri
+                .halfedge_ids()
                 .map(|e| {
-                    let (u, v) = (tri.org(e), tri.dest(e));
+                    let (u, v) = (tri.org(e).get(), tri.dest(e).get());
                     [u.min(v), u.max(v)]
                 })
                 .filter(|_| rng.below(3) == 0)
@@ -252,9 +265,10 @@ mod tests {
             let adjacency = Adjacency::new(local.len(), &curve);
             for _ in 0..30 {
                 let (a, b) = (rng.below(m as usize) as u32, rng.below(m as usize) as u32);
+                let (la, lb) = (LocalPoint::new(a), LocalPoint::new(b));
                 let expected =
-                    !vor.is_delaunay_edge(a, b) && crosses_by_brute_force(local, &curve, a, b);
-                let got = crosses_a_curve(&vor, &adjacency, a, b);
+                    !vor.is_delaunay_edge(la, lb) && crosses_by_brute_force(local, &curve, a, b);
+                let got = crosses_a_curve(&vor, &adjacency, la, lb);
                 assert_eq!(got, expected && a != b, "round {round}: {a} → {b}");
                 crossings += usize::from(got);
             }

@@ -9,6 +9,7 @@
 
 use std::cmp::Ordering;
 
+use crate::ids::{LocalPoint, VertexId};
 use crate::kernel::{compare_radius_rounded, dot_sign_rounded};
 use crate::parallel;
 use crate::predicates::{
@@ -49,18 +50,18 @@ pub struct WaterFlow {
     /// Label of every finite Voronoi vertex.
     pub labels: Vec<Label>,
     /// Source vertex `B_p` of every point whose cell is bounded and received water.
-    pub sources: Vec<Option<u32>>,
+    pub sources: Vec<Option<VertexId>>,
     /// Vertices the water reached.
     pub visited: Vec<bool>,
 }
 
 /// Runs the water flow on `vor` and labels every vertex.
 pub fn label_vertices(vor: &Voronoi<'_>, rule: LabelRule) -> WaterFlow {
-    let flow = flow_local(vor, rule);
+    let flow = flow(vor, rule);
     let tri = vor.triangulation();
     let sources = (0..tri.point_count() as u32)
         .map(|i| {
-            let local = flow.sources[tri.local_index(i) as usize];
+            let local = flow.sources[tri.local_index(i).index()];
             (local != NO_SOURCE && !tri.is_duplicate(i)).then_some(local)
         })
         .collect();
@@ -72,8 +73,8 @@ pub fn label_vertices(vor: &Voronoi<'_>, rule: LabelRule) -> WaterFlow {
 }
 
 /// The labels of [`label_vertices`], without the sources and visits.
-pub(crate) fn labels_local(vor: &Voronoi<'_>, rule: LabelRule) -> Vec<Label> {
-    flow_local(vor, rule).labels(rule)
+pub(crate) fn labels(vor: &Voronoi<'_>, rule: LabelRule) -> Vec<Label> {
+    flow(vor, rule).labels(rule)
 }
 
 /// A vertex's water-flow state, as bits of one byte: the walk tests both for every neighbour
@@ -82,12 +83,12 @@ const ACTIVATED: u8 = 1;
 const VISITED: u8 = 2;
 
 /// No source (yet): the point's cell is unbounded, or no water reached it.
-const NO_SOURCE: u32 = u32::MAX;
+const NO_SOURCE: VertexId = VertexId::new(u32::MAX);
 
 /// The state of every vertex and the source of every (local) point after the water flow.
 struct Flow {
     state: Vec<u8>,
-    sources: Vec<u32>,
+    sources: Vec<VertexId>,
 }
 
 impl Flow {
@@ -107,7 +108,7 @@ impl Flow {
 }
 
 /// The water flow of the module docs on `vor`, sources indexed by local point.
-fn flow_local(vor: &Voronoi<'_>, rule: LabelRule) -> Flow {
+fn flow(vor: &Voronoi<'_>, rule: LabelRule) -> Flow {
     let tri = vor.triangulation();
     let complement = rule == LabelRule::Complement;
     // In the complement convention "activated" means "marked outer": all start unmarked.
@@ -119,32 +120,32 @@ fn flow_local(vor: &Voronoi<'_>, rule: LabelRule) -> Flow {
 
     for inlet in inlets(vor, positions, &mut state, complement) {
         if complement {
-            state[inlet as usize] |= ACTIVATED;
+            state[inlet.index()] |= ACTIVATED;
         }
         // Activated and not visited: the only state water enters.
-        if state[inlet as usize] != ACTIVATED {
+        if state[inlet.index()] != ACTIVATED {
             continue;
         }
         let mut stack = vec![inlet];
         while let Some(v) = stack.pop() {
             // The state is checked when a vertex is taken, not when it was pushed: a vertex
             // deactivated meanwhile blocks the water.
-            if state[v as usize] != ACTIVATED {
+            if state[v.index()] != ACTIVATED {
                 continue;
             }
-            state[v as usize] |= VISITED;
-            for p in vor.vertex_sites_local(v) {
+            state[v.index()] |= VISITED;
+            for p in vor.face_corners(v) {
                 // The source first: most sites have one already, and it is the cheaper test.
-                if sources[p as usize] == NO_SOURCE && vor.is_cell_bounded_local(p) {
-                    sources[p as usize] = v;
+                if sources[p.index()] == NO_SOURCE && vor.is_interior(p) {
+                    sources[p.index()] = v;
                     transition(vor, positions, p, v, &mut state, complement);
                 }
             }
             // Pushed in reverse so the neighbours are taken counterclockwise.
             let before = stack.len();
-            for edge in vor.vertex_edges_local(v) {
+            for edge in vor.face_edges(v) {
                 if let EdgeEnd::Vertex(u) = edge.to {
-                    if state[u as usize] == ACTIVATED {
+                    if state[u.index()] == ACTIVATED {
                         stack.push(u);
                     }
                 }
@@ -163,9 +164,9 @@ fn inlets(
     positions: &[[f64; 2]],
     state: &mut [u8],
     complement: bool,
-) -> Vec<u32> {
+) -> Vec<VertexId> {
     let tri = vor.triangulation();
-    let hull: Vec<[f64; 2]> = tri.hull.iter().map(|&i| tri.points[i as usize]).collect();
+    let hull: Vec<[f64; 2]> = tri.hull.iter().map(|&p| tri.position(p)).collect();
     // Every vertex with a ray, and for those outside the hull their smallest site. On all
     // threads: each hull test is a binary search of the hull, and samples of a curve can
     // put a sixth of their points on the hull (half of the labels' time at 10^7 such
@@ -176,24 +177,24 @@ fn inlets(
     let outside: Vec<bool> = parallel::map_range(rays.len(), |i| {
         circumcenter_in_convex_hull(&hull, vor.vertex_triangle(rays[i])) == HullPosition::Outside
     });
-    let mut list: Vec<(u32, [f64; 2])> = Vec::new();
+    let mut list: Vec<(VertexId, [f64; 2])> = Vec::new();
     for (&v, outside) in rays.iter().zip(outside) {
         if outside {
             let smallest_site = vor
-                .vertex_sites_local(v)
-                .map(|p| tri.points[p as usize])
+                .face_corners(v)
+                .map(|p| tri.position(p))
                 .min_by(|a, b| lexicographic(*a, *b))
                 .unwrap_or([0.0; 2]);
             list.push((v, smallest_site));
         } else if !complement {
-            state[v as usize] &= !ACTIVATED;
+            state[v.index()] &= !ACTIVATED;
         }
     }
     // Largest circumradius first: decided on the rounded circumcenters where their bound
     // allows, exactly otherwise (the same total order either way).
-    let radius_order = |a: u32, b: u32| {
+    let radius_order = |a: VertexId, b: VertexId| {
         let (ta, tb) = (vor.vertex_triangle(a), vor.vertex_triangle(b));
-        match compare_radius_rounded(positions[b as usize], tb[0], positions[a as usize], ta[0]) {
+        match compare_radius_rounded(positions[b.index()], tb[0], positions[a.index()], ta[0]) {
             Some(sign) => sign.into(),
             None => compare_circumradius(tb, ta),
         }
@@ -217,27 +218,27 @@ fn lexicographic(a: [f64; 2], b: [f64; 2]) -> Ordering {
 fn transition(
     vor: &Voronoi<'_>,
     positions: &[[f64; 2]],
-    p: u32,
-    source: u32,
+    p: LocalPoint,
+    source: VertexId,
     state: &mut [u8],
     complement: bool,
 ) {
-    let point = vor.triangulation().points[p as usize];
-    let source_position = positions[source as usize];
-    for v in vor.cell_local(p) {
+    let point = vor.triangulation().position(p);
+    let source_position = positions[source.index()];
+    for v in vor.cell_vertices(p) {
         if v == source {
             continue;
         }
         let side =
-            dot_sign_rounded(point, source_position, positions[v as usize]).unwrap_or_else(|| {
+            dot_sign_rounded(point, source_position, positions[v.index()]).unwrap_or_else(|| {
                 dot_sign_circumcenters(point, vor.vertex_triangle(source), vor.vertex_triangle(v))
             });
         if complement {
             if side == Sign::Positive {
-                state[v as usize] |= ACTIVATED;
+                state[v.index()] |= ACTIVATED;
             }
         } else if side == Sign::Negative {
-            state[v as usize] &= !ACTIVATED;
+            state[v.index()] &= !ACTIVATED;
         }
     }
 }

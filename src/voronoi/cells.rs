@@ -35,7 +35,8 @@
 use super::bounding_box::BoundingBox;
 use super::merge::merge_close_vertices;
 use super::Voronoi;
-use crate::delaunay::{prev_in_triangle, NO_TWIN};
+use crate::delaunay::NO_TWIN;
+use crate::ids::{LocalPoint, VertexId};
 use crate::kernel::metric::{distance_order, dot_sign};
 use crate::kernel::{
     bisector_crossing, circumcenter_nearest, circumcenter_side, circumcenter_strictly_inside,
@@ -61,8 +62,8 @@ impl KnownVertices {
     }
 
     /// The rounded position of `v`, from `compute` on first use.
-    fn position(&mut self, v: u32, compute: impl FnOnce() -> [f64; 2]) -> [f64; 2] {
-        match self.position.get_mut(v as usize) {
+    fn position(&mut self, v: VertexId, compute: impl FnOnce() -> [f64; 2]) -> [f64; 2] {
+        match self.position.get_mut(v.index()) {
             Some(slot) if !slot[0].is_nan() => *slot,
             Some(slot) => {
                 *slot = compute();
@@ -73,8 +74,8 @@ impl KnownVertices {
     }
 
     /// Whether `v` lies strictly inside the box, from `decide` on first use.
-    fn inside(&mut self, v: u32, decide: impl FnOnce() -> bool) -> bool {
-        match self.inside.get_mut(v as usize) {
+    fn inside(&mut self, v: VertexId, decide: impl FnOnce() -> bool) -> bool {
+        match self.inside.get_mut(v.index()) {
             Some(Some(known)) => *known,
             Some(slot) => *slot.insert(decide()),
             None => decide(),
@@ -82,13 +83,17 @@ impl KnownVertices {
     }
 }
 
+/// No Voronoi vertex: after the last neighbour of a hull point in
+/// [`Voronoi::cell_neighbours`] (out of range of every [`KnownVertices`]).
+const NO_VERTEX: VertexId = VertexId::new(u32::MAX);
+
 /// A line carrying an edge of the polygon being clipped.
 #[derive(Debug, Clone, Copy)]
 enum Line {
     /// The box side `x[axis] = value`.
     Side { axis: usize, value: f64 },
     /// The perpendicular bisector of the site and neighbour `q` (local index).
-    Bisector(u32),
+    Bisector(LocalPoint),
 }
 
 /// A polygon vertex, kept symbolically so that every decision on it is exact.
@@ -97,9 +102,13 @@ enum Vertex {
     /// A box corner (exact).
     Corner([f64; 2]),
     /// The point of the bisector of the site and `q` on the box side `x[axis] = value`.
-    Crossing { axis: usize, value: f64, q: u32 },
+    Crossing {
+        axis: usize,
+        value: f64,
+        q: LocalPoint,
+    },
     /// The circumcenter of the site, `q1` and `q2`: where their bisectors cross.
-    Circumcenter { q1: u32, q2: u32 },
+    Circumcenter { q1: LocalPoint, q2: LocalPoint },
 }
 
 /// A polygon vertex and the line of the edge from it to the next vertex.
@@ -124,13 +133,13 @@ struct Clipper<'p> {
 }
 
 impl Clipper<'_> {
-    fn point(&self, q: u32) -> [f64; 2] {
-        self.points[q as usize]
+    fn point(&self, q: LocalPoint) -> [f64; 2] {
+        self.points[q.index()]
     }
 
     /// `Positive` iff `v` is strictly closer to the site than to `q`, `Zero` iff equally
     /// close: exactly.
-    fn side(&self, v: &Vertex, q: u32) -> Sign {
+    fn side(&self, v: &Vertex, q: LocalPoint) -> Sign {
         let (p, qq) = (self.p, self.point(q));
         match *v {
             Vertex::Corner(c) => distance_order(c, qq, p),
@@ -167,7 +176,7 @@ impl Clipper<'_> {
     }
 
     /// Where the edge line `line` meets the bisector of the site and `q`.
-    fn crossing(line: Line, q: u32) -> Vertex {
+    fn crossing(line: Line, q: LocalPoint) -> Vertex {
         match line {
             Line::Side { axis, value } => Vertex::Crossing { axis, value, q },
             Line::Bisector(q1) => Vertex::Circumcenter { q1, q2: q },
@@ -176,7 +185,7 @@ impl Clipper<'_> {
 
     /// Cuts `polygon` (convex, counterclockwise, positive area) by the half-plane of `q`.
     /// Returns false when nothing of positive area is left.
-    fn cut(&self, polygon: &mut Vec<Node>, q: u32, scratch: &mut Scratch) -> bool {
+    fn cut(&self, polygon: &mut Vec<Node>, q: LocalPoint, scratch: &mut Scratch) -> bool {
         let Scratch { signs, nodes } = scratch;
         signs.clear();
         signs.extend(polygon.iter().map(|n| self.side(&n.vertex, q)));
@@ -226,7 +235,7 @@ impl Clipper<'_> {
     fn coordinates(
         &self,
         v: &Vertex,
-        neighbours: &[(u32, u32)],
+        neighbours: &[(LocalPoint, VertexId)],
         known: &mut KnownVertices,
     ) -> [f64; 2] {
         if let Vertex::Circumcenter { q1, q2 } = *v {
@@ -336,7 +345,7 @@ impl Voronoi<'_> {
         if p as usize >= self.tri.point_count() || self.tri.is_duplicate(p) {
             return Vec::new();
         }
-        self.clipped_cell_local(self.tri.local_index(p), bbox, known)
+        self.clip_cell(self.tri.local_index(p), bbox, known)
     }
 
     /// [`clipped_cell`](Self::clipped_cell) of every point, by the caller's index, with the
@@ -376,8 +385,8 @@ impl Voronoi<'_> {
         let mut known = KnownVertices::for_all(self.vertex_count);
         let mut rings: Vec<Vec<[f64; 2]>> = vec![Vec::new(); self.tri.point_count()];
         // In local (Z) order: neighbouring cells are near each other in memory.
-        for p in 0..self.tri.points.len() as u32 {
-            let ring = self.clipped_cell_local(p, bbox, &mut known);
+        for p in self.tri.local_points() {
+            let ring = self.clip_cell(p, bbox, &mut known);
             rings[self.tri.input_index(p) as usize] = ring;
         }
         merge_close_vertices(&mut rings, bbox);
@@ -388,9 +397,9 @@ impl Voronoi<'_> {
     }
 
     /// [`clipped_cell`](Self::clipped_cell) of local point `p`.
-    fn clipped_cell_local(
+    fn clip_cell(
         &self,
-        p: u32,
+        p: LocalPoint,
         bbox: &BoundingBox,
         known: &mut KnownVertices,
     ) -> Vec<[f64; 2]> {
@@ -399,11 +408,11 @@ impl Voronoi<'_> {
         }
         let clipper = Clipper {
             points: &self.tri.points,
-            p: self.tri.points[p as usize],
+            p: self.tri.position(p),
         };
         let mut polygon = box_polygon(bbox);
         let mut scratch = Scratch::default();
-        let neighbours = self.neighbours_local(p);
+        let neighbours = self.cell_neighbours(p);
         for &(q, _) in &neighbours {
             if !clipper.cut(&mut polygon, q, &mut scratch) {
                 return Vec::new();
@@ -426,15 +435,15 @@ impl Voronoi<'_> {
     /// in strictly convex position. `None` otherwise.
     fn cell_inside_box(
         &self,
-        p: u32,
+        p: LocalPoint,
         bbox: &BoundingBox,
         known: &mut KnownVertices,
     ) -> Option<Vec<[f64; 2]>> {
-        if !self.is_cell_bounded_local(p) {
+        if !self.is_interior(p) {
             return None;
         }
         let mut ring = Vec::new();
-        for v in self.cell_local(p) {
+        for v in self.cell_vertices(p) {
             let t = self.vertex_triangle(v);
             if !known.inside(v, || {
                 circumcenter_strictly_inside(t, bbox.min(), bbox.max())
@@ -453,17 +462,12 @@ impl Voronoi<'_> {
     }
 
     /// The sites across the edges of the cell of local point `p`, counterclockwise around it,
-    /// each with the Voronoi vertex between its edge and the next one (`NO_TWIN` after the
-    /// last neighbour of a hull point, and for collinear input, where the neighbours are the
-    /// previous and next point on the line).
-    pub(crate) fn neighbours_local(&self, p: u32) -> Vec<(u32, u32)> {
+    /// each with the Voronoi vertex between its edge and the next one ([`NO_VERTEX`] after
+    /// the last neighbour of a hull point, and for collinear input, where the neighbours are
+    /// the previous and next point on the line).
+    fn cell_neighbours(&self, p: LocalPoint) -> Vec<(LocalPoint, VertexId)> {
         if self.tri.is_degenerate() {
-            let line: Vec<u32> = self
-                .tri
-                .hull()
-                .into_iter()
-                .map(|i| self.tri.local_index(i))
-                .collect();
+            let line = &self.tri.hull;
             let Some(at) = line.iter().position(|&i| i == p) else {
                 return Vec::new();
             };
@@ -471,10 +475,10 @@ impl Voronoi<'_> {
             return before
                 .into_iter()
                 .chain(line.get(at + 1).copied())
-                .map(|q| (q, NO_TWIN))
+                .map(|q| (q, NO_VERTEX))
                 .collect();
         }
-        let start = self.out_halfedge[p as usize];
+        let start = self.out_halfedge[p.index()];
         let mut neighbours = Vec::new();
         if start == NO_TWIN {
             return neighbours;
@@ -483,15 +487,14 @@ impl Voronoi<'_> {
         loop {
             if self.has_dual(e) {
                 // The face left of p → q lies between q's edge and the next one.
-                neighbours.push((self.tri.dest(e as usize), self.vertex_of_halfedge(e)));
+                neighbours.push((self.tri.dest(e), self.vertex_of_halfedge(e)));
             }
             match self.rotate_counterclockwise(e) {
                 Some(next) if next != start => e = next,
                 Some(_) => break,
                 None => {
                     // A hull point: the incoming hull edge comes from the last neighbour.
-                    let incoming = prev_in_triangle(e as usize);
-                    neighbours.push((self.tri.org(incoming), NO_TWIN));
+                    neighbours.push((self.tri.org(e.prev()), NO_VERTEX));
                     break;
                 }
             }

@@ -208,10 +208,15 @@ pub fn drawing(rec: &Reconstruction, with_voronoi: bool) -> Drawing {
     d.axis_vertices = axis.vertices.iter().flatten().copied().collect();
     d.axis_edges = axis.edges.iter().flatten().copied().collect();
     if tri.is_degenerate() {
-        d.delaunay_edges = tri.hull().windows(2).flatten().copied().collect();
+        let hull = tri.hull();
+        d.delaunay_edges = hull
+            .clone()
+            .zip(hull.skip(1))
+            .flat_map(|(a, b)| [a, b])
+            .collect();
     } else {
-        for (e, &twin) in tri.halfedges().iter().enumerate() {
-            if twin == NO_TWIN || (e as u32) < twin {
+        for (e, &twin) in tri.halfedge_ids().zip(tri.halfedges()) {
+            if twin == NO_TWIN || e < twin {
                 d.delaunay_edges
                     .extend([tri.halfedge_origin(e), tri.halfedge_destination(e)]);
             }
@@ -221,10 +226,10 @@ pub fn drawing(rec: &Reconstruction, with_voronoi: bool) -> Drawing {
         let vor = tri.voronoi();
         d.voronoi_vertices = vor.vertex_positions().iter().flatten().copied().collect();
         for (_, a, b) in vor.finite_edges() {
-            d.voronoi_edges.extend([a, b]);
+            d.voronoi_edges.extend([a.get(), b.get()]);
         }
         for (_, v, [dx, dy]) in vor.rays() {
-            d.voronoi_rays.extend([f64::from(v), dx, dy]);
+            d.voronoi_rays.extend([f64::from(v.get()), dx, dy]);
         }
         d.voronoi_bisectors = vor.collinear_bisectors().into_iter().flatten().collect();
         d.labels = rec

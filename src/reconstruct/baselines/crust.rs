@@ -47,6 +47,7 @@
 mod insertion;
 
 use crate::delaunay::Triangulation;
+use crate::ids::{typed_edges, LocalPoint, VertexId};
 use crate::kernel::Sign;
 use crate::reconstruct::curves::chain_edges;
 
@@ -66,27 +67,27 @@ use crate::kernel::mixed::MixedPoints;
 /// # Ok::<(), wdm_crust::Error>(())
 /// ```
 pub fn crust_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
-    tri.to_input_edges(crust_edges_local(tri))
+    tri.to_input_edges(edges_of(tri))
 }
 
-/// [`crust_edges`] in local indices.
-pub(crate) fn crust_edges_local(tri: &Triangulation) -> Vec<[u32; 2]> {
+/// The edges of [`crust_edges`], between the triangulation's own points.
+pub(crate) fn edges_of(tri: &Triangulation) -> Vec<[LocalPoint; 2]> {
     if tri.is_degenerate() {
         let mut chain = chain_edges(tri);
         chain.sort_unstable();
-        return chain;
+        return typed_edges(chain);
     }
     let vor = tri.voronoi();
     let n = tri.points.len();
     let m = vor.vertex_count();
-    let triangles = (0..m as u32).map(|v| vor.vertex_triangle(v)).collect();
+    let triangles = vor.vertex_ids().map(|v| vor.vertex_triangle(v)).collect();
     let points = MixedPoints::new(&tri.points, triangles);
     let mut dt = Dt::new(tri, &points, n + m);
     let order = hilbert_order(vor.vertex_positions());
     let mut near = order
         .first()
-        .and_then(|&v| vor.vertex_sites_local(v).next())
-        .unwrap_or(0);
+        .and_then(|&v| vor.face_corners(VertexId::new(v)).next())
+        .map_or(0, LocalPoint::get);
     for v in order {
         let w = (n + v as usize) as u32;
         if dt.insert(w, near) {
@@ -105,7 +106,7 @@ pub(crate) fn crust_edges_local(tri: &Triangulation) -> Vec<[u32; 2]> {
     });
     edges.sort_unstable();
     edges.dedup();
-    edges
+    typed_edges(edges)
 }
 
 /// Indices of `positions` in the order of a Hilbert curve over their bounding box (2^16 cells
@@ -271,7 +272,7 @@ mod tests {
         assert_eq!(crust, reference_crust(&pts));
         // (2,2)–(5,2) is a Delaunay edge that the Voronoi vertex (4.5, 0.5) blocks.
         let tri = triangulate(&pts).unwrap();
-        let is_delaunay = (0..tri.halfedges().len()).any(|e| {
+        let is_delaunay = tri.halfedge_ids().any(|e| {
             let (a, b) = (tri.halfedge_origin(e), tri.halfedge_destination(e));
             [a.min(b), a.max(b)] == [5, 7]
         });
@@ -392,7 +393,7 @@ mod tests {
         all.extend_from_slice(vor.vertex_positions());
         let big = triangulate(&all).unwrap();
         let mut expected = Vec::new();
-        for e in 0..big.halfedges().len() {
+        for e in big.halfedge_ids() {
             let (a, b) = (big.halfedge_origin(e), big.halfedge_destination(e));
             if (a as usize) < pts.len() && (b as usize) < pts.len() {
                 expected.push([a.min(b), a.max(b)]);

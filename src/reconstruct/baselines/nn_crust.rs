@@ -23,6 +23,7 @@
 //! `y`), never by input index, so the result does not depend on the order of the input.
 
 use crate::delaunay::Triangulation;
+use crate::ids::{typed_edges, LocalPoint};
 use crate::reconstruct::curves::chain_edges;
 use crate::reconstruct::proximity::DelaunayGraph;
 
@@ -45,15 +46,15 @@ use crate::reconstruct::proximity::DelaunayGraph;
 /// # Ok::<(), wdm_crust::Error>(())
 /// ```
 pub fn nn_crust_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
-    tri.to_input_edges(nn_crust_edges_local(tri))
+    tri.to_input_edges(edges_of(tri))
 }
 
-/// [`nn_crust_edges`] in local indices.
-pub(crate) fn nn_crust_edges_local(tri: &Triangulation) -> Vec<[u32; 2]> {
+/// The edges of [`nn_crust_edges`], between the triangulation's own points.
+pub(crate) fn edges_of(tri: &Triangulation) -> Vec<[LocalPoint; 2]> {
     if tri.is_degenerate() {
         let mut chain = chain_edges(tri);
         chain.sort_unstable();
-        return chain;
+        return typed_edges(chain);
     }
     let graph = DelaunayGraph::of(tri);
     let mut edges = Vec::new();
@@ -65,7 +66,7 @@ pub(crate) fn nn_crust_edges_local(tri: &Triangulation) -> Vec<[u32; 2]> {
     }
     edges.sort_unstable();
     edges.dedup();
-    edges
+    typed_edges(edges)
 }
 
 #[cfg(test)]

@@ -2,7 +2,7 @@
 //! order the edges first use them (which follows the triangulation's locality): on one
 //! thread in one pass, or on all threads in a few.
 
-use crate::delaunay::NO_TWIN;
+use crate::delaunay::{HalfEdge, NO_TWIN};
 use crate::voronoi::Voronoi;
 
 /// Vertices numbered in order of first use, and edges between the numbers.
@@ -60,12 +60,12 @@ fn finite_edges_between<'a>(
     let twins = vor.triangulation().halfedges();
     halfedges.filter_map(move |e| {
         let twin = twins[e];
-        let e = e as u32;
+        let e = HalfEdge::new(e as u32);
         if twin == NO_TWIN || e > twin || !vor.has_dual(e) {
             return None;
         }
         let (a, b) = (vor.vertex_of_halfedge(e), vor.vertex_of_halfedge(twin));
-        (inside[a as usize] && inside[b as usize]).then_some((a, b))
+        (inside[a.index()] && inside[b.index()]).then_some((a.get(), b.get()))
     })
 }
 
@@ -138,7 +138,7 @@ mod tests {
         let tri = triangulate(&points).unwrap();
         let vor = tri.voronoi();
         let n = vor.vertex_count();
-        let inside: Vec<bool> = (0..n as u32)
+        let inside: Vec<bool> = (vor.vertex_ids())
             .map(|v| {
                 let [x, y] = vor.vertex_position(v);
                 (x - 0.5).hypot(y - 0.4) < 0.45 && rng.below(30) != 0
@@ -151,8 +151,8 @@ mod tests {
             edges: Vec::new(),
         };
         for (_, a, b) in vor.finite_edges() {
-            if inside[a as usize] && inside[b as usize] {
-                reference.add(a, b);
+            if inside[a.index()] && inside[b.index()] {
+                reference.add(a.get(), b.get());
             }
         }
         assert!(reference.used.len() > n / 2);

@@ -31,6 +31,7 @@ use std::collections::BinaryHeap;
 
 use super::shared::degrees;
 use crate::delaunay::NO_TWIN;
+use crate::ids::{ids, LocalPoint, VertexId};
 use crate::reconstruct::extract::wdm_crust_edges;
 use crate::reconstruct::thresholds::corridors::{CHORD, NARROW};
 use crate::reconstruct::wdm::Label;
@@ -67,24 +68,24 @@ pub(crate) fn repair_corridors(
         return 0;
     }
     let width = widths(vor, labels, &length);
-    let mut walls: Vec<u32> = chords
+    let mut walls: Vec<VertexId> = chords
         .into_iter()
         .filter_map(|chord| {
-            let o = outer_side(vor, labels, chord)?;
-            (width[o as usize] * NARROW < length(chord)).then_some(o)
+            let o = outer_side(vor, labels, chord.map(LocalPoint::new))?;
+            (width[o.index()] * NARROW < length(chord)).then_some(o)
         })
         .collect();
     // Widest first: a pocket behind a narrower gap inside a wider one's is part of it, and
     // two pockets are otherwise disjoint, so the union does not depend on the chords' order.
     walls.sort_unstable_by(|&a, &b| {
-        width[b as usize]
-            .total_cmp(&width[a as usize])
+        width[b.index()]
+            .total_cmp(&width[a.index()])
             .then(a.cmp(&b))
     });
     let mut corridor = vec![false; labels.len()];
     let mut relabelled = 0;
     for o in walls {
-        if !corridor[o as usize] {
+        if !corridor[o.index()] {
             relabelled += flood(vor, labels, &width, o, &mut corridor);
         }
     }
@@ -120,16 +121,16 @@ fn median(lengths: &mut [f64]) -> f64 {
 
 /// The finite outer vertex on the outer side of the crust edge `[a, b]` (none when that side
 /// is infinity: a hull edge).
-fn outer_side(vor: &Voronoi<'_>, labels: &[Label], [a, b]: [u32; 2]) -> Option<u32> {
+fn outer_side(vor: &Voronoi<'_>, labels: &[Label], [a, b]: [LocalPoint; 2]) -> Option<VertexId> {
     let e = vor.delaunay_halfedge(a, b)?;
-    let twin = vor.triangulation().halfedges()[e as usize];
+    let twin = vor.triangulation().halfedges()[e.index()];
     if twin == NO_TWIN {
         return None;
     }
     [e, twin]
         .into_iter()
         .map(|h| vor.vertex_of_halfedge(h))
-        .find(|&v| labels[v as usize] == Label::Outer)
+        .find(|&v| labels[v.index()] == Label::Outer)
 }
 
 /// The width of every outer vertex (0 for inner ones): widest paths from infinity, by a
@@ -137,31 +138,29 @@ fn outer_side(vor: &Voronoi<'_>, labels: &[Label], [a, b]: [u32; 2]) -> Option<u
 fn widths(vor: &Voronoi<'_>, labels: &[Label], length: &dyn Fn([u32; 2]) -> f64) -> Vec<f64> {
     let mut width = vec![0.0f64; labels.len()];
     let mut heap = BinaryHeap::new();
-    for v in 0..labels.len() as u32 {
-        let open = vor
-            .vertex_edges_local(v)
-            .any(|edge| edge.to == EdgeEnd::Infinity);
-        if labels[v as usize] == Label::Outer && open {
-            width[v as usize] = f64::INFINITY;
+    for v in ids::<VertexId>(labels.len()) {
+        let open = vor.face_edges(v).any(|edge| edge.to == EdgeEnd::Infinity);
+        if labels[v.index()] == Label::Outer && open {
+            width[v.index()] = f64::INFINITY;
             heap.push(Widest(f64::INFINITY, v));
         }
     }
     let mut done = vec![false; labels.len()];
     while let Some(Widest(w, v)) = heap.pop() {
-        if done[v as usize] {
+        if done[v.index()] {
             continue;
         }
-        done[v as usize] = true;
-        for edge in vor.vertex_edges_local(v) {
+        done[v.index()] = true;
+        for edge in vor.face_edges(v) {
             let EdgeEnd::Vertex(u) = edge.to else {
                 continue;
             };
-            if labels[u as usize] != Label::Outer || done[u as usize] {
+            if labels[u.index()] != Label::Outer || done[u.index()] {
                 continue;
             }
-            let through = w.min(length(edge.sites));
-            if through > width[u as usize] {
-                width[u as usize] = through;
+            let through = w.min(length(edge.sites.map(LocalPoint::get)));
+            if through > width[u.index()] {
+                width[u.index()] = through;
                 heap.push(Widest(through, u));
             }
         }
@@ -175,23 +174,23 @@ fn flood(
     vor: &Voronoi<'_>,
     labels: &[Label],
     width: &[f64],
-    start: u32,
+    start: VertexId,
     corridor: &mut [bool],
 ) -> usize {
-    let limit = width[start as usize];
+    let limit = width[start.index()];
     let mut stack = vec![start];
-    corridor[start as usize] = true;
+    corridor[start.index()] = true;
     let mut marked = 1;
     while let Some(v) = stack.pop() {
-        for edge in vor.vertex_edges_local(v) {
+        for edge in vor.face_edges(v) {
             let EdgeEnd::Vertex(u) = edge.to else {
                 continue;
             };
-            if labels[u as usize] == Label::Outer
-                && !corridor[u as usize]
-                && width[u as usize] <= limit
+            if labels[u.index()] == Label::Outer
+                && !corridor[u.index()]
+                && width[u.index()] <= limit
             {
-                corridor[u as usize] = true;
+                corridor[u.index()] = true;
                 marked += 1;
                 stack.push(u);
             }
@@ -202,7 +201,7 @@ fn flood(
 
 /// A vertex and its width, ordered by width (then by vertex, for a total order).
 #[derive(PartialEq)]
-struct Widest(f64, u32);
+struct Widest(f64, VertexId);
 
 impl Eq for Widest {}
 

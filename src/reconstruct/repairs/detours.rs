@@ -49,6 +49,7 @@ use std::collections::{BTreeMap, BTreeSet, BinaryHeap, HashMap};
 
 use super::shared::{EditedCurves, Repair, Swap};
 use super::spikes::drop_woven_spikes;
+use crate::ids::LocalPoint;
 use crate::kernel::metric::{dot_sign, length_order};
 use crate::kernel::Sign;
 use crate::reconstruct::curves::Adjacency;
@@ -424,7 +425,9 @@ impl<'v, 't> NeighbourNames<'v, 't> {
 
     /// The Delaunay neighbours of `p` along edges with a dual Voronoi edge.
     fn around(&self, p: u32) -> impl Iterator<Item = u32> + Clone + 'v {
-        self.vor.dual_neighbours_local(p)
+        self.vor
+            .dual_neighbours(LocalPoint::new(p))
+            .map(LocalPoint::get)
     }
 
     /// `[nearest, half]` neighbour of `p` among its Delaunay neighbours along edges with a
@@ -527,12 +530,17 @@ pub(crate) mod tests {
         let vor = tri.voronoi();
         let mut local: Vec<[u32; 2]> = edges
             .iter()
-            .map(|&[a, b]| edge(tri.local_index(a), tri.local_index(b)))
+            .map(|&[a, b]| edge(tri.local_index(a).get(), tri.local_index(b).get()))
             .collect();
         repair_detours(&vor, &local).apply(&mut local);
         let mut result: Vec<[u32; 2]> = local
             .iter()
-            .map(|&[a, b]| edge(tri.input_index(a), tri.input_index(b)))
+            .map(|&[a, b]| {
+                edge(
+                    tri.input_index(LocalPoint::new(a)),
+                    tri.input_index(LocalPoint::new(b)),
+                )
+            })
             .collect();
         result.sort_unstable();
         result

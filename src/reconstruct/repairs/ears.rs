@@ -36,6 +36,7 @@
 //! An **islet** ([`drop_islets`], first pass) is the same small loop standing alone in the
 //! noise band of a curve instead of hanging off it: dropped.
 
+use crate::ids::{LocalPoint, VertexId};
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
@@ -82,7 +83,8 @@ pub(crate) fn repair_ears(
     let mut ear_at: Vec<u32> = Vec::new();
     for &p in &pinches {
         let at_p: Vec<u32> = vor
-            .cell_local(p)
+            .cell_vertices(LocalPoint::new(p))
+            .map(VertexId::get)
             .filter(|&v| labels[v as usize] == Label::Inner)
             .map(|v| search.component(vor, labels, v))
             .collect();
@@ -168,14 +170,14 @@ pub(crate) fn drop_islets(
         // The inner side of its first edge: the islet's component when the loop encloses it
         // (a loop around an outer pocket of a large region has the large one there).
         let [a, b] = [points[0], points[1]];
-        let Some(e) = vor.delaunay_halfedge(a, b) else {
+        let Some(e) = vor.delaunay_halfedge(LocalPoint::new(a), LocalPoint::new(b)) else {
             continue;
         };
-        let twin = vor.triangulation().halfedges()[e as usize];
+        let twin = vor.triangulation().halfedges()[e.index()];
         let sides = [e, twin]
             .into_iter()
             .filter(|&h| h != NO_TWIN)
-            .map(|h| vor.vertex_of_halfedge(h));
+            .map(|h| vor.vertex_of_halfedge(h).get());
         let Some(inner) = sides
             .into_iter()
             .find(|&v| labels[v as usize] == Label::Inner)
@@ -284,9 +286,10 @@ impl Components {
         'search: while next < component.vertices.len() {
             let v = component.vertices[next];
             next += 1;
-            for edge in vor.vertex_edges_local(v) {
+            for edge in vor.face_edges(VertexId::new(v)) {
                 match edge.to {
-                    EdgeEnd::Vertex(u) if labels[u as usize] == Label::Inner => {
+                    EdgeEnd::Vertex(u) if labels[u.index()] == Label::Inner => {
+                        let u = u.get();
                         let known = self.of(u);
                         if known == UNKNOWN {
                             self.seen.insert(u, id);
@@ -297,7 +300,7 @@ impl Components {
                         }
                     }
                     _ => {
-                        let [a, b] = edge.sites;
+                        let [a, b] = edge.sites.map(LocalPoint::get);
                         component.boundary.push([a.min(b), a.max(b)]);
                         for q in [a, b] {
                             if !component.boundary_points.contains(&q) {
@@ -342,8 +345,10 @@ fn rejoining_vertex(
     p: u32,
 ) -> Option<u32> {
     // Around p; an open cell (a hull point) is closed by the root, outer and never relabelled.
-    let mut cell: Vec<u32> = vor.cell_local(p).collect();
-    if !vor.is_cell_bounded_local(p) {
+    let mut cell: Vec<u32> = (vor.cell_vertices(LocalPoint::new(p)))
+        .map(VertexId::get)
+        .collect();
+    if !vor.is_interior(LocalPoint::new(p)) {
         cell.push(ROOT);
     }
     let k = cell.len();
@@ -354,17 +359,17 @@ fn rejoining_vertex(
     let last = (first..first + k).find(|&i| !in_ear(at(i + 1)))?;
     let gap = |o: u32, beyond: u32| {
         let far_side_outer = || {
-            vor.vertex_edges_local(o).all(|edge| {
-                edge.sites.contains(&p)
+            vor.face_edges(VertexId::new(o)).all(|edge| {
+                edge.sites.contains(&LocalPoint::new(p))
                     || match edge.to {
                         EdgeEnd::Infinity => true,
-                        EdgeEnd::Vertex(u) => labels[u as usize] == Label::Outer,
+                        EdgeEnd::Vertex(u) => labels[u.index()] == Label::Outer,
                     }
             })
         };
         (o != ROOT
             && labels[o as usize] == Label::Outer
-            && vor.degree(o) == 3
+            && vor.degree(VertexId::new(o)) == 3
             && search.is_large_beside(labels, beyond, ear)
             && far_side_outer())
         .then_some(o)
@@ -373,7 +378,8 @@ fn rejoining_vertex(
     let after = gap(at(last + 1), at(last + 2));
     match (before, after) {
         (Some(a), Some(b)) => {
-            let order = compare_circumradius(vor.vertex_triangle(a), vor.vertex_triangle(b));
+            let triangle = |v: u32| vor.vertex_triangle(VertexId::new(v));
+            let order = compare_circumradius(triangle(a), triangle(b));
             Some(if order == Ordering::Greater { b } else { a })
         }
         (a, b) => a.or(b),
@@ -393,7 +399,10 @@ impl Change {
     /// The triangle `o` at `p` becomes inner: its two edges at `p` stop being crust, its far
     /// edge becomes crust.
     fn rejoin(&mut self, vor: &Voronoi<'_>, p: u32, o: u32) {
-        let others: Vec<u32> = vor.vertex_sites_local(o).filter(|&q| q != p).collect();
+        let others: Vec<u32> = (vor.face_corners(VertexId::new(o)))
+            .map(LocalPoint::get)
+            .filter(|&q| q != p)
+            .collect();
         let [x, y] = [others[0], others[1]];
         self.dropped
             .extend([[p.min(x), p.max(x)], [p.min(y), p.max(y)]]);

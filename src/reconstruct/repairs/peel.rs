@@ -5,6 +5,7 @@
 use super::ears::{repair_ears, Ears};
 use super::shared::{edges_near, lies_apart, median_length, segment_distance};
 use crate::delaunay::triangulate;
+use crate::ids::{HalfEdge, LocalPoint};
 use crate::reconstruct::curves::{assemble_named, Adjacency, Curve};
 use crate::reconstruct::extract::wdm_crust_edges;
 use crate::reconstruct::lengths::distance;
@@ -165,7 +166,8 @@ fn isolated_leftovers(full: &Voronoi<'_>, rest: &[u32]) -> Vec<u32> {
     let nearest: Vec<f64> = rest
         .iter()
         .map(|&p| {
-            full.delaunay_neighbours_local(p)
+            full.delaunay_neighbours(LocalPoint::new(p))
+                .map(LocalPoint::get)
                 .map(|q| distance(at(p), at(q)))
                 .fold(f64::INFINITY, f64::min)
         })
@@ -183,7 +185,10 @@ fn isolated_leftovers(full: &Voronoi<'_>, rest: &[u32]) -> Vec<u32> {
             let i = group[next];
             next += 1;
             let p = rest[i];
-            for q in full.delaunay_neighbours_local(p) {
+            for q in full
+                .delaunay_neighbours(LocalPoint::new(p))
+                .map(LocalPoint::get)
+            {
                 let Some(j) = slot(q) else {
                     continue;
                 };
@@ -229,7 +234,7 @@ fn later_pass(
         return nothing;
     }
     let vor = sub.voronoi();
-    let mut labels = wdm::labels_local(&vor, options.label_rule());
+    let mut labels = wdm::labels(&vor, options.label_rule());
     let mut crust = wdm_crust_edges(&vor, &labels);
     // Dropped, never rejoined: rejoining here too lost more holes than it kept (likely: the
     // rejoining edge is the pass's, not always a Delaunay edge of all the points, and the
@@ -239,14 +244,14 @@ fn later_pass(
     let (mut edges, chords): (Vec<[u32; 2]>, Vec<[u32; 2]>) = crust
         .iter()
         .map(|&[a, b]| {
-            let at = |p: u32| rest[sub.input_index(p) as usize];
+            let at = |p: u32| rest[sub.input_index(LocalPoint::new(p)) as usize];
             let (a, b) = (at(a), at(b));
             [a.min(b), a.max(b)]
         })
-        .partition(|&[a, b]| full.is_delaunay_edge(a, b));
+        .partition(|&[a, b]| full.is_delaunay_edge(LocalPoint::new(a), LocalPoint::new(b)));
     let mut chords: Vec<[u32; 2]> = chords
         .into_iter()
-        .filter(|&[a, b]| !crosses_a_curve(full, earlier, a, b))
+        .filter(|&[a, b]| !crosses_a_curve(full, earlier, LocalPoint::new(a), LocalPoint::new(b)))
         .collect();
     edges.sort_unstable();
     chords.sort_unstable();
@@ -357,17 +362,19 @@ fn turning_angle(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
 fn near_a_curve<'a>(full: &Voronoi<'_>, curve: impl Fn(u32) -> &'a [(u32, u32)], p: u32) -> bool {
     let points = &full.triangulation().points;
     let at = |i: u32| points[i as usize];
-    full.delaunay_neighbours_local(p).any(|q| {
-        // The sample spacing at q: its shortest curve edge (a long edge, where a curve
-        // bridges a gap, says nothing about how far its noise reaches).
-        let spacing = curve(q)
-            .iter()
-            .map(|&(_, r)| distance(at(q), at(r)))
-            .fold(f64::INFINITY, f64::min);
-        curve(q)
-            .iter()
-            .any(|&(_, r)| segment_distance(at(p), at(q), at(r)) < NEAR_CURVE * spacing)
-    })
+    full.delaunay_neighbours(LocalPoint::new(p))
+        .map(LocalPoint::get)
+        .any(|q| {
+            // The sample spacing at q: its shortest curve edge (a long edge, where a curve
+            // bridges a gap, says nothing about how far its noise reaches).
+            let spacing = curve(q)
+                .iter()
+                .map(|&(_, r)| distance(at(q), at(r)))
+                .fold(f64::INFINITY, f64::min);
+            curve(q)
+                .iter()
+                .any(|&(_, r)| segment_distance(at(p), at(q), at(r)) < NEAR_CURVE * spacing)
+        })
 }
 
 /// How peeling ended.
@@ -413,7 +420,9 @@ pub(crate) fn hole_edges(
             .zip(curve.points.iter().cycle().skip(1))
             .map(|(&a, &b)| [a.min(b), a.max(b)]);
         let is_hole = loop_edges.clone().all(|[a, b]| {
-            not_first_pass(&[a, b]) && vor.delaunay_halfedge(a, b).is_some_and(|e| vor.has_dual(e))
+            let (a, b) = (LocalPoint::new(a), LocalPoint::new(b));
+            not_first_pass(&[a.get(), b.get()])
+                && vor.delaunay_halfedge(a, b).is_some_and(|e| vor.has_dual(e))
         });
         if is_hole {
             holes.extend(loop_edges);
@@ -430,10 +439,10 @@ pub(crate) fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> 
     // Crust neighbours of every point (two for most): a lookup touches one short row
     // instead of a binary search over all edges.
     let crust = Adjacency::new(tri.points.len(), edges);
-    let is_crust = |e: u32| {
-        let b = tri.dest(e as usize);
+    let is_crust = |e: HalfEdge| {
+        let b = tri.dest(e).get();
         crust
-            .neighbours(tri.org(e as usize))
+            .neighbours(tri.org(e).get())
             .iter()
             .any(|&(_, q)| q == b)
     };

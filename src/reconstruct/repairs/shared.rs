@@ -5,6 +5,7 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
+use crate::ids::LocalPoint;
 use crate::reconstruct::bits::Bits;
 use crate::reconstruct::curves::{Adjacency, SomeAdjacency};
 use crate::reconstruct::lengths::distance;
@@ -28,7 +29,10 @@ pub(crate) fn degrees(point_count: usize, edges: &[[u32; 2]]) -> Vec<u8> {
 pub(crate) fn edges_near(full: &Voronoi<'_>, points: &[u32], edges: &[[u32; 2]]) -> SomeAdjacency {
     let mut asked = Bits::new(full.triangulation().points.len());
     for &p in points {
-        for q in full.delaunay_neighbours_local(p) {
+        for q in full
+            .delaunay_neighbours(LocalPoint::new(p))
+            .map(LocalPoint::get)
+        {
             asked.set(q as usize);
         }
     }
@@ -57,7 +61,8 @@ pub(crate) fn lies_apart<'a>(
     let points = &full.triangulation().points;
     let at = |i: u32| points[i as usize];
     curve.iter().all(|&p| {
-        full.delaunay_neighbours_local(p)
+        full.delaunay_neighbours(LocalPoint::new(p))
+            .map(LocalPoint::get)
             .filter(|&q| counts(q))
             .all(|q| {
                 earlier(q)

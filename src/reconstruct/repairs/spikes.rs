@@ -40,6 +40,7 @@
 //! degrees of `a` and `b` (2) and takes the spike's points from 2 to 0, like a swap.
 
 use super::shared::{EditedCurves, Swap};
+use crate::ids::LocalPoint;
 use crate::kernel::{orient, Sign};
 use crate::reconstruct::thresholds::spikes::{
     GLOBAL_CONTRAST, LOCAL_CONTRAST, MEDIAN_SAMPLE, MIN_SPIKE_TURN, PAIR_FACTOR,
@@ -71,7 +72,11 @@ pub(crate) fn drop_woven_spikes(
             let Some(found) = spike_candidate(points, curves, spike) else {
                 continue;
             };
-            if !vor.dual_neighbours_local(found.a).any(|q| q == found.b) {
+            if !vor
+                .dual_neighbours(LocalPoint::new(found.a))
+                .map(LocalPoint::get)
+                .any(|q| q == found.b)
+            {
                 continue;
             }
             let median = *median.get_or_insert_with(|| median_turn(points, curves));
@@ -255,7 +260,7 @@ mod tests {
         let vor = tri.voronoi();
         let local: Vec<[u32; 2]> = edges
             .iter()
-            .map(|&[a, b]| edge(tri.local_index(a), tri.local_index(b)))
+            .map(|&[a, b]| edge(tri.local_index(a).get(), tri.local_index(b).get()))
             .collect();
         let mut curves = EditedCurves::new(points.len(), &local);
         drop_woven_spikes(&vor, &mut curves, &mut None);
@@ -263,7 +268,12 @@ mod tests {
         let caller = |edges: Vec<[u32; 2]>| {
             let mut edges: Vec<[u32; 2]> = edges
                 .into_iter()
-                .map(|[a, b]| edge(tri.input_index(a), tri.input_index(b)))
+                .map(|[a, b]| {
+                    edge(
+                        tri.input_index(LocalPoint::new(a)),
+                        tri.input_index(LocalPoint::new(b)),
+                    )
+                })
                 .collect();
             edges.sort_unstable();
             edges

@@ -14,6 +14,7 @@
 //! cavity is star-shaped from `w`, every new triangle has an empty open circumdisk) applies.
 
 use crate::delaunay::{Triangulation, NO_TWIN};
+use crate::ids::LocalPoint;
 use crate::kernel::Sign;
 
 use crate::kernel::mixed::MixedPoints;
@@ -55,17 +56,21 @@ impl<'p, 'a> Dt<'p, 'a> {
     pub(crate) fn new(tri: &Triangulation, pts: &'p MixedPoints<'a>, vertex_count: usize) -> Self {
         let solid = tri.triangle_count();
         let halfedges = tri.halfedges();
-        let mut v: Vec<[u32; 3]> = tri.triangles.clone();
+        let mut v: Vec<[u32; 3]> = tri
+            .triangles
+            .iter()
+            .map(|t| t.map(LocalPoint::get))
+            .collect();
         let mut nb = vec![[NONE; 3]; solid];
         // Ghost of the hull edge starting at each hull vertex.
         let mut ghost_from = vec![NONE; tri.points.len()];
-        for (e, &twin) in halfedges.iter().enumerate() {
-            let (t, j) = (e / 3, e % 3);
+        for (e, &twin) in tri.halfedge_ids().zip(halfedges) {
+            let (t, j) = (e.triangle().index(), e.corner());
             let k = (j + 2) % 3; // corner opposite half-edge e = (v[j], v[j+1])
             if twin != NO_TWIN {
-                nb[t][k] = twin / 3;
+                nb[t][k] = twin.triangle().get();
             } else {
-                let (x, y) = (tri.org(e), tri.dest(e));
+                let (x, y) = (tri.org(e).get(), tri.dest(e).get());
                 let g = v.len() as u32;
                 v.push([y, x, GHOST]);
                 nb.push([NONE, NONE, t as u32]);

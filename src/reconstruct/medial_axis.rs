@@ -217,7 +217,7 @@ use crate::voronoi::{rounded_circumcenter, smallest_corner, Voronoi};
 const CLEAN: f32 = -1.0;
 
 /// The `slack` of a noisy ball whose samples spread wide for it ([`SPREAD_SIGNIFICANCE`]):
-/// a ball of the shape, never covered.
+/// a ball of the shape, which stays as a leaf without being tested (`pruning::prune`'s `stays`).
 const SPREAD: f32 = f32::INFINITY;
 
 /// The pruned medial axis of the closed curves among `curves` (local indices of the
@@ -699,6 +699,7 @@ impl Graph {
             ball.len(),
             edges,
             |u| ball[u as usize].beyond(),
+            |u| ball[u as usize].slack == SPREAD,
             |w, u| covers(&ball[w as usize], &ball[u as usize], scale),
             |w| prefetch(&ball, w as usize),
         );
@@ -713,9 +714,6 @@ impl Graph {
 /// `B_w` is at least [`NOISE_RADIUS_RATIO`] times larger and `B_u` sticks out of it by
 /// no more than `u`'s noise slack. `scale`: `s` for noisy leaves, then for clean ones.
 fn covers(w: &Ball, u: &Ball, scale: [f64; 2]) -> bool {
-    if u.slack == SPREAD {
-        return false;
-    }
     let (apart, gain) = (distance(u.centre, w.centre), w.radius - u.radius);
     if u.slack < 0.0 {
         return apart <= scale[1] * gain;

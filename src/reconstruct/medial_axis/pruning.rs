@@ -11,14 +11,16 @@ use crate::prefetch::prefetch;
 use crate::reconstruct::bits::Bits;
 
 /// Takes leaves off the graph of `vertices` vertices and `edges`, smallest number first,
-/// and returns what remains. A leaf `u` goes when `beyond(u)`, or when `covers(w, u)` for a
-/// vertex `w` of its neighbourhood ([`Tree::neighbourhood_test`]); the last edge of a
-/// component stays; a leaf whose test fails is tested again when its branch grows.
+/// and returns what remains. A leaf `u` goes when `beyond(u)`, or, unless `stays(u)`, when
+/// `covers(w, u)` for a vertex `w` of its neighbourhood ([`Tree::neighbourhood_test`]); the
+/// last edge of a component stays; a leaf whose test fails is tested again when its branch
+/// grows (one that stays is not: nothing can change its answer).
 /// `fetch(w)` asks for what `covers(w, _)` will read of `w` ([`Lookahead`]).
 pub(super) fn prune(
     vertices: usize,
     edges: Vec<[u32; 2]>,
     beyond: impl Fn(u32) -> bool,
+    stays: impl Fn(u32) -> bool,
     covers: impl Fn(u32, u32) -> bool,
     fetch: impl Fn(u32),
 ) -> Tree {
@@ -47,6 +49,9 @@ pub(super) fn prune(
             continue;
         }
         if !beyond(u) {
+            if stays(u) {
+                continue;
+            }
             match tree.neighbourhood_test(u, &mut queue, |w| covers(w, u)) {
                 Test::Covered => {}
                 Test::Uncovered { junction } => {

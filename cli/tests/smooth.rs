@@ -414,7 +414,7 @@ fn the_command_line_writes_the_fitted_coordinates() {
 #[test]
 fn the_smoothed_axis_is_that_of_the_fitted_curves() {
     let mut rng = Rng::new(31);
-    let sigma = 0.01;
+    let sigma = 0.007;
     let points: Vec<[f64; 2]> = (0..600)
         .map(|i| {
             let t = i as f64 / 600.0 * std::f64::consts::TAU;

@@ -472,7 +472,7 @@ fn axis_of_fitted(
         return None;
     }
     let at = |p: u32| moved[p as usize].unwrap_or(tri.points[p as usize]);
-    fitted_medial_axis(curves, at, frame)
+    fitted_medial_axis(curves, at, |p| tri.points[p as usize], frame)
 }
 
 /// The reconstruction of a dense band through its `representatives` (local indices of

@@ -19,7 +19,7 @@ use super::wdm::{self, Label, LabelRule};
 use super::{crust, nn_crust};
 use crate::delaunay::Triangulation;
 use crate::error::Error;
-use crate::ids::{typed_edges, untyped_edges, LocalPoint};
+use crate::ids::LocalPoint;
 use crate::voronoi::Voronoi;
 
 /// WDM_CRUST and WDM_MAT of `points` with the default [`Options`].
@@ -207,14 +207,14 @@ fn baseline(tri: &Triangulation, options: &Options, lap: &mut dyn FnMut(Phase)) 
     let edges = if tri.is_degenerate() {
         chain_edges(tri)
     } else if options.algorithm() == Algorithm::Crust {
-        untyped_edges(crust::edges_of(tri))
+        crust::edges_of(tri)
     } else {
-        untyped_edges(nn_crust::edges_of(tri))
+        nn_crust::edges_of(tri)
     };
     lap(Phase::Extract);
     let curves = assemble(tri, &edges);
-    let unassigned = untouched_points(tri, edges.iter().map(|e| e.map(LocalPoint::new)));
-    let edges = tri.to_input_edges(typed_edges(edges));
+    let unassigned = untouched_points(tri, edges.iter().copied());
+    let edges = tri.to_input_edges(edges);
     lap(Phase::Curves);
     Outcome {
         labels: Vec::new(),
@@ -250,7 +250,7 @@ struct WdmRun<'t> {
     vor: Voronoi<'t>,
     labels: Vec<Label>,
     /// The edges so far: the first pass's, then the repairs' and peeling's changes.
-    edges: Vec<[u32; 2]>,
+    edges: Vec<[LocalPoint; 2]>,
     /// What the detour repair changed.
     repair: Repair,
     /// How many edges there were after the repairs: those after them are peeling's.
@@ -261,10 +261,10 @@ struct WdmRun<'t> {
 /// The curves of a WDM run in local indices (until the axis has read them), its unassigned
 /// points, and for the raw axis the edges of the later passes and those of the holes.
 struct Assembly {
-    curves: Vec<curves::Curve>,
+    curves: Vec<curves::LocalCurve>,
     unassigned: Vec<u32>,
-    later_pass: Vec<[u32; 2]>,
-    holes: Vec<[u32; 2]>,
+    later_pass: Vec<[LocalPoint; 2]>,
+    holes: Vec<[LocalPoint; 2]>,
 }
 
 impl<'t> WdmRun<'t> {
@@ -353,16 +353,16 @@ impl<'t> WdmRun<'t> {
         lap(Phase::OpenCurves);
         // In local indices until the axis has read them (see `assemble_unnamed`).
         let curves = curves::assemble_unnamed(tri.points.len(), &edges, &tri.points, |p| {
-            tri.input_index(LocalPoint::new(p))
+            tri.input_index(p)
         });
-        let unassigned = untouched_points(tri, edges.iter().map(|e| e.map(LocalPoint::new)));
+        let unassigned = untouched_points(tri, edges.iter().copied());
         let holes = if holes_possible {
             // The edges are distinct: those of the first pass the repair kept, then the
             // later ones. So a final edge is none of the first pass's exactly when it is a
             // later one that the repair had not taken out of the first pass (a later pass
             // may draw again an edge between points a swap left off the curves).
             let removed = &self.repair.removed;
-            let not_first_pass = |e: &[u32; 2]| {
+            let not_first_pass = |e: &[LocalPoint; 2]| {
                 later_pass.binary_search(e).is_ok() && removed.binary_search(e).is_err()
             };
             hole_edges(&self.vor, &curves, not_first_pass)
@@ -384,7 +384,7 @@ impl<'t> WdmRun<'t> {
     /// edges read off them.
     fn axis(self, assembly: Assembly, options: &Options, frame: Frame) -> Outcome {
         let Assembly {
-            mut curves,
+            curves,
             unassigned,
             later_pass,
             holes,
@@ -420,9 +420,10 @@ impl<'t> WdmRun<'t> {
                 medial_axis(&vor, &combined, &later_pass, frame)
             }
         };
-        for p in curves.iter_mut().flat_map(|c| c.points.iter_mut()) {
-            *p = tri.input_index(LocalPoint::new(*p));
-        }
+        let curves: Vec<curves::Curve> = curves
+            .into_iter()
+            .map(|c| c.named(|p| tri.input_index(p)))
+            .collect();
         let edges = curves::edges_of(&curves);
         Outcome {
             labels,
@@ -444,13 +445,13 @@ fn thinned(
     points: &[[f64; 2]],
     mut tri: Triangulation,
     frame: Frame,
-    representatives: &[u32],
+    representatives: &[LocalPoint],
     options: &Options,
     on_phase: &mut dyn FnMut(Phase, std::time::Duration),
 ) -> Result<Reconstruction, Error> {
     let mut ids: Vec<u32> = representatives
         .iter()
-        .map(|&p| tri.input_index(LocalPoint::new(p)))
+        .map(|&p| tri.input_index(p))
         .collect();
     ids.sort_unstable();
     let chosen: Vec<[f64; 2]> = ids.iter().map(|&i| points[i as usize]).collect();
@@ -522,11 +523,11 @@ fn smoothing(
     if !options.smoothing() {
         return None;
     }
-    let local: Vec<curves::Curve> = curves
+    let local: Vec<curves::LocalCurve> = curves
         .iter()
-        .map(|c| curves::Curve {
+        .map(|c| curves::LocalCurve {
             closed: c.closed,
-            points: c.points.iter().map(|&i| tri.local_index(i).get()).collect(),
+            points: c.points.iter().map(|&i| tri.local_index(i)).collect(),
         })
         .collect();
     Some(smooth::fitted_positions(tri, &local))
@@ -534,10 +535,8 @@ fn smoothing(
 
 /// The curves of distinct local `edges`, in caller indices (see
 /// [`curves::assemble_named`]).
-fn assemble(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<curves::Curve> {
-    curves::assemble_named(tri.points.len(), edges, &tri.points, |p| {
-        tri.input_index(LocalPoint::new(p))
-    })
+fn assemble(tri: &Triangulation, edges: &[[LocalPoint; 2]]) -> Vec<curves::Curve> {
+    curves::assemble_named(tri.points.len(), edges, &tri.points, |p| tri.input_index(p))
 }
 
 #[cfg(test)]
@@ -650,11 +649,7 @@ mod tests {
                 ears_repaired += usize::from(repaired > 0);
                 assert_eq!(rec.labels(), &labels[..], "round {round}");
                 let first_pass = public_crust_edges(&vor, &labels);
-                assert_eq!(
-                    tri.to_input_edges(typed_edges(local)),
-                    first_pass,
-                    "round {round}"
-                );
+                assert_eq!(tri.to_input_edges(local), first_pass, "round {round}");
                 let delaunay: BTreeSet<[u32; 2]> = tri
                     .halfedge_ids()
                     .map(|e| {

@@ -40,8 +40,9 @@ impl LocalCurve {
     }
 }
 
-/// A point index of either space an [`Adjacency`] is built over: the triangulation's local
-/// points ([`LocalPoint`]) or the caller's (`u32`, for [`irregular_points`]).
+/// The point space an [`Adjacency`] is built over: the triangulation's local points
+/// ([`LocalPoint`]), or a plain `u32` numbering (the caller's indices for
+/// [`irregular_points`], the detour repair's positions among its candidates).
 pub(crate) trait Point: Copy + Ord + From<u32> + Into<u32> + Send + Sync {}
 
 impl Point for u32 {}

@@ -60,9 +60,8 @@ impl Point for LocalPoint {}
 /// towards its smaller neighbour, reversed if that runs clockwise. That is the order in
 /// which scanning the names upwards finds them.
 ///
-/// The walks run over the edges' own indices: in the pipeline those are the
-/// triangulation's local ones, so they stay local in memory while the result is in the
-/// caller's indices.
+/// The walks run over the triangulation's local points, so they stay local in memory while
+/// the result is in the caller's indices.
 pub(crate) fn assemble_named(
     point_count: usize,
     edges: &[[LocalPoint; 2]],
@@ -73,7 +72,7 @@ pub(crate) fn assemble_named(
     curves.into_iter().map(|c| c.named(&name)).collect()
 }
 
-/// [`assemble_named`] with the points left in the edges' indices: the same curves in the
+/// [`assemble_named`] with the points left local ([`LocalCurve`]): the same curves in the
 /// same order, each point to be named still. (The pipeline reads the loops in the
 /// triangulation's local indices first, which follow the points' locality, and names them
 /// afterwards: looking the local index of every point up from the caller's, shuffled,

@@ -406,3 +406,62 @@ fn the_command_line_writes_the_fitted_coordinates() {
     let i = first["points"][0].as_u64().unwrap() as usize;
     assert_eq!(first["coords"][0][0].as_f64().unwrap(), points[i][0]);
 }
+
+/// With smoothing, the pruned medial axis is that of the fitted curves the result returns:
+/// every axis vertex is a Voronoi vertex of the fitted curve vertices (its nearest fitted
+/// vertices, two or more, are equally far, up to the circumcentre's rounding), not of the
+/// noisy samples. Without smoothing the same holds of the samples on the curve.
+#[test]
+fn the_smoothed_axis_is_that_of_the_fitted_curves() {
+    let mut rng = Rng::new(31);
+    let sigma = 0.01;
+    let points: Vec<[f64; 2]> = (0..600)
+        .map(|i| {
+            let t = i as f64 / 600.0 * std::f64::consts::TAU;
+            [
+                2.0 * t.cos() + sigma * rng.normal(),
+                t.sin() + sigma * rng.normal(),
+            ]
+        })
+        .collect();
+    // The two nearest distances from `v` to `sites`.
+    let nearest_two = |v: [f64; 2], sites: &[[f64; 2]]| {
+        let (mut d1, mut d2) = (f64::INFINITY, f64::INFINITY);
+        for s in sites {
+            let d = (s[0] - v[0]).hypot(s[1] - v[1]);
+            if d < d1 {
+                (d1, d2) = (d, d1);
+            } else if d < d2 {
+                d2 = d;
+            }
+        }
+        (d1, d2)
+    };
+    let equidistant = |rec: &Reconstruction, sites: &[[f64; 2]]| {
+        let axis = rec.medial_axis();
+        assert!(!axis.edges.is_empty(), "no axis");
+        axis.vertices.iter().all(|&v| {
+            let (d1, d2) = nearest_two(v, sites);
+            d2 - d1 <= 1e-9 * d1.max(1.0)
+        })
+    };
+    let plain = reconstruct_with(&points, &Options::new()).unwrap();
+    assert_eq!(plain.curves().len(), 1);
+    let samples = plain.curve_coords(&plain.curves()[0]);
+    assert!(
+        equidistant(&plain, &samples),
+        "the plain axis is not the samples'"
+    );
+    let rec = smoothed(&points);
+    assert_eq!(rec.curves().len(), 1);
+    let fitted = rec.curve_coords(&rec.curves()[0]);
+    assert_ne!(fitted, samples);
+    assert!(
+        equidistant(&rec, &fitted),
+        "the smoothed axis is not the fitted curve's"
+    );
+    assert!(
+        !equidistant(&rec, &samples),
+        "the smoothed axis is still the samples'"
+    );
+}

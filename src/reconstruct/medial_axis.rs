@@ -280,16 +280,47 @@ pub(super) fn pruned_medial_axis(
 fn subset_axis(vor: Voronoi<'_>, loops: &[&LocalCurve], frame: Frame) -> MedialAxis {
     let tri = vor.triangulation();
     drop(vor);
+    // The subset is a selection of already validated distinct points: `axis_through`
+    // cannot refuse it.
+    axis_through(loops, |p| tri.points[p.index()], frame).unwrap_or_default()
+}
+
+/// The pruned medial axis of the closed curves among `curves` (local indices of the
+/// reconstruction) drawn through the positions `at` gives their points instead of the
+/// samples: with smoothing, the axis of the fitted curves the result returns. `None` when
+/// those positions draw no plane region (two coincide, one is not finite, or a loop edge
+/// runs through another loop point): the caller then takes the axis of the samples.
+pub(super) fn fitted_medial_axis(
+    curves: &[LocalCurve],
+    at: impl Fn(LocalPoint) -> [f64; 2],
+    frame: Frame,
+) -> Option<MedialAxis> {
+    let loops: Vec<&LocalCurve> = curves.iter().filter(|c| c.closed).collect();
+    if loops.is_empty() {
+        return Some(MedialAxis::default());
+    }
+    axis_through(&loops, at, frame)
+}
+
+/// The pruned axis of `loops` on a triangulation of the positions `at` gives their points,
+/// every loop's point a site of its own. `None` when the positions are not distinct finite
+/// points, all collinear, or the loops' edges through them no plane drawing (an edge
+/// through another loop point).
+fn axis_through(
+    loops: &[&LocalCurve],
+    at: impl Fn(LocalPoint) -> [f64; 2],
+    frame: Frame,
+) -> Option<MedialAxis> {
     let points: Vec<[f64; 2]> = loops
         .iter()
-        .flat_map(|c| c.points.iter().map(|&p| tri.points[p.index()]))
+        .flat_map(|c| c.points.iter().map(|&p| at(p)))
         .collect();
-    // The subset is a selection of already validated distinct points: this cannot fail.
-    let Ok(sub) = triangulate(&points) else {
-        return MedialAxis::default();
-    };
+    let sub = triangulate(&points).ok()?;
+    if !sub.duplicates().is_empty() {
+        return None;
+    }
     if sub.is_degenerate() {
-        return MedialAxis::default();
+        return None;
     }
     // The subset's caller indices are positions in `points`, which lists the loops one
     // after the other: the loops in the subset's local indices.
@@ -314,13 +345,13 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&LocalCurve], frame: Frame) -> MedialA
         if marks.unresolved {
             // A loop edge through another sample point: these are no curves of a plane
             // drawing, and they bound no region to take an axis of.
-            return MedialAxis::default();
+            return None;
         }
         let inside = marks.inside_faces(&vor);
         drop(edges);
         Graph::inside_edges(&vor, inside, &marks, &noise, None, frame)
     };
-    axis.pruned()
+    Some(axis.pruned())
 }
 
 /// The noise amplitude ([`noise::loop_estimates`]) at every point of `loops` (local

@@ -366,9 +366,10 @@ impl Options {
     /// through a band of samples several spacings wide: the fitted curve lies much closer to
     /// the true one than the samples do. Corners stay sharp, clean samples stay where they
     /// are (within a small fraction of their spacing), and the curves stay simple (no
-    /// segment crosses another, decided exactly). The curves' points, the edges, the
-    /// unassigned points and the medial axis are those of the unsmoothed curves
-    /// (docs/design/smoothing.md).
+    /// segment crosses another, decided exactly). The curves' points, the edges and the
+    /// unassigned points are those of the unsmoothed curves; the pruned medial axis is that
+    /// of the fitted closed curves (the raw axis stays the samples', it is the paper's
+    /// WDM_MAT) (docs/design/smoothing.md).
     ///
     /// ```
     /// use wdm_crust::reconstruct::{reconstruct_with, Options};

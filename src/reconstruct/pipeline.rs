@@ -4,7 +4,7 @@ use super::curves;
 use super::curves::chain_edges;
 use super::extract::{medial_axis, wdm_crust_edges};
 use super::frame::Frame;
-use super::medial_axis::pruned_medial_axis;
+use super::medial_axis::{fitted_medial_axis, pruned_medial_axis};
 use super::open_curves;
 use super::options::{Algorithm, MedialAxisMode, Options};
 use super::repairs::corridors::repair_corridors;
@@ -157,21 +157,21 @@ pub fn reconstruct_observed(
             return thinned(points, triangulation, frame, &local, options, on_phase);
         }
     }
-    let (outcome, fitted) = if options.algorithm() == Algorithm::Wdm {
-        let outcome = wdm_crust(&triangulation, frame, options, &mut lap);
-        // The last stage, on the final curves; the axis is that of the unsmoothed curves.
-        let fitted = smoothing(&triangulation, &outcome.curves, options);
-        (outcome, fitted)
+    let mut outcome = if options.algorithm() == Algorithm::Wdm {
+        wdm_crust(&triangulation, frame, options, &mut lap)
     } else {
-        let outcome = baseline(&triangulation, options, &mut lap);
-        let fitted = smoothing(&triangulation, &outcome.curves, options);
-        (outcome, fitted)
+        let mut outcome = baseline(&triangulation, options, &mut lap);
+        outcome.fitted = smoothing(&triangulation, &outcome.curves, options);
+        if options.smoothing() {
+            lap(Phase::Smooth);
+        }
+        outcome
     };
     frame.restore(&mut triangulation, points);
-    let fitted = fitted.map(|moved| frame.fitted_to_caller(&triangulation, moved));
-    if options.smoothing() {
-        lap(Phase::Smooth);
-    }
+    let fitted = outcome
+        .fitted
+        .take()
+        .map(|moved| frame.fitted_to_caller(&triangulation, moved));
     Ok(Reconstruction {
         algorithm: options.algorithm(),
         triangulation,
@@ -199,6 +199,9 @@ struct Outcome {
     medial_axis: MedialAxis,
     unassigned: Vec<u32>,
     peeling: Peeling,
+    /// With smoothing: the fitted positions by local index, in the frame (see
+    /// [`smooth::fitted_positions`]).
+    fitted: Option<Vec<Option<[f64; 2]>>>,
 }
 
 /// A baseline (crust, NN-crust): its edges assembled into curves; one pass, no labels, no
@@ -223,6 +226,7 @@ fn baseline(tri: &Triangulation, options: &Options, lap: &mut dyn FnMut(Phase)) 
         medial_axis: MedialAxis::default(),
         unassigned,
         peeling: Peeling::done(0),
+        fitted: None,
     }
 }
 
@@ -239,7 +243,14 @@ fn wdm_crust(
     lap(Phase::Peel);
     let assembly = run.assembly(options, lap);
     lap(Phase::Curves);
-    let outcome = run.axis(assembly, options, frame);
+    // Before the axis, which is then that of the fitted curves.
+    let fitted = options
+        .smoothing()
+        .then(|| smooth::fitted_positions(tri, &assembly.curves));
+    if fitted.is_some() {
+        lap(Phase::Smooth);
+    }
+    let outcome = run.axis(assembly, options, frame, fitted);
     lap(Phase::MedialAxis);
     outcome
 }
@@ -380,9 +391,16 @@ impl<'t> WdmRun<'t> {
         }
     }
 
-    /// The medial axis of the run's mode; then the curves in the caller's indices and the
-    /// edges read off them.
-    fn axis(self, assembly: Assembly, options: &Options, frame: Frame) -> Outcome {
+    /// The medial axis of the run's mode (the pruned one of the `fitted` curves where
+    /// smoothing moved a loop); then the curves in the caller's indices and the edges read
+    /// off them.
+    fn axis(
+        self,
+        assembly: Assembly,
+        options: &Options,
+        frame: Frame,
+        fitted: Option<Vec<Option<[f64; 2]>>>,
+    ) -> Outcome {
         let Assembly {
             curves,
             unassigned,
@@ -398,7 +416,10 @@ impl<'t> WdmRun<'t> {
         } = self;
         let medial_axis = match options.medial_axis() {
             MedialAxisMode::Omitted => MedialAxis::default(),
-            MedialAxisMode::Pruned => pruned_medial_axis(vor, &curves, frame),
+            MedialAxisMode::Pruned => fitted
+                .as_deref()
+                .and_then(|moved| axis_of_fitted(tri, &curves, moved, frame))
+                .unwrap_or_else(|| pruned_medial_axis(vor, &curves, frame)),
             MedialAxisMode::Raw if holes.is_empty() => {
                 medial_axis(&vor, &labels, &later_pass, frame)
             }
@@ -432,8 +453,27 @@ impl<'t> WdmRun<'t> {
             medial_axis,
             unassigned,
             peeling,
+            fitted,
         }
     }
+}
+
+/// The pruned medial axis of the closed `curves` (local indices of `tri`) at their `moved`
+/// positions ([`smooth::fitted_positions`]); `None` when smoothing moved no point of a
+/// loop (the axis of the samples is then that of the curves returned) or when the fitted
+/// loops draw no region (see [`fitted_medial_axis`]).
+fn axis_of_fitted(
+    tri: &Triangulation,
+    curves: &[curves::LocalCurve],
+    moved: &[Option<[f64; 2]>],
+    frame: Frame,
+) -> Option<MedialAxis> {
+    let mut on_loops = curves.iter().filter(|c| c.closed).flat_map(|c| &c.points);
+    if on_loops.all(|&p| moved[p.index()].is_none()) {
+        return None;
+    }
+    let at = |p: LocalPoint| moved[p.index()].unwrap_or(tri.points[p.index()]);
+    fitted_medial_axis(curves, at, frame)
 }
 
 /// The reconstruction of a dense band through its `representatives` (local indices of
@@ -491,6 +531,15 @@ fn thinned(
         })
         .collect();
     let fitted = smoothing(&tri, &curves, options);
+    // With smoothing, the axis of the fitted curves (fitted to all the samples) instead of
+    // the representatives' loops.
+    let fitted_axis = match &fitted {
+        Some(moved) if options.medial_axis() == MedialAxisMode::Pruned => {
+            axis_of_fitted(&tri, &local_curves(&tri, &curves), moved, frame)
+        }
+        _ => None,
+    };
+    let medial_axis = fitted_axis.unwrap_or(inner.medial_axis);
     frame.restore(&mut tri, points);
     let fitted = fitted.map(|moved| frame.fitted_to_caller(&tri, moved));
     on_phase(Phase::Curves, clock.elapsed());
@@ -502,7 +551,7 @@ fn thinned(
         labels: Vec::new(),
         edges,
         curves,
-        medial_axis: inner.medial_axis,
+        medial_axis,
         medial_axis_mode: Some(options.medial_axis()),
         unassigned,
         passes: inner.passes,
@@ -523,14 +572,18 @@ fn smoothing(
     if !options.smoothing() {
         return None;
     }
-    let local: Vec<curves::LocalCurve> = curves
+    Some(smooth::fitted_positions(tri, &local_curves(tri, curves)))
+}
+
+/// `curves` (caller indices) in the local indices of `tri`.
+fn local_curves(tri: &Triangulation, curves: &[curves::Curve]) -> Vec<curves::LocalCurve> {
+    curves
         .iter()
         .map(|c| curves::LocalCurve {
             closed: c.closed,
             points: c.points.iter().map(|&i| tri.local_index(i)).collect(),
         })
-        .collect();
-    Some(smooth::fitted_positions(tri, &local))
+        .collect()
 }
 
 /// The curves of distinct local `edges`, in caller indices (see

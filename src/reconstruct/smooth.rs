@@ -1,6 +1,6 @@
 //! Smoothing (on demand, [`Options::with_smoothing`](super::Options::with_smoothing)):
 //! every curve vertex placed on a local fit of the samples around it, the last stage, on the
-//! assembled curves (the medial axis is that of the unsmoothed curves). The design note is
+//! assembled curves (the pruned medial axis is then taken of the fitted curves). The design note is
 //! `docs/design/smoothing.md`; every tolerance below is a named constant with its argument.
 //!
 //! # Which curves

@@ -62,7 +62,8 @@ pub(crate) mod peel {
     /// `reconstruct/repairs/ears.rs`.
     pub(crate) const MIN_LOOP_POINTS: usize = 7;
 
-    /// How far, in its own sample spacings, a loop closed by a chord (`peel::close_by_chord`) must
+    /// How far, in its own sample spacings, a loop closed by chords (`peel::loops_by_chords`,
+    /// `peel::close_by_chord`) must
     /// keep from the curves found before: two curves of an ε-sample (ε < 1) lie at least twice the
     /// local feature size apart, and a sample spacing is at most ε times it, so a loop closer than
     /// 2 of its spacings to an earlier curve is no separate curve of the sample (see

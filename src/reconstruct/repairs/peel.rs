@@ -27,8 +27,8 @@ use crate::voronoi::Voronoi;
 /// * only edges of the full Delaunay triangulation: a nested curve's edges are Delaunay
 ///   edges of all the points (they never cross an earlier curve), whereas the leftovers of
 ///   a noisy band would otherwise be joined by long chords across the curve already found.
-///   One exception: a chord that crosses no earlier curve (decided exactly) may close an
-///   open chain into a loop that lies apart from the earlier curves ([`close_by_chord`]);
+///   One exception: chords that cross no earlier curve (decided exactly) may close a loop
+///   that lies apart from the earlier curves ([`loops_by_chords`], [`close_by_chord`]);
 /// * only pieces that read as sampled curves ([`is_a_curve`]): sampled no more than
 ///   [`SPARSER_LOOP`] times as sparsely as the curves before, loops of at least
 ///   [`MIN_LOOP_POINTS`] points, smooth open chains only when long: short and zigzag
@@ -88,10 +88,12 @@ pub(crate) fn peel(
         }
         budget -= rest.len();
         let scale = median_length(points, edges);
-        let pass = later_pass(full, &curve, &rest, options);
+        let mut pass = later_pass(full, &curve, &rest, options);
+        let chord_loops = loops_by_chords(full, &curve, &mut pass);
         let found = Adjacency::new(n, &pass.edges);
         let mut new_curves = Vec::new();
-        for mut piece in assemble_unnamed(n, &pass.edges, points, LocalPoint::get) {
+        let pieces = assemble_unnamed(n, &pass.edges, points, LocalPoint::get);
+        for mut piece in chord_loops.into_iter().chain(pieces) {
             close_by_chord(full, &curve, &found, &pass.chords, &mut piece);
             if is_a_curve(points, &piece, scale) {
                 new_curves.extend(piece_edges(&piece));
@@ -101,7 +103,7 @@ pub(crate) fn peel(
                 }
             }
         }
-        if pass.edges.is_empty() {
+        if pass.edges.is_empty() && new_curves.is_empty() {
             return Peeling::done(extra);
         }
         // A pass that found only noise still made progress: its points are spent, and what
@@ -298,6 +300,59 @@ fn close_by_chord(
     ) {
         piece.closed = false;
     }
+}
+
+/// Takes out of `pass` the loops it drew across pockets of noise: the cycles of its edges
+/// and chords together that use at least one chord and lie apart from the curves found
+/// before (`earlier`, see [`lies_apart`]). Their edges and chords leave `pass`; the loops
+/// are returned, each starting at its smallest point.
+///
+/// Why: [`close_by_chord`] closes a chain whose two ends one chord joins, but at heavy noise
+/// (about one sample spacing) the pass bridges two or more such pockets around a hole, and
+/// the Delaunay rule cuts its loop into chains that each read as noise. Every chord crosses
+/// no earlier curve (decided exactly), and the pass's edges and chords are edges of one
+/// triangulation, so they cross no other curve either: the loop is a curve of a plane
+/// drawing. The separation test keeps chains of a noise band's leftovers near a curve
+/// from being closed this way.
+fn loops_by_chords(
+    full: &Voronoi<'_>,
+    earlier: &Adjacency,
+    pass: &mut LaterPass,
+) -> Vec<LocalCurve> {
+    if pass.chords.is_empty() {
+        return Vec::new();
+    }
+    let points = &full.triangulation().points;
+    let mut both: Vec<[LocalPoint; 2]> = pass.edges.iter().chain(&pass.chords).copied().collect();
+    both.sort_unstable();
+    let is_chord = |e: &[LocalPoint; 2]| pass.chords.binary_search(e).is_ok();
+    let mut loops = Vec::new();
+    for piece in assemble_unnamed(points.len(), &both, points, LocalPoint::get) {
+        if !piece.closed {
+            continue;
+        }
+        let edges = piece_edges(&piece);
+        if !edges.iter().any(is_chord) {
+            continue;
+        }
+        let spacing = median_length(points, &edges);
+        if lies_apart(
+            full,
+            |q| earlier.neighbours(q),
+            &piece.points,
+            spacing,
+            |_| true,
+        ) {
+            loops.push((piece, edges));
+        }
+    }
+    let mut taken: Vec<[LocalPoint; 2]> =
+        loops.iter().flat_map(|(_, e)| e.iter().copied()).collect();
+    taken.sort_unstable();
+    let kept = |e: &[LocalPoint; 2]| taken.binary_search(e).is_err();
+    pass.edges.retain(kept);
+    pass.chords.retain(kept);
+    loops.into_iter().map(|(piece, _)| piece).collect()
 }
 
 /// The edges `[min, max]` of a curve (a closed one includes its closing edge).

@@ -147,13 +147,3 @@ pub(crate) fn ids<T: From<u32>>(
 ) -> impl DoubleEndedIterator<Item = T> + ExactSizeIterator + Clone {
     (0..count as u32).map(T::from)
 }
-
-/// Local edges as the reconstruction's own arrays hold them (plain `u32` pairs), in place.
-pub(crate) fn untyped_edges(edges: Vec<[LocalPoint; 2]>) -> Vec<[u32; 2]> {
-    edges.into_iter().map(|e| e.map(LocalPoint::get)).collect()
-}
-
-/// The reconstruction's `u32` pairs of local points as typed edges, in place.
-pub(crate) fn typed_edges(edges: Vec<[u32; 2]>) -> Vec<[LocalPoint; 2]> {
-    edges.into_iter().map(|e| e.map(LocalPoint::new)).collect()
-}

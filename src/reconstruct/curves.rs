@@ -3,6 +3,7 @@
 use std::cmp::Ordering;
 
 use crate::delaunay::Triangulation;
+use crate::ids::{ids, LocalPoint};
 use crate::kernel::{orient, Sign};
 use crate::parallel;
 
@@ -18,6 +19,36 @@ pub struct Curve {
     pub points: Vec<u32>,
 }
 
+/// A curve while the reconstruction walks it: the points are the triangulation's local ones.
+/// [`LocalCurve::named`] makes it a [`Curve`] in the caller's indices.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct LocalCurve {
+    /// True for a closed loop (the last point connects back to the first).
+    pub(crate) closed: bool,
+    /// Local points along the curve.
+    pub(crate) points: Vec<LocalPoint>,
+}
+
+impl LocalCurve {
+    /// The same curve with every point renamed by `name` (in place: a local point is a
+    /// `u32`).
+    pub(crate) fn named(self, name: impl Fn(LocalPoint) -> u32) -> Curve {
+        Curve {
+            closed: self.closed,
+            points: self.points.into_iter().map(name).collect(),
+        }
+    }
+}
+
+/// The point space an [`Adjacency`] is built over: the triangulation's local points
+/// ([`LocalPoint`]), or a plain `u32` numbering (the caller's indices for
+/// [`irregular_points`], the detour repair's positions among its candidates).
+pub(crate) trait Point: Copy + Ord + From<u32> + Into<u32> + Send + Sync {}
+
+impl Point for u32 {}
+
+impl Point for LocalPoint {}
+
 /// Splits the edge graph of distinct `edges` over points `0..point_count` into maximal paths
 /// between points of degree ≠ 2 (open chains) and cycles of degree-2 points (closed loops),
 /// given in the names `name(p)`. Every edge is in exactly one curve.
@@ -29,42 +60,36 @@ pub struct Curve {
 /// towards its smaller neighbour, reversed if that runs clockwise. That is the order in
 /// which scanning the names upwards finds them.
 ///
-/// The walks run over the edges' own indices: in the pipeline those are the
-/// triangulation's local ones, so they stay local in memory while the result is in the
-/// caller's indices.
+/// The walks run over the triangulation's local points, so they stay local in memory while
+/// the result is in the caller's indices.
 pub(crate) fn assemble_named(
     point_count: usize,
-    edges: &[[u32; 2]],
+    edges: &[[LocalPoint; 2]],
     points: &[[f64; 2]],
-    name: impl Fn(u32) -> u32 + Sync,
+    name: impl Fn(LocalPoint) -> u32 + Sync,
 ) -> Vec<Curve> {
-    let mut curves = assemble_unnamed(point_count, edges, points, &name);
-    for c in &mut curves {
-        for p in &mut c.points {
-            *p = name(*p);
-        }
-    }
-    curves
+    let curves = assemble_unnamed(point_count, edges, points, &name);
+    curves.into_iter().map(|c| c.named(&name)).collect()
 }
 
-/// [`assemble_named`] with the points left in the edges' indices: the same curves in the
+/// [`assemble_named`] with the points left local ([`LocalCurve`]): the same curves in the
 /// same order, each point to be named still. (The pipeline reads the loops in the
 /// triangulation's local indices first, which follow the points' locality, and names them
 /// afterwards: looking the local index of every point up from the caller's, shuffled,
 /// was a cache miss per point.)
 pub(crate) fn assemble_unnamed(
     point_count: usize,
-    edges: &[[u32; 2]],
+    edges: &[[LocalPoint; 2]],
     points: &[[f64; 2]],
-    name: impl Fn(u32) -> u32 + Sync,
-) -> Vec<Curve> {
+    name: impl Fn(LocalPoint) -> u32 + Sync,
+) -> Vec<LocalCurve> {
     let mut adjacency = Adjacency::new(point_count, edges);
     // Each row by the names of the neighbours: the order of the walks out of a point.
     adjacency.sort_rows_by_key(&name);
     let mut used = vec![false; edges.len()];
     let mut curves = Vec::new();
     // Open chains: start at every end or junction, along every unused edge.
-    for start in 0..point_count as u32 {
+    for start in ids::<LocalPoint>(point_count) {
         if adjacency.degree(start) == 2 || adjacency.degree(start) == 0 {
             continue;
         }
@@ -82,14 +107,14 @@ pub(crate) fn assemble_unnamed(
             if last < first || (last == first && k > 2 && name(chain[1]) > name(chain[k - 2])) {
                 chain.reverse();
             }
-            curves.push(Curve {
+            curves.push(LocalCurve {
                 closed: false,
                 points: chain,
             });
         }
     }
     // What remains are disjoint cycles of degree-2 points.
-    for start in 0..point_count as u32 {
+    for start in ids::<LocalPoint>(point_count) {
         if let Some(&(first_edge, _)) = adjacency
             .neighbours(start)
             .iter()
@@ -98,7 +123,7 @@ pub(crate) fn assemble_unnamed(
             let mut cycle = walk(&adjacency, &mut used, start, first_edge, |p| p == start);
             cycle.pop(); // the walk ends back at the start
             orient_counterclockwise(&mut cycle, points, &name);
-            curves.push(Curve {
+            curves.push(LocalCurve {
                 closed: true,
                 points: cycle,
             });
@@ -106,7 +131,7 @@ pub(crate) fn assemble_unnamed(
     }
     // Stable, and already sorted when the names are the indices.
     curves.sort_by(|a, b| {
-        let first_two = |c: &Curve| [0, 1].map(|k| c.points.get(k).map(|&p| name(p)));
+        let first_two = |c: &LocalCurve| [0, 1].map(|k| c.points.get(k).map(|&p| name(p)));
         a.closed
             .cmp(&b.closed)
             .then_with(|| first_two(a).cmp(&first_two(b)))
@@ -158,21 +183,25 @@ fn lexicographic(a: [f64; 2], b: [f64; 2]) -> Ordering {
     by(a[0], b[0]).then(by(a[1], b[1]))
 }
 
-/// Collinear or tiny input: the chain along the line is the reconstruction (local indices).
-pub(crate) fn chain_edges(tri: &Triangulation) -> Vec<[u32; 2]> {
+/// Collinear or tiny input: the chain along the line is the reconstruction.
+pub(crate) fn chain_edges(tri: &Triangulation) -> Vec<[LocalPoint; 2]> {
     tri.hull
         .windows(2)
-        .map(|w| [w[0].min(w[1]).get(), w[0].max(w[1]).get()])
+        .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
         .collect()
 }
 
+/// [`assemble_named`] of `edges` over the points `0..point_count` with the indices as names
+/// (taken as local points: a test's edges name no triangulation).
 #[cfg(test)]
 pub fn assemble(point_count: usize, edges: &[[u32; 2]], points: &[[f64; 2]]) -> Vec<Curve> {
-    assemble_named(point_count, edges, points, |p| p)
+    let edges: Vec<[LocalPoint; 2]> = edges.iter().map(|e| e.map(LocalPoint::new)).collect();
+    assemble_named(point_count, &edges, points, LocalPoint::get)
 }
 
 /// Points with at least one edge and a degree other than 2: curve ends and junctions.
-/// (Points without any edge are not listed: the caller decides what those mean.)
+/// (Points without any edge are not listed: the caller decides what those mean.) In the
+/// caller's indices, as the result holds its edges.
 pub fn irregular_points(point_count: usize, edges: &[[u32; 2]]) -> Vec<u32> {
     let adjacency = Adjacency::new(point_count, edges);
     (0..point_count as u32)
@@ -192,10 +221,10 @@ pub fn irregular_points(point_count: usize, edges: &[[u32; 2]]) -> Vec<u32> {
 fn walk(
     adjacency: &Adjacency,
     used: &mut [bool],
-    start: u32,
+    start: LocalPoint,
     first_edge: u32,
-    stop: impl Fn(u32) -> bool,
-) -> Vec<u32> {
+    stop: impl Fn(LocalPoint) -> bool,
+) -> Vec<LocalPoint> {
     let mut chain = vec![start];
     let mut at = start;
     let mut edge = first_edge;
@@ -230,9 +259,13 @@ fn walk(
 /// Puts a loop in its canonical form by names: from its smallest name towards the smaller
 /// neighbour, reversed if it runs clockwise (decided exactly, see
 /// [`ring_orientation_by`]), then from its smallest name again.
-fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]], name: impl Fn(u32) -> u32) {
+fn orient_counterclockwise(
+    cycle: &mut [LocalPoint],
+    points: &[[f64; 2]],
+    name: impl Fn(LocalPoint) -> u32,
+) {
     let n = cycle.len();
-    let start_at_smallest = |cycle: &mut [u32]| {
+    let start_at_smallest = |cycle: &mut [LocalPoint]| {
         if let Some(min_at) = (0..n).min_by_key(|&i| name(cycle[i])) {
             cycle.rotate_left(min_at);
         }
@@ -242,25 +275,26 @@ fn orient_counterclockwise(cycle: &mut [u32], points: &[[f64; 2]], name: impl Fn
         cycle[1..].reverse();
     }
     // Exactly (the float shoelace sum can get a thin loop far from the origin wrong).
-    if ring_orientation_by(n, |i| points[cycle[i] as usize]) == Sign::Negative {
+    if ring_orientation_by(n, |i| points[cycle[i].index()]) == Sign::Negative {
         cycle.reverse();
         start_at_smallest(cycle);
     }
 }
 
-/// Compressed adjacency lists: for each point, `(edge index, other end)`.
-pub(crate) struct Adjacency {
+/// Compressed adjacency lists: for each point, `(edge index, other end)`; the points are
+/// local ones unless said otherwise.
+pub(crate) struct Adjacency<P = LocalPoint> {
     start: Vec<u32>,
-    entries: Vec<(u32, u32)>,
+    entries: Vec<(u32, P)>,
 }
 
-impl Adjacency {
-    pub(crate) fn new(point_count: usize, edges: &[[u32; 2]]) -> Self {
+impl<P: Point> Adjacency<P> {
+    pub(crate) fn new(point_count: usize, edges: &[[P; 2]]) -> Self {
         #[cfg(feature = "parallel")]
         if parallel::pays(edges.len()) {
             return Adjacency::by_point_ranges(point_count, edges);
         }
-        Adjacency::in_slots(point_count, edges, |p| p as usize)
+        Adjacency::in_slots(point_count, edges, |p| p.into() as usize)
     }
 
     /// [`Adjacency::new`] on all threads, the same arrays: each thread owns a range of
@@ -269,7 +303,7 @@ impl Adjacency {
     /// write the same place. Every thread reads every edge, twice, in order; the scattered
     /// writes, the cost of the sequential form, are shared out.
     #[cfg(feature = "parallel")]
-    fn by_point_ranges(point_count: usize, edges: &[[u32; 2]]) -> Self {
+    fn by_point_ranges(point_count: usize, edges: &[[P; 2]]) -> Self {
         use rayon::prelude::*;
         let per_range = point_count.div_ceil(rayon::current_num_threads()).max(1);
         let mut start = vec![0u32; point_count + 1];
@@ -280,7 +314,8 @@ impl Adjacency {
                 let first = k * per_range;
                 let ours = first as u32..(first + counts.len()) as u32;
                 for &[a, b] in edges {
-                    for p in [a, b].into_iter().filter(|p| ours.contains(p)) {
+                    let ends = [a, b].map(Into::<u32>::into);
+                    for p in ends.into_iter().filter(|p| ours.contains(p)) {
                         counts[p as usize - first] += 1;
                     }
                 }
@@ -293,7 +328,7 @@ impl Adjacency {
         // the cursors: afterwards `start[p + 1]` holds the row start of `p`, and one shift
         // puts them back. (Cursors of their own, 4 bytes a point in all, were allocated
         // and freed by the worker threads, whose allocators kept them.)
-        let mut entries = vec![(0, 0); 2 * edges.len()];
+        let mut entries = vec![(0, P::from(0)); 2 * edges.len()];
         let firsts: Vec<usize> = (0..point_count).step_by(per_range).collect();
         let bases: Vec<u32> = firsts.iter().map(|&first| start[first]).collect();
         let total = start[point_count];
@@ -306,6 +341,7 @@ impl Adjacency {
                 let ours_range = first as u32..last as u32;
                 for (i, &[a, b]) in edges.iter().enumerate().rev() {
                     for (p, q) in [(b, a), (a, b)] {
+                        let p: u32 = p.into();
                         if ours_range.contains(&p) {
                             let end = &mut ends[p as usize - first];
                             *end -= 1;
@@ -325,7 +361,7 @@ impl Adjacency {
 
     /// The entries of point `p` in slot `slot(p)` (below `slot_count`), naming the edge and
     /// the neighbour as given.
-    fn in_slots(slot_count: usize, edges: &[[u32; 2]], slot: impl Fn(u32) -> usize) -> Self {
+    fn in_slots(slot_count: usize, edges: &[[P; 2]], slot: impl Fn(P) -> usize) -> Self {
         let mut start = vec![0u32; slot_count + 1];
         for &[a, b] in edges {
             start[slot(a) + 1] += 1;
@@ -335,7 +371,7 @@ impl Adjacency {
             start[i + 1] += start[i];
         }
         let mut fill = start.clone();
-        let mut entries = vec![(0, 0); 2 * edges.len()];
+        let mut entries = vec![(0, P::from(0)); 2 * edges.len()];
         for (i, &[a, b]) in edges.iter().enumerate() {
             let (sa, sb) = (slot(a), slot(b));
             entries[fill[sa] as usize] = (i as u32, b);
@@ -348,9 +384,9 @@ impl Adjacency {
 
     /// Sorts every row by `key` of the neighbours (distinct in a row, so one order), on all
     /// threads where that pays, a range of rows each.
-    fn sort_rows_by_key(&mut self, key: impl Fn(u32) -> u32 + Sync) {
+    fn sort_rows_by_key(&mut self, key: impl Fn(P) -> u32 + Sync) {
         let Adjacency { start, entries } = self;
-        let sort_rows = |first: usize, last: usize, rows: &mut [(u32, u32)]| {
+        let sort_rows = |first: usize, last: usize, rows: &mut [(u32, P)]| {
             let base = start[first];
             for p in first..last {
                 let (lo, hi) = ((start[p] - base) as usize, (start[p + 1] - base) as usize);
@@ -370,31 +406,31 @@ impl Adjacency {
     }
 
     /// `(edge, neighbour)` for every edge at `p`, in the order of the edges.
-    pub(crate) fn neighbours(&self, p: u32) -> &[(u32, u32)] {
-        self.in_slot(p as usize)
+    pub(crate) fn neighbours(&self, p: P) -> &[(u32, P)] {
+        self.in_slot(p.into() as usize)
     }
 
-    fn in_slot(&self, slot: usize) -> &[(u32, u32)] {
+    fn in_slot(&self, slot: usize) -> &[(u32, P)] {
         &self.entries[self.start[slot] as usize..self.start[slot + 1] as usize]
     }
 
-    fn degree(&self, p: u32) -> usize {
+    fn degree(&self, p: P) -> usize {
         self.neighbours(p).len()
     }
 }
 
 /// The rows of the points `first..last`: `(first, last, their entries)`.
 #[cfg(feature = "parallel")]
-type RowRange<'e> = (usize, usize, &'e mut [(u32, u32)]);
+type RowRange<'e, P> = (usize, usize, &'e mut [(u32, P)]);
 
 /// The rows of `entries` (laid out by `start`, as in [`Adjacency`]) for consecutive ranges
 /// of `per_range` points: disjoint slices that threads can fill or sort on their own.
 #[cfg(feature = "parallel")]
-fn rows_in_ranges<'e>(
+fn rows_in_ranges<'e, P>(
     start: &[u32],
-    entries: &'e mut [(u32, u32)],
+    entries: &'e mut [(u32, P)],
     per_range: usize,
-) -> Vec<RowRange<'e>> {
+) -> Vec<RowRange<'e, P>> {
     let point_count = start.len() - 1;
     let mut ranges = Vec::new();
     let mut rest = entries;
@@ -410,24 +446,24 @@ fn rows_in_ranges<'e>(
 /// An [`Adjacency`] of a few edges, with slots for their points alone (found by a binary
 /// search): nothing is built over all the points. It knows every edge at a point only where
 /// every edge at that point is among those given.
-pub(crate) struct SomeAdjacency {
+pub(crate) struct SomeAdjacency<P = LocalPoint> {
     /// The points of the edges, sorted: the slot of a point is its position here.
-    members: Vec<u32>,
-    adjacency: Adjacency,
+    members: Vec<P>,
+    adjacency: Adjacency<P>,
 }
 
-impl SomeAdjacency {
-    pub(crate) fn new(edges: &[[u32; 2]]) -> Self {
-        let mut members: Vec<u32> = edges.iter().flatten().copied().collect();
+impl<P: Point> SomeAdjacency<P> {
+    pub(crate) fn new(edges: &[[P; 2]]) -> Self {
+        let mut members: Vec<P> = edges.iter().flatten().copied().collect();
         members.sort_unstable();
         members.dedup();
-        let slot = |p: u32| members.binary_search(&p).unwrap_or_default();
+        let slot = |p: P| members.binary_search(&p).unwrap_or_default();
         let adjacency = Adjacency::in_slots(members.len(), edges, slot);
         SomeAdjacency { members, adjacency }
     }
 
     /// As [`Adjacency::neighbours`]; nothing for a point of none of the edges.
-    pub(crate) fn neighbours(&self, p: u32) -> &[(u32, u32)] {
+    pub(crate) fn neighbours(&self, p: P) -> &[(u32, P)] {
         match self.members.binary_search(&p) {
             Ok(slot) => self.adjacency.in_slot(slot),
             Err(_) => &[],
@@ -438,6 +474,11 @@ impl SomeAdjacency {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `edges` between the local points with these numbers.
+    fn local(edges: &[[u32; 2]]) -> Vec<[LocalPoint; 2]> {
+        edges.iter().map(|e| e.map(LocalPoint::new)).collect()
+    }
 
     fn square() -> Vec<[f64; 2]> {
         vec![
@@ -531,7 +572,7 @@ mod tests {
             let mut shuffled = edges.clone();
             rng.shuffle(&mut shuffled);
             assert_eq!(
-                assemble_named(n, &shuffled, &points, |p| name[p as usize]),
+                assemble_named(n, &local(&shuffled), &points, |p| name[p.index()]),
                 assemble(n, &named_edges, &named_points),
                 "round {round}"
             );
@@ -597,7 +638,7 @@ mod tests {
             for i in (1..n).rev() {
                 names.swap(i, rng.below(i + 1));
             }
-            let curves = assemble_named(n, &edges, &points, |p| names[p as usize]);
+            let curves = assemble_named(n, &local(&edges), &points, |p| names[p.index()]);
             let mut named: Vec<[u32; 2]> = edges
                 .iter()
                 .map(|e| e.map(|p| names[p as usize]))

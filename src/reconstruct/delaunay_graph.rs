@@ -6,12 +6,13 @@ use std::hash::{BuildHasherDefault, Hasher};
 
 use super::lengths::distance;
 use crate::delaunay::{HalfEdge, Triangulation, NO_TWIN};
+use crate::ids::LocalPoint;
 use crate::parallel;
 
 /// The Delaunay graph of the triangulation, neighbours by local index.
 pub(super) struct Graph {
     offsets: Vec<u32>,
-    neighbours: Vec<u32>,
+    neighbours: Vec<LocalPoint>,
     /// Every point's distance to its nearest neighbour (a Delaunay neighbour).
     pub(super) nearest: Vec<f64>,
 }
@@ -22,9 +23,9 @@ impl Graph {
         let mut graph = Self::adjacency(tri);
         graph.nearest = parallel::map_range(tri.points.len(), |p| {
             graph
-                .of(p as u32)
+                .of(LocalPoint::new(p as u32))
                 .iter()
-                .map(|&q| distance(tri.points[p], tri.points[q as usize]))
+                .map(|&q| distance(tri.points[p], tri.points[q.index()]))
                 .fold(f64::INFINITY, f64::min)
         });
         graph
@@ -44,12 +45,12 @@ impl Graph {
             count[i + 1] += count[i];
         }
         let mut fill = count.clone();
-        let mut neighbours = vec![0u32; count[n] as usize];
+        let mut neighbours = vec![LocalPoint::new(0); count[n] as usize];
         for e in tri.halfedge_ids().filter(|&e| undirected(e)) {
             let (a, b) = (tri.org(e), tri.dest(e));
-            neighbours[fill[a.index()] as usize] = b.get();
+            neighbours[fill[a.index()] as usize] = b;
             fill[a.index()] += 1;
-            neighbours[fill[b.index()] as usize] = a.get();
+            neighbours[fill[b.index()] as usize] = a;
             fill[b.index()] += 1;
         }
         Graph {
@@ -59,15 +60,15 @@ impl Graph {
         }
     }
 
-    pub(super) fn of(&self, p: u32) -> &[u32] {
-        let (a, b) = (self.offsets[p as usize], self.offsets[p as usize + 1]);
+    pub(super) fn of(&self, p: LocalPoint) -> &[LocalPoint] {
+        let (a, b) = (self.offsets[p.index()], self.offsets[p.index() + 1]);
         &self.neighbours[a as usize..b as usize]
     }
 }
 
 /// A sample waiting in the gathering, nearest first (ties by local index).
 #[derive(PartialEq)]
-pub(super) struct Waiting(pub(super) f64, pub(super) u32);
+pub(super) struct Waiting(pub(super) f64, pub(super) LocalPoint);
 
 impl Eq for Waiting {}
 

@@ -125,52 +125,54 @@ struct CurveView {
     /// junction), which ends several chains.
     place: Vec<(u32, u32)>,
     /// Each curve's local points in order, and whether it is closed.
-    curves: Vec<(Vec<u32>, bool)>,
+    curves: Vec<(Vec<LocalPoint>, bool)>,
     /// Every point's edge neighbours, in compressed rows: the curve neighbours of a point
     /// are those of its edges, whichever curves they were assembled into (that split at a
     /// junction follows the caller's indices; the edges do not).
     start: Vec<u32>,
-    targets: Vec<u32>,
+    targets: Vec<LocalPoint>,
     curve_points: usize,
 }
 
 const NO_CURVE: u32 = u32::MAX;
 const JUNCTION: u32 = u32::MAX - 1;
 
+/// No point: no curve neighbour, no chain end.
+const NO_POINT: LocalPoint = LocalPoint::new(u32::MAX);
+
 impl CurveView {
     fn new(rec: &Reconstruction) -> Self {
         let tri = &rec.triangulation;
         let n = tri.distinct_point_count();
-        let edges: Vec<[u32; 2]> = rec
+        let edges: Vec<[LocalPoint; 2]> = rec
             .edges
             .iter()
-            .map(|e| e.map(|i| tri.local_index(i).get()))
+            .map(|e| e.map(|i| tri.local_index(i)))
             .collect();
         let mut start = vec![0u32; n + 1];
         for &[a, b] in &edges {
-            start[a as usize + 1] += 1;
-            start[b as usize + 1] += 1;
+            start[a.index() + 1] += 1;
+            start[b.index() + 1] += 1;
         }
         for i in 0..n {
             start[i + 1] += start[i];
         }
         let mut fill = start.clone();
-        let mut targets = vec![0u32; 2 * edges.len()];
+        let mut targets = vec![LocalPoint::new(0); 2 * edges.len()];
         for &[a, b] in &edges {
             for (p, q) in [(a, b), (b, a)] {
-                targets[fill[p as usize] as usize] = q;
-                fill[p as usize] += 1;
+                targets[fill[p.index()] as usize] = q;
+                fill[p.index()] += 1;
             }
         }
         let degree = |p: usize| start[p + 1] - start[p];
         let mut place = vec![(NO_CURVE, 0); n];
         let mut curves = Vec::with_capacity(rec.curves.len());
         for (c, curve) in rec.curves.iter().enumerate() {
-            let local: Vec<u32> = (curve.points.iter())
-                .map(|&i| tri.local_index(i).get())
-                .collect();
+            let local: Vec<LocalPoint> =
+                (curve.points.iter()).map(|&i| tri.local_index(i)).collect();
             for (k, &p) in local.iter().enumerate() {
-                place[p as usize] = if degree(p as usize) > 2 {
+                place[p.index()] = if degree(p.index()) > 2 {
                     (JUNCTION, 0)
                 } else {
                     (c as u32, k as u32)
@@ -189,8 +191,8 @@ impl CurveView {
     }
 
     /// The curve neighbours of `p`: the other ends of its edges.
-    fn neighbours(&self, p: u32) -> impl Iterator<Item = u32> + '_ {
-        let p = p as usize;
+    fn neighbours(&self, p: LocalPoint) -> impl Iterator<Item = LocalPoint> + '_ {
+        let p = p.index();
         self.targets[self.start[p] as usize..self.start[p + 1] as usize]
             .iter()
             .copied()
@@ -198,8 +200,8 @@ impl CurveView {
 
     /// The steps along one curve between `p` and `q`: `None` on different curves, `Some(0)`
     /// at a junction (it ends several chains, so it is near all of them).
-    fn steps_apart(&self, p: u32, q: u32) -> Option<usize> {
-        let ((cp, kp), (cq, kq)) = (self.place[p as usize], self.place[q as usize]);
+    fn steps_apart(&self, p: LocalPoint, q: LocalPoint) -> Option<usize> {
+        let ((cp, kp), (cq, kq)) = (self.place[p.index()], self.place[q.index()]);
         if cp == JUNCTION || cq == JUNCTION {
             return Some(0);
         }
@@ -224,8 +226,8 @@ struct Survey {
     /// Curve points with a Delaunay neighbour, not a curve neighbour, as close as their
     /// longer curve edge.
     crowded: usize,
-    /// For each open chain's end, its nearest Delaunay neighbour (`NO_CURVE` elsewhere).
-    nearest_of_end: Vec<u32>,
+    /// For each open chain's end, its nearest Delaunay neighbour (`NO_POINT` elsewhere).
+    nearest_of_end: Vec<LocalPoint>,
     /// Pairs of curve points closer than both their longer curve edges, on different curves
     /// or far apart along one, and the smallest such pair in caller indices.
     close_pairs: usize,
@@ -236,23 +238,23 @@ impl Survey {
     fn of(rec: &Reconstruction, view: &CurveView) -> Survey {
         let tri = &rec.triangulation;
         let points = &tri.points;
-        let at = |i: u32| points[i as usize];
+        let at = |i: LocalPoint| points[i.index()];
         let n = points.len();
         // Each curve point's longer curve edge, by its far end.
-        let mut far = vec![NO_CURVE; n];
-        let mut nearest_of_end = vec![NO_CURVE; n];
+        let mut far = vec![NO_POINT; n];
+        let mut nearest_of_end = vec![NO_POINT; n];
         let mut end = vec![false; n];
         for (curve, closed) in &view.curves {
             for &p in curve {
-                far[p as usize] = view
+                far[p.index()] = view
                     .neighbours(p)
                     .max_by(|&a, &b| closer(at(p), at(a), at(b)))
-                    .unwrap_or(NO_CURVE);
+                    .unwrap_or(NO_POINT);
             }
             if !closed {
                 if let (Some(&first), Some(&last)) = (curve.first(), curve.last()) {
-                    end[first as usize] = true;
-                    end[last as usize] = true;
+                    end[first.index()] = true;
+                    end[last.index()] = true;
                 }
             }
         }
@@ -263,11 +265,11 @@ impl Survey {
             if twin != NO_TWIN && twin < e {
                 continue;
             }
-            let (a, b) = (tri.org(e).get(), tri.dest(e).get());
+            let (a, b) = (tri.org(e), tri.dest(e));
             for (p, q) in [(a, b), (b, a)] {
-                if end[p as usize] {
-                    let best = &mut nearest_of_end[p as usize];
-                    if *best == NO_CURVE || closer(at(p), at(q), at(*best)) == Ordering::Less {
+                if end[p.index()] {
+                    let best = &mut nearest_of_end[p.index()];
+                    if *best == NO_POINT || closer(at(p), at(q), at(*best)) == Ordering::Less {
                         *best = q;
                     }
                 }
@@ -278,32 +280,29 @@ impl Survey {
                 continue;
             }
             // Within the longer curve edge of `p`.
-            let within = |p: u32| {
-                let f = far[p as usize];
-                f != NO_CURVE && length_order(at(a), at(b), at(p), at(f)) != Ordering::Greater
+            let within = |p: LocalPoint| {
+                let f = far[p.index()];
+                f != NO_POINT && length_order(at(a), at(b), at(p), at(f)) != Ordering::Greater
             };
             let (a_within, b_within) = (within(a), within(b));
             if !(a_within || b_within) {
                 continue;
             }
             if twin != NO_TWIN {
-                let c = tri.org(e.prev()).get();
-                let d = tri.org(twin.prev()).get();
+                let c = tri.org(e.prev());
+                let d = tri.org(twin.prev());
                 if incircle(at(a), at(b), at(c), at(d)) == CirclePosition::On {
                     continue;
                 }
             }
-            crowded[a as usize] |= a_within;
-            crowded[b as usize] |= b_within;
+            crowded[a.index()] |= a_within;
+            crowded[b.index()] |= b_within;
             let far_apart = view
                 .steps_apart(a, b)
                 .is_none_or(|steps| steps > CLOSE_CURVE_STEPS);
             if a_within && b_within && far_apart {
                 close_pairs += 1;
-                let (i, j) = (
-                    tri.input_index(LocalPoint::new(a)),
-                    tri.input_index(LocalPoint::new(b)),
-                );
+                let (i, j) = (tri.input_index(a), tri.input_index(b));
                 let named = [i.min(j), i.max(j)];
                 if first_close.is_none_or(|f| named < f) {
                     first_close = Some(named);
@@ -352,9 +351,9 @@ fn scatter(
 fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec<Warning> {
     let tri = &rec.triangulation;
     let points = &tri.points;
-    let at = |i: u32| points[i as usize];
-    let length = |[a, b]: [u32; 2]| distance(at(a), at(b));
-    let longer = |e: [u32; 2], f: [u32; 2], doublings| {
+    let at = |i: LocalPoint| points[i.index()];
+    let length = |[a, b]: [LocalPoint; 2]| distance(at(a), at(b));
+    let longer = |e: [LocalPoint; 2], f: [LocalPoint; 2], doublings| {
         scaled_length_order(at(e[0]), at(e[1]), at(f[0]), at(f[1]), doublings) == Ordering::Greater
     };
     // The worst edge of each kind (ratio, ends), and how many there are.
@@ -372,8 +371,8 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
             let ab = edge(k);
             // Up to two curve edges on each side; at a chain's end, the end's
             // nearest-neighbour pair stands for the missing side.
-            let nearest = |p: u32| match survey.nearest_of_end[p as usize] {
-                NO_CURVE => None,
+            let nearest = |p: LocalPoint| match survey.nearest_of_end[p.index()] {
+                NO_POINT => None,
                 q => Some([p, q]),
             };
             let along = |side: i64| {
@@ -393,7 +392,7 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
                     .then(|| nearest(ab[1]))
                     .flatten(),
             ];
-            let mut beside = [[0u32; 2]; 6];
+            let mut beside = [[LocalPoint::new(0); 2]; 6];
             let mut sides = 0;
             for f in candidates.into_iter().flatten() {
                 beside[sides] = f;
@@ -405,11 +404,7 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
             }
             *flagged = true;
             let side = beside.iter().map(|&f| length(f)).fold(0.0, f64::max);
-            note(
-                &mut long,
-                length(ab) / side,
-                ab.map(|p| tri.input_index(LocalPoint::new(p))),
-            );
+            note(&mut long, length(ab) / side, ab.map(|p| tri.input_index(p)));
         }
         // A loop whose longest edge is far longer than every other one: an open curve whose
         // ends were joined.
@@ -431,7 +426,7 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
                 note(
                     &mut gap,
                     length(edge(longest)) / length(edge(second)),
-                    edge(longest).map(|p| tri.input_index(LocalPoint::new(p))),
+                    edge(longest).map(|p| tri.input_index(p)),
                 );
             }
         }
@@ -451,7 +446,7 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
                     "curve edges are far longer"
                 ),
                 round_ratio(long.1),
-                position(at(tri.local_index(i).get()))
+                position(at(tri.local_index(i)))
             ),
             points: vec![i, j],
         });
@@ -464,7 +459,7 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
                 "{} across a gap: the edge between points {i} and {j} at {} is {}× the loop's \
                  next longest; if the curve is open there, try --algorithm crust",
                 count(gap.0, "closed loop closes", "closed loops close"),
-                position(at(tri.local_index(i).get())),
+                position(at(tri.local_index(i))),
                 round_ratio(gap.1)
             ),
             points: vec![i, j],

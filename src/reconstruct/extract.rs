@@ -5,7 +5,7 @@ use super::frame::Frame;
 use super::result::MedialAxis;
 use super::wdm::Label;
 use crate::delaunay::{Triangulation, NO_TWIN};
-use crate::ids::{HalfEdge, TriangleId, VertexId};
+use crate::ids::{HalfEdge, LocalPoint, TriangleId, VertexId};
 use crate::parallel;
 use crate::voronoi::{EdgeEnd, Voronoi};
 
@@ -33,7 +33,7 @@ impl EdgeClass {
 
 /// Delaunay edges dual to branch edges, each once, unsorted, in local indices. A ray's far end is the root
 /// vertex, always outer.
-pub(super) fn wdm_crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
+pub(super) fn wdm_crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[LocalPoint; 2]> {
     if vor.has_merged_faces() {
         crust_edges_of_faces(vor, labels)
     } else {
@@ -42,7 +42,7 @@ pub(super) fn wdm_crust_edges(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 
 }
 
 /// [`wdm_crust_edges`] on any diagram, merged faces included.
-fn crust_edges_of_faces(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
+fn crust_edges_of_faces(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[LocalPoint; 2]> {
     // Reserved on this thread: 8 bytes a point, at the memory peak's scale. At most three
     // edges a vertex but at merged faces.
     parallel::flat_map_chunks_reserved(vor.vertex_count(), 3, |vertices, edges| {
@@ -55,7 +55,7 @@ fn crust_edges_of_faces(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
                     EdgeEnd::Infinity => Label::Outer,
                 };
                 if EdgeClass::of(labels[v.index()], far) == EdgeClass::Branch {
-                    let [a, b] = edge.sites.map(|p| p.get());
+                    let [a, b] = edge.sites;
                     edges.push([a.min(b), a.max(b)]);
                 }
             }
@@ -67,7 +67,7 @@ fn crust_edges_of_faces(vor: &Voronoi<'_>, labels: &[Label]) -> Vec<[u32; 2]> {
 /// vertex `t` is triangle `t`, its edges are the half-edges `3t..3t + 3`, the far end of one
 /// is its twin's triangle. Read straight off the triangle store: the face iterator of the
 /// general form cost 23 ns a vertex at 10^7 points (one thread), most of the extraction.
-fn crust_edges_of_triangles(tri: &Triangulation, labels: &[Label]) -> Vec<[u32; 2]> {
+fn crust_edges_of_triangles(tri: &Triangulation, labels: &[Label]) -> Vec<[LocalPoint; 2]> {
     let halfedges = tri.halfedges();
     parallel::flat_map_chunks_reserved(labels.len(), 3, |triangles, edges| {
         for t in triangles {
@@ -83,7 +83,7 @@ fn crust_edges_of_triangles(tri: &Triangulation, labels: &[Label]) -> Vec<[u32; 
                     labels[twin.triangle().index()]
                 };
                 if own != far {
-                    let (a, b) = (tri.org(e).get(), tri.dest(e).get());
+                    let (a, b) = (tri.org(e), tri.dest(e));
                     edges.push([a.min(b), a.max(b)]);
                 }
             }
@@ -101,7 +101,7 @@ fn crust_edges_of_triangles(tri: &Triangulation, labels: &[Label]) -> Vec<[u32; 
 pub(super) fn medial_axis(
     vor: &Voronoi<'_>,
     labels: &[Label],
-    later_pass_crust: &[[u32; 2]],
+    later_pass_crust: &[[LocalPoint; 2]],
     frame: Frame,
 ) -> MedialAxis {
     let tri = vor.triangulation();
@@ -117,7 +117,7 @@ pub(super) fn medial_axis(
         index[v.index()]
     };
     let crosses_a_curve = |e: HalfEdge| {
-        let (p, q) = (tri.org(e).get(), tri.dest(e).get());
+        let (p, q) = (tri.org(e), tri.dest(e));
         !later_pass_crust.is_empty()
             && later_pass_crust
                 .binary_search(&[p.min(q), p.max(q)])

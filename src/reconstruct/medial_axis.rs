@@ -193,7 +193,7 @@ mod pruning;
 
 use self::cavity::Cavity;
 use super::bits::{Bits, RankedBits};
-use super::curves::Curve;
+use super::curves::LocalCurve;
 use super::frame::Frame;
 use super::lengths::distance;
 use super::parity::parity_from_infinity;
@@ -229,11 +229,11 @@ const SPREAD: f32 = f32::INFINITY;
 /// there), the loops' points are triangulated on their own.
 pub(super) fn pruned_medial_axis(
     mut vor: Voronoi<'_>,
-    curves: &[Curve],
+    curves: &[LocalCurve],
     frame: Frame,
 ) -> MedialAxis {
     let tri = vor.triangulation();
-    let loops: Vec<&Curve> = curves.iter().filter(|c| c.closed).collect();
+    let loops: Vec<&LocalCurve> = curves.iter().filter(|c| c.closed).collect();
     if loops.is_empty() || tri.is_degenerate() {
         return MedialAxis::default();
     }
@@ -277,12 +277,12 @@ pub(super) fn pruned_medial_axis(
 /// [`pruned_medial_axis`] on a triangulation of the points of `loops` alone. `vor` is
 /// freed first (the caller has no more use for it), so that the two diagrams' vertex
 /// positions never coexist at the memory peak.
-fn subset_axis(vor: Voronoi<'_>, loops: &[&Curve], frame: Frame) -> MedialAxis {
+fn subset_axis(vor: Voronoi<'_>, loops: &[&LocalCurve], frame: Frame) -> MedialAxis {
     let tri = vor.triangulation();
     drop(vor);
     // The subset is a selection of already validated distinct points: `axis_through`
     // cannot refuse it.
-    let at = |p: u32| tri.points[p as usize];
+    let at = |p: LocalPoint| tri.points[p.index()];
     axis_through(loops, at, at, frame).unwrap_or_default()
 }
 
@@ -300,12 +300,12 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&Curve], frame: Frame) -> MedialAxis {
 /// with no slack for the bumps its fit left (whiskers up to 28 % of the diameter on noisy
 /// blobs at 0.3 × the spacing).
 pub(super) fn fitted_medial_axis(
-    curves: &[Curve],
-    at: impl Fn(u32) -> [f64; 2],
-    sample: impl Fn(u32) -> [f64; 2],
+    curves: &[LocalCurve],
+    at: impl Fn(LocalPoint) -> [f64; 2],
+    sample: impl Fn(LocalPoint) -> [f64; 2],
     frame: Frame,
 ) -> Option<MedialAxis> {
-    let loops: Vec<&Curve> = curves.iter().filter(|c| c.closed).collect();
+    let loops: Vec<&LocalCurve> = curves.iter().filter(|c| c.closed).collect();
     if loops.is_empty() {
         return Some(MedialAxis::default());
     }
@@ -318,9 +318,9 @@ pub(super) fn fitted_medial_axis(
 /// finite points, all collinear, or the loops' edges through them no plane drawing (an edge
 /// through another loop point).
 fn axis_through(
-    loops: &[&Curve],
-    at: impl Fn(u32) -> [f64; 2],
-    noise_from: impl Fn(u32) -> [f64; 2],
+    loops: &[&LocalCurve],
+    at: impl Fn(LocalPoint) -> [f64; 2],
+    noise_from: impl Fn(LocalPoint) -> [f64; 2],
     frame: Frame,
 ) -> Option<MedialAxis> {
     let points: Vec<[f64; 2]> = loops
@@ -337,24 +337,24 @@ fn axis_through(
     // The subset's caller indices are positions in `points`, which lists the loops one
     // after the other: the loops in the subset's local indices.
     let mut position = 0u32;
-    let renumbered: Vec<Curve> = loops
+    let renumbered: Vec<LocalCurve> = loops
         .iter()
         .map(|c| {
             let positions = position..position + c.points.len() as u32;
             position += c.points.len() as u32;
-            Curve {
-                points: positions.map(|i| sub.local_index(i).get()).collect(),
+            LocalCurve {
+                points: positions.map(|i| sub.local_index(i)).collect(),
                 closed: true,
             }
         })
         .collect();
-    let renumbered: Vec<&Curve> = renumbered.iter().collect();
+    let renumbered: Vec<&LocalCurve> = renumbered.iter().collect();
     let edges = loop_edges(&renumbered);
     // The positions the noise is read from, by the subset's local index.
     let mut measured = vec![[0.0; 2]; sub.points.len()];
     for (original, local) in loops.iter().zip(&renumbered) {
         for (&p, &q) in original.points.iter().zip(&local.points) {
-            measured[q as usize] = noise_from(p);
+            measured[q.index()] = noise_from(p);
         }
     }
     let noise = noise_at_points(&renumbered, &measured);
@@ -364,10 +364,7 @@ fn axis_through(
     // their spacing, and the diagram's faces no longer lie on one side of the loops (a
     // fitted loop's axis then crossed its own curve). Samples' loops are crust edges,
     // Delaunay edges of all the points and so of theirs.
-    if edges
-        .iter()
-        .any(|&[a, b]| !vor.is_delaunay_edge(LocalPoint::new(a), LocalPoint::new(b)))
-    {
+    if edges.iter().any(|&[a, b]| !vor.is_delaunay_edge(a, b)) {
         return None;
     }
     let axis = {
@@ -388,11 +385,11 @@ fn axis_through(
 /// indices of `points`), by local index, negated (its sign bit set, `-0.0` too) where the
 /// samples zig-zag: oscillation at least [`CLEAN_OSCILLATION`]. One `f32` per point, as
 /// before the oscillation was read (the memory peak).
-fn noise_at_points(loops: &[&Curve], points: &[[f64; 2]]) -> Vec<f32> {
+fn noise_at_points(loops: &[&LocalCurve], points: &[[f64; 2]]) -> Vec<f32> {
     let mut noise = vec![0.0f32; points.len()];
     for c in loops {
         let n = c.points.len();
-        let at = |k: usize| points[c.points[k] as usize];
+        let at = |k: usize| points[c.points[k].index()];
         // In parallel over stretches of the loop (each value reads only its neighbours).
         let mut along = vec![0.0f32; n];
         parallel::fill_chunks(&mut along, |stretch, out| {
@@ -406,16 +403,16 @@ fn noise_at_points(loops: &[&Curve], points: &[[f64; 2]]) -> Vec<f32> {
             });
         });
         for (&p, value) in c.points.iter().zip(along) {
-            noise[p as usize] = value;
+            noise[p.index()] = value;
         }
     }
     noise
 }
 
-/// The edges of `loops` (local indices) as pairs, smaller first, in the loops' order. Not
+/// The edges of `loops` as pairs, smaller first, in the loops' order. Not
 /// sorted: what reads them marks sets, and along a loop the points are neighbours in
 /// memory too (sorting cost more than it saved in the half-edge search).
-fn loop_edges(loops: &[&Curve]) -> Vec<[u32; 2]> {
+fn loop_edges(loops: &[&LocalCurve]) -> Vec<[LocalPoint; 2]> {
     let mut edges = Vec::with_capacity(loops.iter().map(|c| c.points.len()).sum());
     for c in loops {
         let n = c.points.len();
@@ -427,17 +424,17 @@ fn loop_edges(loops: &[&Curve]) -> Vec<[u32; 2]> {
     edges
 }
 
-/// The points of `vor` on none of the loops `edges` (local pairs) with a face
-/// `inside` them. No loop edge ends at such a point, so all its faces have one parity.
+/// The points of `vor` on none of the loops `edges` with a face `inside` them. No loop
+/// edge ends at such a point, so all its faces have one parity.
 fn off_loop_points_inside(
     vor: &Voronoi<'_>,
-    edges: &[[u32; 2]],
+    edges: &[[LocalPoint; 2]],
     inside: &[bool],
 ) -> Vec<LocalPoint> {
     let mut on_loop = vec![false; vor.triangulation().distinct_point_count()];
     for &[a, b] in edges {
-        on_loop[a as usize] = true;
-        on_loop[b as usize] = true;
+        on_loop[a.index()] = true;
+        on_loop[b.index()] = true;
     }
     (vor.triangulation().local_points())
         .filter(|&p| !on_loop[p.index()] && vor.cell_vertices(p).any(|v| inside[v.index()]))
@@ -462,7 +459,7 @@ impl LoopMarks {
     /// `across`: whether a loop edge that is no edge of `vor`'s triangulation (nor a chord
     /// of a merged face) marks the faces it passes through, or leaves the marks
     /// `unresolved`.
-    fn new(vor: &Voronoi<'_>, edges: &[[u32; 2]], across: bool) -> LoopMarks {
+    fn new(vor: &Voronoi<'_>, edges: &[[LocalPoint; 2]], across: bool) -> LoopMarks {
         let tri = vor.triangulation();
         let halfedges = tri.halfedges();
         let mut on_loop = Bits::new(halfedges.len());
@@ -470,11 +467,11 @@ impl LoopMarks {
         let mut unresolved = false;
         // Finding a loop edge's half-edge walks around its end: in parallel.
         let found = parallel::map_range(edges.len(), |i| {
-            let [a, b] = edges[i].map(LocalPoint::new);
+            let [a, b] = edges[i];
             vor.delaunay_halfedge(a, b)
         });
         for (&edge, found) in edges.iter().zip(found) {
-            let [a, b] = edge.map(LocalPoint::new);
+            let [a, b] = edge;
             match found {
                 Some(e) => {
                     on_loop.set(e.index());
@@ -847,6 +844,7 @@ fn total_order_key(x: f64) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::reconstruct::Curve;
     use wdm_crust_testkit::Rng;
 
     /// The obtuse-angle test is the orientation of the circumcenter against the edge, on
@@ -887,12 +885,12 @@ mod tests {
 
     /// `curves` (caller indices) in the local indices of `tri`, as the pipeline hands
     /// them to the axis.
-    fn local_curves(tri: &Triangulation, curves: &[Curve]) -> Vec<Curve> {
+    fn local_curves(tri: &Triangulation, curves: &[Curve]) -> Vec<LocalCurve> {
         curves
             .iter()
-            .map(|c| Curve {
+            .map(|c| LocalCurve {
                 closed: c.closed,
-                points: c.points.iter().map(|&i| tri.local_index(i).get()).collect(),
+                points: c.points.iter().map(|&i| tri.local_index(i)).collect(),
             })
             .collect()
     }
@@ -957,7 +955,7 @@ mod tests {
             let tri = triangulate(&noisy).unwrap();
             let curves = local_curves(&tri, &curves);
             let with_cavity = pruned_medial_axis(tri.voronoi(), &curves, Frame::CALLER);
-            let loops: Vec<&Curve> = curves.iter().collect();
+            let loops: Vec<&LocalCurve> = curves.iter().collect();
             let via_subset = subset_axis(tri.voronoi(), &loops, Frame::CALLER);
             assert_eq!(segments(&direct), segments(&with_cavity), "round {round}");
             assert_eq!(segments(&direct), segments(&via_subset), "round {round}");

@@ -56,15 +56,24 @@ use super::thresholds::open_curves::{
     MIN_CLOSED_POINTS,
 };
 use crate::delaunay::Triangulation;
+use crate::ids::{ids, LocalPoint};
 use crate::kernel::metric::{length_order, scaled_length_order};
 use crate::voronoi::Voronoi;
 
+/// No loop, no position on one.
 const NONE: u32 = u32::MAX;
+
+/// No point (no neighbour along a chain or loop, no piece, no choice).
+const NO_POINT: LocalPoint = LocalPoint::new(u32::MAX);
 
 /// The edges of `edges` (local, distinct, `[a, b]` with `a < b`) settled into sure loops
 /// and proximity chains, every point on at most two edges; in no particular order (the
 /// curves are assembled from them).
-pub(super) fn settle(tri: &Triangulation, vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<[u32; 2]> {
+pub(super) fn settle(
+    tri: &Triangulation,
+    vor: &Voronoi<'_>,
+    edges: &[[LocalPoint; 2]],
+) -> Vec<[LocalPoint; 2]> {
     let points = &tri.points;
     let n = points.len();
     let mut loops = sure_loops(points, edges);
@@ -74,15 +83,15 @@ pub(super) fn settle(tri: &Triangulation, vor: &Voronoi<'_>, edges: &[[u32; 2]])
         return edges
             .iter()
             .copied()
-            .filter(|e| loops.of[e[0] as usize] != NONE)
+            .filter(|e| loops.of[e[0].index()] != NONE)
             .collect();
     }
     // Each round joins the free points into chains; a loop that a chain runs beside is
     // dissolved and its points join the next round (rule 4). At most one round a loop.
     let chain_edges = loop {
-        let free = |p: u32| loops.of[p as usize] == NONE;
+        let free = |p: LocalPoint| loops.of[p.index()] == NONE;
         // The Delaunay neighbours of the free points only: few on closed curves.
-        let listed: Vec<u32> = (0..n as u32).filter(|&p| free(p)).collect();
+        let listed: Vec<LocalPoint> = ids::<LocalPoint>(n).filter(|&p| free(p)).collect();
         let graph = DelaunayGraph::of_points(vor, &listed);
         let chain_edges = chains(&graph, points, &free);
         let beside = loops_beside_chains(&graph, points, &chain_edges, &loops);
@@ -93,21 +102,21 @@ pub(super) fn settle(tri: &Triangulation, vor: &Voronoi<'_>, edges: &[[u32; 2]])
             loops.dissolve(l);
         }
     };
-    let mut kept: Vec<[u32; 2]> = edges
+    let mut kept: Vec<[LocalPoint; 2]> = edges
         .iter()
         .copied()
         .filter(|e| {
-            loops.of[e[0] as usize] != NONE && loops.of[e[0] as usize] == loops.of[e[1] as usize]
+            loops.of[e[0].index()] != NONE && loops.of[e[0].index()] == loops.of[e[1].index()]
         })
         .collect();
     // Rule 5: the flow's paths between chords where proximity drew no curve.
     let mut on_chain = vec![false; n];
     for &p in chain_edges.iter().flatten() {
-        on_chain[p as usize] = true;
+        on_chain[p.index()] = true;
     }
     kept.extend(chain_edges);
     for path in &loops.fallbacks {
-        for run in path.split(|&p| on_chain[p as usize] || loops.of[p as usize] != NONE) {
+        for run in path.split(|&p| on_chain[p.index()] || loops.of[p.index()] != NONE) {
             if run.len() >= MIN_CHAIN_POINTS {
                 kept.extend(run.windows(2).map(|w| [w[0].min(w[1]), w[0].max(w[1])]));
             }
@@ -116,8 +125,8 @@ pub(super) fn settle(tri: &Triangulation, vor: &Voronoi<'_>, edges: &[[u32; 2]])
     debug_assert!({
         let mut degree = vec![0u8; n];
         kept.iter().flatten().all(|&p| {
-            degree[p as usize] += 1;
-            degree[p as usize] <= 2
+            degree[p.index()] += 1;
+            degree[p.index()] <= 2
         })
     });
     kept
@@ -126,25 +135,25 @@ pub(super) fn settle(tri: &Triangulation, vor: &Voronoi<'_>, edges: &[[u32; 2]])
 /// The sure loops (rule 1 of the module docs): each loop's points in order, and the loop of
 /// every point (`NONE` when free).
 struct SureLoops {
-    cycles: Vec<Vec<u32>>,
+    cycles: Vec<Vec<LocalPoint>>,
     of: Vec<u32>,
     /// The paths that the loops with chords leave without them (rule 5).
-    fallbacks: Vec<Vec<u32>>,
+    fallbacks: Vec<Vec<LocalPoint>>,
 }
 
 impl SureLoops {
     fn dissolve(&mut self, l: u32) {
         for &p in &self.cycles[l as usize] {
-            self.of[p as usize] = NONE;
+            self.of[p.index()] = NONE;
         }
     }
 
     /// The longer of the two loop edges at `p`, as its far end.
-    fn longer_step(&self, points: &[[f64; 2]], p: u32, position: &[u32]) -> u32 {
-        let cycle = &self.cycles[self.of[p as usize] as usize];
-        let (k, i) = (cycle.len(), position[p as usize] as usize);
+    fn longer_step(&self, points: &[[f64; 2]], p: LocalPoint, position: &[u32]) -> LocalPoint {
+        let cycle = &self.cycles[self.of[p.index()] as usize];
+        let (k, i) = (cycle.len(), position[p.index()] as usize);
         let (a, b) = (cycle[(i + 1) % k], cycle[(i + k - 1) % k]);
-        let at = |i: u32| points[i as usize];
+        let at = |i: LocalPoint| points[i.index()];
         if length_order(at(p), at(a), at(p), at(b)) == Ordering::Less {
             b
         } else {
@@ -154,18 +163,18 @@ impl SureLoops {
 }
 
 /// Which points lie on a sure loop of `edges` (rule 1 of the module docs).
-fn sure_loops(points: &[[f64; 2]], edges: &[[u32; 2]]) -> SureLoops {
+fn sure_loops(points: &[[f64; 2]], edges: &[[LocalPoint; 2]]) -> SureLoops {
     let n = points.len();
     // The two neighbours of every point of degree at most 2; degree above 2 marked.
-    let mut next = vec![[NONE; 2]; n];
+    let mut next = vec![[NO_POINT; 2]; n];
     let mut degree = vec![0u32; n];
     for &[a, b] in edges {
         for (p, q) in [(a, b), (b, a)] {
-            let d = degree[p as usize];
+            let d = degree[p.index()];
             if d < 2 {
-                next[p as usize][d as usize] = q;
+                next[p.index()][d as usize] = q;
             }
-            degree[p as usize] = d + 1;
+            degree[p.index()] = d + 1;
         }
     }
     let mut loops = SureLoops {
@@ -175,24 +184,24 @@ fn sure_loops(points: &[[f64; 2]], edges: &[[u32; 2]]) -> SureLoops {
     };
     let mut seen = vec![false; n];
     let mut cycle = Vec::new();
-    for start in 0..n as u32 {
-        if seen[start as usize] || degree[start as usize] != 2 {
+    for start in ids::<LocalPoint>(n) {
+        if seen[start.index()] || degree[start.index()] != 2 {
             continue;
         }
         // Walk from `start`; a simple cycle returns to it through degree-2 points only.
         cycle.clear();
-        let (mut prev, mut at) = (start, next[start as usize][0]);
+        let (mut prev, mut at) = (start, next[start.index()][0]);
         cycle.push(start);
-        seen[start as usize] = true;
+        seen[start.index()] = true;
         let mut simple = true;
         while at != start {
-            if degree[at as usize] != 2 || seen[at as usize] {
+            if degree[at.index()] != 2 || seen[at.index()] {
                 simple = false;
                 break;
             }
-            seen[at as usize] = true;
+            seen[at.index()] = true;
             cycle.push(at);
-            let [x, y] = next[at as usize];
+            let [x, y] = next[at.index()];
             (prev, at) = (at, if x == prev { y } else { x });
         }
         if !simple {
@@ -202,7 +211,7 @@ fn sure_loops(points: &[[f64; 2]], edges: &[[u32; 2]]) -> SureLoops {
         if chords.is_empty() {
             let l = loops.cycles.len() as u32;
             for &p in &cycle {
-                loops.of[p as usize] = l;
+                loops.of[p.index()] = l;
             }
             loops.cycles.push(cycle.clone());
         } else {
@@ -224,7 +233,7 @@ fn sure_loops(points: &[[f64; 2]], edges: &[[u32; 2]]) -> SureLoops {
 fn loops_beside_chains(
     graph: &DelaunayGraph,
     points: &[[f64; 2]],
-    chain_edges: &[[u32; 2]],
+    chain_edges: &[[LocalPoint; 2]],
     loops: &SureLoops,
 ) -> Vec<u32> {
     if chain_edges.is_empty() {
@@ -234,27 +243,27 @@ fn loops_beside_chains(
     let mut position = vec![NONE; n];
     for cycle in &loops.cycles {
         for (i, &p) in cycle.iter().enumerate() {
-            position[p as usize] = i as u32;
+            position[p.index()] = i as u32;
         }
     }
-    let at = |i: u32| points[i as usize];
+    let at = |i: LocalPoint| points[i.index()];
     let mut crowded = vec![false; n];
     let mut count = vec![0usize; loops.cycles.len()];
     let mut on_chain = vec![false; n];
     let mut chain_degree = vec![0u8; n];
     for &c in chain_edges.iter().flatten() {
-        chain_degree[c as usize] += 1;
+        chain_degree[c.index()] += 1;
     }
     let mut continued = vec![false; loops.cycles.len()];
     for &c in chain_edges.iter().flatten() {
-        if std::mem::replace(&mut on_chain[c as usize], true) {
+        if std::mem::replace(&mut on_chain[c.index()], true) {
             continue;
         }
         // A chain that ends nearer to a loop point than that point's longer loop step
         // goes on along the loop: one curve, which the flow closed around its end.
-        if chain_degree[c as usize] == 1 {
+        if chain_degree[c.index()] == 1 {
             for &p in graph.neighbours(c) {
-                let l = loops.of[p as usize];
+                let l = loops.of[p.index()];
                 if l != NONE {
                     let step = loops.longer_step(points, p, &position);
                     if length_order(at(p), at(c), at(p), at(step)) == Ordering::Less {
@@ -264,15 +273,15 @@ fn loops_beside_chains(
             }
         }
         for &p in graph.neighbours(c) {
-            let l = loops.of[p as usize];
-            if l == NONE || crowded[p as usize] {
+            let l = loops.of[p.index()];
+            if l == NONE || crowded[p.index()] {
                 continue;
             }
             let step = loops.longer_step(points, p, &position);
             if scaled_length_order(at(p), at(c), at(p), at(step), ISOLATION_DOUBLINGS)
                 != Ordering::Greater
             {
-                crowded[p as usize] = true;
+                crowded[p.index()] = true;
                 count[l as usize] += 1;
             }
         }
@@ -280,7 +289,7 @@ fn loops_beside_chains(
     (0..loops.cycles.len() as u32)
         .filter(|&l| {
             let cycle = &loops.cycles[l as usize];
-            loops.of[cycle[0] as usize] == l
+            loops.of[cycle[0].index()] == l
                 && (continued[l as usize] || 4 * count[l as usize] > cycle.len())
         })
         .collect()
@@ -292,9 +301,9 @@ fn loops_beside_chains(
 /// one nor the nearest-neighbour distance: noise puts samples next to each other, and one
 /// short step beside an ordinary one is no chord. A median over a wider window or the whole
 /// loop was measured and broke the loops of real noisy scans, whose spacing varies.)
-fn chords(points: &[[f64; 2]], cycle: &[u32]) -> Vec<usize> {
+fn chords(points: &[[f64; 2]], cycle: &[LocalPoint]) -> Vec<usize> {
     let k = cycle.len();
-    let at = |i: usize| points[cycle[i % k] as usize];
+    let at = |i: usize| points[cycle[i % k].index()];
     // Each edge's squared length in rounded arithmetic decides where it is far from the
     // bound (every edge of a closed curve against its first neighbour); the kernel decides
     // the rest exactly.
@@ -335,14 +344,14 @@ fn chords(points: &[[f64; 2]], cycle: &[u32]) -> Vec<usize> {
 /// `p` and `q` (their proposals `at_p`, `at_q`).
 fn is_long(
     points: &[[f64; 2]],
-    p: u32,
-    q: u32,
+    p: LocalPoint,
+    q: LocalPoint,
     at_p: Proposal,
     at_q: Proposal,
     doublings: u32,
 ) -> bool {
-    let at = |i: u32| points[i as usize];
-    let longer_than = |from: u32, nearest: Option<u32>| {
+    let at = |i: LocalPoint| points[i.index()];
+    let longer_than = |from: LocalPoint, nearest: Option<LocalPoint>| {
         nearest.is_some_and(|m| {
             scaled_length_order(at(p), at(q), at(from), at(m), doublings) == Ordering::Greater
         })
@@ -351,9 +360,13 @@ fn is_long(
 }
 
 /// The chain edges among the points on no sure loop (rules 2 and 3 of the module docs).
-fn chains(graph: &DelaunayGraph, points: &[[f64; 2]], free: &dyn Fn(u32) -> bool) -> Vec<[u32; 2]> {
+fn chains(
+    graph: &DelaunayGraph,
+    points: &[[f64; 2]],
+    free: &dyn Fn(LocalPoint) -> bool,
+) -> Vec<[LocalPoint; 2]> {
     let n = points.len();
-    let proposals: Vec<Proposal> = (0..n as u32)
+    let proposals: Vec<Proposal> = ids::<LocalPoint>(n)
         .map(|p| {
             if free(p) {
                 graph.proposal(points, p, free)
@@ -363,10 +376,10 @@ fn chains(graph: &DelaunayGraph, points: &[[f64; 2]], free: &dyn Fn(u32) -> bool
         })
         .collect();
     // Each proposed edge once, with whether both ends propose it.
-    let mut candidates: Vec<([u32; 2], bool)> = Vec::new();
-    for p in 0..n as u32 {
-        for q in proposals[p as usize].iter() {
-            let mutual = proposals[q as usize].contains(p);
+    let mut candidates: Vec<([LocalPoint; 2], bool)> = Vec::new();
+    for p in ids::<LocalPoint>(n) {
+        for q in proposals[p.index()].iter() {
+            let mutual = proposals[q.index()].contains(p);
             if mutual && q < p {
                 continue;
             }
@@ -374,8 +387,8 @@ fn chains(graph: &DelaunayGraph, points: &[[f64; 2]], free: &dyn Fn(u32) -> bool
                 points,
                 p,
                 q,
-                proposals[p as usize],
-                proposals[q as usize],
+                proposals[p.index()],
+                proposals[q.index()],
                 GAP_DOUBLINGS,
             ) {
                 continue;
@@ -383,7 +396,7 @@ fn chains(graph: &DelaunayGraph, points: &[[f64; 2]], free: &dyn Fn(u32) -> bool
             candidates.push(([p.min(q), p.max(q)], mutual));
         }
     }
-    let at = |i: u32| points[i as usize];
+    let at = |i: LocalPoint| points[i.index()];
     candidates.sort_unstable_by(|&(e, me), &(f, mf)| {
         mf.cmp(&me)
             .then_with(|| length_order(at(e[0]), at(e[1]), at(f[0]), at(f[1])))
@@ -397,24 +410,24 @@ fn chains(graph: &DelaunayGraph, points: &[[f64; 2]], free: &dyn Fn(u32) -> bool
     // Noise turns a step of the curve away from both its ends' proposals now and then (the
     // next sample falls less than 90° from the previous one): the chain ends there. Ends that
     // are Delaunay neighbours join, shortest first, under the same rules.
-    let mut along = vec![[NONE; 2]; n];
+    let mut along = vec![[NO_POINT; 2]; n];
     for &[a, b] in &greedy.taken {
         for (p, q) in [(a, b), (b, a)] {
-            let slot = usize::from(along[p as usize][0] != NONE);
-            along[p as usize][slot] = q;
+            let slot = usize::from(along[p.index()][0] != NO_POINT);
+            along[p.index()][slot] = q;
         }
     }
     // The chain's step at an end: the longer of its last two edges (noise makes single
     // steps short).
-    let end_step = |end: u32| -> Option<[u32; 2]> {
-        let first = along[end as usize][0];
-        if first == NONE {
+    let end_step = |end: LocalPoint| -> Option<[LocalPoint; 2]> {
+        let first = along[end.index()][0];
+        if first == NO_POINT {
             return None;
         }
-        let [x, y] = along[first as usize];
+        let [x, y] = along[first.index()];
         let second = if x == end { y } else { x };
         Some(
-            if second != NONE
+            if second != NO_POINT
                 && length_order(at(first), at(second), at(end), at(first)) == Ordering::Greater
             {
                 [first, second]
@@ -425,7 +438,7 @@ fn chains(graph: &DelaunayGraph, points: &[[f64; 2]], free: &dyn Fn(u32) -> bool
     };
     // A join is no longer than `2^JOIN_DOUBLINGS` times the step at each chain end it
     // joins: a break of one curve, not the gap between two.
-    let short = |p: u32, q: u32| {
+    let short = |p: LocalPoint, q: LocalPoint| {
         [(p, q), (q, p)].iter().all(|&(end, other)| {
             end_step(end).is_none_or(|[a, b]| {
                 scaled_length_order(at(end), at(other), at(a), at(b), JOIN_DOUBLINGS)
@@ -433,15 +446,15 @@ fn chains(graph: &DelaunayGraph, points: &[[f64; 2]], free: &dyn Fn(u32) -> bool
             })
         })
     };
-    let step: Vec<u32> = along.iter().map(|a| a[0]).collect();
+    let step: Vec<LocalPoint> = along.iter().map(|a| a[0]).collect();
     // Each end's nearest admissible end (or point on no chain); pairs that choose each
     // other join.
     let degree = &greedy.degree;
-    let open = |p: u32| free(p) && degree[p as usize] < 2;
-    let best: Vec<u32> = (0..n as u32)
+    let open = |p: LocalPoint| free(p) && degree[p.index()] < 2;
+    let best: Vec<LocalPoint> = ids::<LocalPoint>(n)
         .map(|p| {
             if !open(p) {
-                return NONE;
+                return NO_POINT;
             }
             graph
                 .neighbours(p)
@@ -449,18 +462,18 @@ fn chains(graph: &DelaunayGraph, points: &[[f64; 2]], free: &dyn Fn(u32) -> bool
                 .copied()
                 .filter(|&q| {
                     open(q)
-                        && step[p as usize] != q
-                        && degree[p as usize] + degree[q as usize] >= 1
+                        && step[p.index()] != q
+                        && degree[p.index()] + degree[q.index()] >= 1
                         && short(p, q)
                 })
                 .min_by(|&a, &b| closer(at(p), at(a), at(b)))
-                .unwrap_or(NONE)
+                .unwrap_or(NO_POINT)
         })
         .collect();
-    let mut joins: Vec<[u32; 2]> = (0..n as u32)
+    let mut joins: Vec<[LocalPoint; 2]> = ids::<LocalPoint>(n)
         .filter_map(|p| {
-            let q = best[p as usize];
-            (q != NONE && q > p && best[q as usize] == p).then_some([p, q])
+            let q = best[p.index()];
+            (q != NO_POINT && q > p && best[q.index()] == p).then_some([p, q])
         })
         .collect();
     joins.sort_unstable_by(|e, f| {
@@ -476,7 +489,7 @@ fn chains(graph: &DelaunayGraph, points: &[[f64; 2]], free: &dyn Fn(u32) -> bool
 struct Greedy {
     degree: Vec<u8>,
     pieces: Pieces,
-    taken: Vec<[u32; 2]>,
+    taken: Vec<[LocalPoint; 2]>,
 }
 
 impl Greedy {
@@ -491,50 +504,50 @@ impl Greedy {
     /// Takes `[a, b]` if both have fewer than two edges and, when they are the ends of one
     /// chain, the chain has at least [`MIN_CLOSED_POINTS`] points (three close samples of a
     /// noisy curve propose each other all round).
-    fn take(&mut self, [a, b]: [u32; 2]) {
-        if self.degree[a as usize] >= 2 || self.degree[b as usize] >= 2 {
+    fn take(&mut self, [a, b]: [LocalPoint; 2]) {
+        if self.degree[a.index()] >= 2 || self.degree[b.index()] >= 2 {
             return;
         }
         let (ra, rb) = (self.pieces.root(a), self.pieces.root(b));
-        if ra == rb && (self.pieces.size[ra as usize] as usize) < MIN_CLOSED_POINTS {
+        if ra == rb && (self.pieces.size[ra.index()] as usize) < MIN_CLOSED_POINTS {
             return;
         }
         self.pieces.join(ra, rb);
-        self.degree[a as usize] += 1;
-        self.degree[b as usize] += 1;
+        self.degree[a.index()] += 1;
+        self.degree[b.index()] += 1;
         self.taken.push([a, b]);
     }
 }
 
 /// Union–find over the points: the chains drawn so far.
 struct Pieces {
-    parent: Vec<u32>,
+    parent: Vec<LocalPoint>,
     size: Vec<u32>,
 }
 
 impl Pieces {
     fn new(n: usize) -> Pieces {
         Pieces {
-            parent: (0..n as u32).collect(),
+            parent: ids(n).collect(),
             size: vec![1; n],
         }
     }
 
-    fn root(&mut self, mut p: u32) -> u32 {
-        while self.parent[p as usize] != p {
-            let up = self.parent[self.parent[p as usize] as usize];
-            self.parent[p as usize] = up;
+    fn root(&mut self, mut p: LocalPoint) -> LocalPoint {
+        while self.parent[p.index()] != p {
+            let up = self.parent[self.parent[p.index()].index()];
+            self.parent[p.index()] = up;
             p = up;
         }
         p
     }
 
     /// Joins the pieces of the roots `a` and `b` (the smaller root stays).
-    fn join(&mut self, a: u32, b: u32) {
+    fn join(&mut self, a: LocalPoint, b: LocalPoint) {
         if a != b {
             let (keep, gone) = (a.min(b), a.max(b));
-            self.parent[gone as usize] = keep;
-            self.size[keep as usize] += self.size[gone as usize];
+            self.parent[gone.index()] = keep;
+            self.size[keep.index()] += self.size[gone.index()];
         }
     }
 }
@@ -544,32 +557,32 @@ impl Pieces {
 fn keep_curve_like_pieces(
     graph: &DelaunayGraph,
     points: &[[f64; 2]],
-    edges: Vec<[u32; 2]>,
-) -> Vec<[u32; 2]> {
+    edges: Vec<[LocalPoint; 2]>,
+) -> Vec<[LocalPoint; 2]> {
     let n = points.len();
-    let mut next = vec![[NONE; 2]; n];
+    let mut next = vec![[NO_POINT; 2]; n];
     for &[a, b] in &edges {
         for (p, q) in [(a, b), (b, a)] {
-            let slot = usize::from(next[p as usize][0] != NONE);
-            next[p as usize][slot] = q;
+            let slot = usize::from(next[p.index()][0] != NO_POINT);
+            next[p.index()][slot] = q;
         }
     }
     // Each piece's points, found by a walk from each point not yet labelled; labelled by
     // their first point.
-    let mut piece = vec![NONE; n];
-    let mut pieces: Vec<Vec<u32>> = Vec::new();
-    for start in 0..n as u32 {
-        if piece[start as usize] != NONE || next[start as usize][0] == NONE {
+    let mut piece = vec![NO_POINT; n];
+    let mut pieces: Vec<Vec<LocalPoint>> = Vec::new();
+    for start in ids::<LocalPoint>(n) {
+        if piece[start.index()] != NO_POINT || next[start.index()][0] == NO_POINT {
             continue;
         }
         let mut members = Vec::new();
         let mut stack = vec![start];
-        piece[start as usize] = start;
+        piece[start.index()] = start;
         while let Some(p) = stack.pop() {
             members.push(p);
-            for q in next[p as usize] {
-                if q != NONE && piece[q as usize] == NONE {
-                    piece[q as usize] = start;
+            for q in next[p.index()] {
+                if q != NO_POINT && piece[q.index()] == NO_POINT {
+                    piece[q.index()] = start;
                     stack.push(q);
                 }
             }
@@ -579,23 +592,23 @@ fn keep_curve_like_pieces(
         }
     }
     let mut keep = vec![false; n];
-    let isolated_enough = |members: &[u32]| {
+    let isolated_enough = |members: &[LocalPoint]| {
         let isolated = members
             .iter()
-            .filter(|&&p| is_isolated(graph, points, p, next[p as usize], &piece))
+            .filter(|&&p| is_isolated(graph, points, p, next[p.index()], &piece))
             .count();
         4 * isolated >= 3 * members.len()
     };
     for members in pieces {
         if isolated_enough(&members) {
             for &p in &members {
-                keep[p as usize] = true;
+                keep[p.index()] = true;
             }
         }
     }
     edges
         .into_iter()
-        .filter(|&[a, _]| keep[a as usize])
+        .filter(|&[a, _]| keep[a.index()])
         .collect()
 }
 
@@ -606,13 +619,13 @@ fn keep_curve_like_pieces(
 fn is_isolated(
     graph: &DelaunayGraph,
     points: &[[f64; 2]],
-    p: u32,
-    along: [u32; 2],
-    piece: &[u32],
+    p: LocalPoint,
+    along: [LocalPoint; 2],
+    piece: &[LocalPoint],
 ) -> bool {
-    let at = |i: u32| points[i as usize];
+    let at = |i: LocalPoint| points[i.index()];
     let step = match along {
-        [a, NONE] => a,
+        [a, NO_POINT] => a,
         [a, b] => {
             if length_order(at(p), at(a), at(p), at(b)) == Ordering::Less {
                 b
@@ -621,11 +634,11 @@ fn is_isolated(
             }
         }
     };
-    let own = piece[p as usize];
+    let own = piece[p.index()];
     graph
         .neighbours(p)
         .iter()
-        .filter(|&&o| piece[o as usize] != own)
+        .filter(|&&o| piece[o.index()] != own)
         .all(|&o| {
             scaled_length_order(at(p), at(o), at(p), at(step), ISOLATION_DOUBLINGS)
                 == Ordering::Greater

@@ -19,7 +19,7 @@ use super::wdm::{self, Label, LabelRule};
 use super::{crust, nn_crust};
 use crate::delaunay::Triangulation;
 use crate::error::Error;
-use crate::ids::{typed_edges, untyped_edges, LocalPoint};
+use crate::ids::LocalPoint;
 use crate::voronoi::Voronoi;
 
 /// WDM_CRUST and WDM_MAT of `points` with the default [`Options`].
@@ -210,14 +210,14 @@ fn baseline(tri: &Triangulation, options: &Options, lap: &mut dyn FnMut(Phase)) 
     let edges = if tri.is_degenerate() {
         chain_edges(tri)
     } else if options.algorithm() == Algorithm::Crust {
-        untyped_edges(crust::edges_of(tri))
+        crust::edges_of(tri)
     } else {
-        untyped_edges(nn_crust::edges_of(tri))
+        nn_crust::edges_of(tri)
     };
     lap(Phase::Extract);
     let curves = assemble(tri, &edges);
-    let unassigned = untouched_points(tri, edges.iter().map(|e| e.map(LocalPoint::new)));
-    let edges = tri.to_input_edges(typed_edges(edges));
+    let unassigned = untouched_points(tri, edges.iter().copied());
+    let edges = tri.to_input_edges(edges);
     lap(Phase::Curves);
     Outcome {
         labels: Vec::new(),
@@ -261,7 +261,7 @@ struct WdmRun<'t> {
     vor: Voronoi<'t>,
     labels: Vec<Label>,
     /// The edges so far: the first pass's, then the repairs' and peeling's changes.
-    edges: Vec<[u32; 2]>,
+    edges: Vec<[LocalPoint; 2]>,
     /// What the detour repair changed.
     repair: Repair,
     /// How many edges there were after the repairs: those after them are peeling's.
@@ -272,10 +272,10 @@ struct WdmRun<'t> {
 /// The curves of a WDM run in local indices (until the axis has read them), its unassigned
 /// points, and for the raw axis the edges of the later passes and those of the holes.
 struct Assembly {
-    curves: Vec<curves::Curve>,
+    curves: Vec<curves::LocalCurve>,
     unassigned: Vec<u32>,
-    later_pass: Vec<[u32; 2]>,
-    holes: Vec<[u32; 2]>,
+    later_pass: Vec<[LocalPoint; 2]>,
+    holes: Vec<[LocalPoint; 2]>,
 }
 
 impl<'t> WdmRun<'t> {
@@ -364,16 +364,16 @@ impl<'t> WdmRun<'t> {
         lap(Phase::OpenCurves);
         // In local indices until the axis has read them (see `assemble_unnamed`).
         let curves = curves::assemble_unnamed(tri.points.len(), &edges, &tri.points, |p| {
-            tri.input_index(LocalPoint::new(p))
+            tri.input_index(p)
         });
-        let unassigned = untouched_points(tri, edges.iter().map(|e| e.map(LocalPoint::new)));
+        let unassigned = untouched_points(tri, edges.iter().copied());
         let holes = if holes_possible {
             // The edges are distinct: those of the first pass the repair kept, then the
             // later ones. So a final edge is none of the first pass's exactly when it is a
             // later one that the repair had not taken out of the first pass (a later pass
             // may draw again an edge between points a swap left off the curves).
             let removed = &self.repair.removed;
-            let not_first_pass = |e: &[u32; 2]| {
+            let not_first_pass = |e: &[LocalPoint; 2]| {
                 later_pass.binary_search(e).is_ok() && removed.binary_search(e).is_err()
             };
             hole_edges(&self.vor, &curves, not_first_pass)
@@ -402,7 +402,7 @@ impl<'t> WdmRun<'t> {
         fitted: Option<Vec<Option<[f64; 2]>>>,
     ) -> Outcome {
         let Assembly {
-            mut curves,
+            curves,
             unassigned,
             later_pass,
             holes,
@@ -441,9 +441,10 @@ impl<'t> WdmRun<'t> {
                 medial_axis(&vor, &combined, &later_pass, frame)
             }
         };
-        for p in curves.iter_mut().flat_map(|c| c.points.iter_mut()) {
-            *p = tri.input_index(LocalPoint::new(*p));
-        }
+        let curves: Vec<curves::Curve> = curves
+            .into_iter()
+            .map(|c| c.named(|p| tri.input_index(p)))
+            .collect();
         let edges = curves::edges_of(&curves);
         Outcome {
             labels,
@@ -463,16 +464,16 @@ impl<'t> WdmRun<'t> {
 /// loops draw no region (see [`fitted_medial_axis`]).
 fn axis_of_fitted(
     tri: &Triangulation,
-    curves: &[curves::Curve],
+    curves: &[curves::LocalCurve],
     moved: &[Option<[f64; 2]>],
     frame: Frame,
 ) -> Option<MedialAxis> {
     let mut on_loops = curves.iter().filter(|c| c.closed).flat_map(|c| &c.points);
-    if on_loops.all(|&p| moved[p as usize].is_none()) {
+    if on_loops.all(|&p| moved[p.index()].is_none()) {
         return None;
     }
-    let at = |p: u32| moved[p as usize].unwrap_or(tri.points[p as usize]);
-    fitted_medial_axis(curves, at, |p| tri.points[p as usize], frame)
+    let at = |p: LocalPoint| moved[p.index()].unwrap_or(tri.points[p.index()]);
+    fitted_medial_axis(curves, at, |p| tri.points[p.index()], frame)
 }
 
 /// The reconstruction of a dense band through its `representatives` (local indices of
@@ -484,13 +485,13 @@ fn thinned(
     points: &[[f64; 2]],
     mut tri: Triangulation,
     frame: Frame,
-    representatives: &[u32],
+    representatives: &[LocalPoint],
     options: &Options,
     on_phase: &mut dyn FnMut(Phase, std::time::Duration),
 ) -> Result<Reconstruction, Error> {
     let mut ids: Vec<u32> = representatives
         .iter()
-        .map(|&p| tri.input_index(LocalPoint::new(p)))
+        .map(|&p| tri.input_index(p))
         .collect();
     ids.sort_unstable();
     let chosen: Vec<[f64; 2]> = ids.iter().map(|&i| points[i as usize]).collect();
@@ -575,22 +576,20 @@ fn smoothing(
 }
 
 /// `curves` (caller indices) in the local indices of `tri`.
-fn local_curves(tri: &Triangulation, curves: &[curves::Curve]) -> Vec<curves::Curve> {
+fn local_curves(tri: &Triangulation, curves: &[curves::Curve]) -> Vec<curves::LocalCurve> {
     curves
         .iter()
-        .map(|c| curves::Curve {
+        .map(|c| curves::LocalCurve {
             closed: c.closed,
-            points: c.points.iter().map(|&i| tri.local_index(i).get()).collect(),
+            points: c.points.iter().map(|&i| tri.local_index(i)).collect(),
         })
         .collect()
 }
 
 /// The curves of distinct local `edges`, in caller indices (see
 /// [`curves::assemble_named`]).
-fn assemble(tri: &Triangulation, edges: &[[u32; 2]]) -> Vec<curves::Curve> {
-    curves::assemble_named(tri.points.len(), edges, &tri.points, |p| {
-        tri.input_index(LocalPoint::new(p))
-    })
+fn assemble(tri: &Triangulation, edges: &[[LocalPoint; 2]]) -> Vec<curves::Curve> {
+    curves::assemble_named(tri.points.len(), edges, &tri.points, |p| tri.input_index(p))
 }
 
 #[cfg(test)]
@@ -703,11 +702,7 @@ mod tests {
                 ears_repaired += usize::from(repaired > 0);
                 assert_eq!(rec.labels(), &labels[..], "round {round}");
                 let first_pass = public_crust_edges(&vor, &labels);
-                assert_eq!(
-                    tri.to_input_edges(typed_edges(local)),
-                    first_pass,
-                    "round {round}"
-                );
+                assert_eq!(tri.to_input_edges(local), first_pass, "round {round}");
                 let delaunay: BTreeSet<[u32; 2]> = tri
                     .halfedge_ids()
                     .map(|e| {

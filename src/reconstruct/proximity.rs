@@ -25,12 +25,12 @@ use crate::kernel::Sign;
 use crate::predicates::{incircle, CirclePosition};
 use crate::voronoi::Voronoi;
 
-/// Adjacency lists of the Delaunay graph (local indices) in compressed rows.
+/// Adjacency lists of the Delaunay graph in compressed rows.
 pub(super) struct DelaunayGraph {
     /// Where each point's row starts in `targets`; with `row_of`, where the `p`-th listed
     /// point's row starts.
     start: Vec<usize>,
-    targets: Vec<u32>,
+    targets: Vec<LocalPoint>,
     /// For a graph of some points' rows only (`of_points`), each point's row, `u32::MAX`
     /// when not listed; empty when every point has its row.
     row_of: Vec<u32>,
@@ -40,19 +40,19 @@ pub(super) struct DelaunayGraph {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(super) struct Proposal {
     /// The nearest neighbour, if any candidate was admitted.
-    pub nearest: Option<u32>,
+    pub nearest: Option<LocalPoint>,
     /// The nearest candidate strictly more than 90° away from the nearest neighbour.
-    pub half: Option<u32>,
+    pub half: Option<LocalPoint>,
 }
 
 impl Proposal {
     /// The proposed neighbours: the nearest, then the half neighbour.
-    pub fn iter(self) -> impl Iterator<Item = u32> {
+    pub fn iter(self) -> impl Iterator<Item = LocalPoint> {
         self.nearest.into_iter().chain(self.half)
     }
 
     /// Whether `q` is one of the proposed neighbours.
-    pub fn contains(self, q: u32) -> bool {
+    pub fn contains(self, q: LocalPoint) -> bool {
         self.nearest == Some(q) || self.half == Some(q)
     }
 }
@@ -64,13 +64,13 @@ impl DelaunayGraph {
     }
 
     /// [`of`](Self::of).
-    fn of_rows(tri: &Triangulation, row: impl Fn(u32) -> bool) -> DelaunayGraph {
+    fn of_rows(tri: &Triangulation, row: impl Fn(LocalPoint) -> bool) -> DelaunayGraph {
         let points = &tri.points;
         let halfedges = tri.halfedges();
-        let mut pairs: Vec<(u32, u32)> = Vec::new();
+        let mut pairs: Vec<(LocalPoint, LocalPoint)> = Vec::new();
         for (e, &twin) in tri.halfedge_ids().zip(halfedges) {
-            let (a, b) = (tri.org(e).get(), tri.dest(e).get());
-            let mut push = |p: u32, q: u32| {
+            let (a, b) = (tri.org(e), tri.dest(e));
+            let mut push = |p: LocalPoint, q: LocalPoint| {
                 if row(p) {
                     pairs.push((p, q));
                 }
@@ -85,19 +85,19 @@ impl DelaunayGraph {
             if twin < e {
                 continue;
             }
-            let c = tri.org(e.prev()).get();
-            let d = tri.org(twin.prev()).get();
-            let at = |i: u32| points[i as usize];
+            let c = tri.org(e.prev());
+            let d = tri.org(twin.prev());
+            let at = |i: LocalPoint| points[i.index()];
             if (row(a) || row(b)) && incircle(at(a), at(b), at(c), at(d)) != CirclePosition::On {
                 push(a, b);
                 push(b, a);
             }
-            debug_assert_eq!(tri.org(e.next()).get(), b);
+            debug_assert_eq!(tri.org(e.next()), b);
         }
         pairs.sort_unstable();
         let mut start = vec![0usize; points.len() + 1];
         for &(a, _) in &pairs {
-            start[a as usize + 1] += 1;
+            start[a.index() + 1] += 1;
         }
         for i in 0..points.len() {
             start[i + 1] += start[i];
@@ -111,15 +111,15 @@ impl DelaunayGraph {
 
     /// The rows of the points `listed` alone, read off the dual around each of them: work in
     /// the number of listed points and their degrees, not in the size of the triangulation.
-    pub fn of_points(vor: &Voronoi<'_>, listed: &[u32]) -> DelaunayGraph {
+    pub fn of_points(vor: &Voronoi<'_>, listed: &[LocalPoint]) -> DelaunayGraph {
         let n = vor.triangulation().points.len();
         let mut row_of = vec![u32::MAX; n];
         let mut start = Vec::with_capacity(listed.len() + 1);
         let mut targets = Vec::new();
         for (r, &p) in listed.iter().enumerate() {
-            row_of[p as usize] = r as u32;
+            row_of[p.index()] = r as u32;
             start.push(targets.len());
-            targets.extend(vor.dual_neighbours(LocalPoint::new(p)).map(LocalPoint::get));
+            targets.extend(vor.dual_neighbours(p));
         }
         start.push(targets.len());
         DelaunayGraph {
@@ -130,11 +130,11 @@ impl DelaunayGraph {
     }
 
     /// The Delaunay neighbours of `p` (none when its row was not built).
-    pub fn neighbours(&self, p: u32) -> &[u32] {
+    pub fn neighbours(&self, p: LocalPoint) -> &[LocalPoint] {
         let r = if self.row_of.is_empty() {
-            p as usize
+            p.index()
         } else {
-            match self.row_of[p as usize] {
+            match self.row_of[p.index()] {
                 u32::MAX => return &[],
                 r => r as usize,
             }
@@ -144,21 +144,26 @@ impl DelaunayGraph {
 
     /// The nearest and the half neighbour of `p` among its Delaunay neighbours `s` with
     /// `admit(s)`.
-    pub fn proposal(&self, points: &[[f64; 2]], p: u32, admit: impl Fn(u32) -> bool) -> Proposal {
+    pub fn proposal(
+        &self,
+        points: &[[f64; 2]],
+        p: LocalPoint,
+        admit: impl Fn(LocalPoint) -> bool,
+    ) -> Proposal {
         let around = self.neighbours(p);
-        let pp = points[p as usize];
-        let nearest = |candidates: &mut dyn Iterator<Item = u32>| {
-            candidates.min_by(|&a, &b| closer(pp, points[a as usize], points[b as usize]))
+        let pp = points[p.index()];
+        let nearest = |candidates: &mut dyn Iterator<Item = LocalPoint>| {
+            candidates.min_by(|&a, &b| closer(pp, points[a.index()], points[b.index()]))
         };
         let Some(q) = nearest(&mut around.iter().copied().filter(|&s| admit(s))) else {
             return Proposal::default();
         };
-        let pq = points[q as usize];
+        let pq = points[q.index()];
         let half = nearest(
             &mut around
                 .iter()
                 .copied()
-                .filter(|&s| admit(s) && dot_sign(pp, points[s as usize], pq) == Sign::Negative),
+                .filter(|&s| admit(s) && dot_sign(pp, points[s.index()], pq) == Sign::Negative),
         );
         Proposal {
             nearest: Some(q),

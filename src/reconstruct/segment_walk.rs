@@ -27,9 +27,8 @@ pub(super) fn crosses_a_curve(
         return false;
     }
     let tri = full.triangulation();
-    let on_curve = |u: LocalPoint, v: LocalPoint| {
-        (curve.neighbours(u.get()).iter()).any(|&(_, w)| w == v.get())
-    };
+    let on_curve =
+        |u: LocalPoint, v: LocalPoint| (curve.neighbours(u).iter()).any(|&(_, w)| w == v);
     let reached = walk(full, a, b, |x| {
         if on_curve(tri.org(x), tri.dest(x)) {
             ControlFlow::Break(())
@@ -171,8 +170,13 @@ mod tests {
     }
 
     /// The reference: every curve edge and every point, tested against the segment.
-    fn crosses_by_brute_force(points: &[[f64; 2]], curve: &[[u32; 2]], a: u32, b: u32) -> bool {
-        let (pa, pb) = (points[a as usize], points[b as usize]);
+    fn crosses_by_brute_force(
+        points: &[[f64; 2]],
+        curve: &[[LocalPoint; 2]],
+        a: LocalPoint,
+        b: LocalPoint,
+    ) -> bool {
+        let (pa, pb) = (points[a.index()], points[b.index()]);
         let strictly_between = |q: [f64; 2]| {
             let inside = |x: f64, y: f64, z: f64| x.min(z) <= y && y <= x.max(z);
             orient(pa, pb, q) == Sign::Zero
@@ -183,7 +187,7 @@ mod tests {
         };
         let on_segment = points.iter().any(|&q| strictly_between(q));
         let crossing = curve.iter().any(|&[u, v]| {
-            let (pu, pv) = (points[u as usize], points[v as usize]);
+            let (pu, pv) = (points[u.index()], points[v.index()]);
             [u, v].iter().all(|&w| w != a && w != b)
                 && opposite(orient(pa, pb, pu), orient(pa, pb, pv))
                 && opposite(orient(pu, pv, pa), orient(pu, pv, pb))
@@ -252,10 +256,10 @@ mod tests {
             let local = &tri.points;
             let m = local.len() as u32;
             // A random third of the triangulation's edges is the "curve".
-            let mut curve: Vec<[u32; 2]> = tri
+            let mut curve: Vec<[LocalPoint; 2]> = tri
                 .halfedge_ids()
                 .map(|e| {
-                    let (u, v) = (tri.org(e).get(), tri.dest(e).get());
+                    let (u, v) = (tri.org(e), tri.dest(e));
                     [u.min(v), u.max(v)]
                 })
                 .filter(|_| rng.below(3) == 0)
@@ -265,10 +269,10 @@ mod tests {
             let adjacency = Adjacency::new(local.len(), &curve);
             for _ in 0..30 {
                 let (a, b) = (rng.below(m as usize) as u32, rng.below(m as usize) as u32);
-                let (la, lb) = (LocalPoint::new(a), LocalPoint::new(b));
+                let (a, b) = (LocalPoint::new(a), LocalPoint::new(b));
                 let expected =
-                    !vor.is_delaunay_edge(la, lb) && crosses_by_brute_force(local, &curve, a, b);
-                let got = crosses_a_curve(&vor, &adjacency, la, lb);
+                    !vor.is_delaunay_edge(a, b) && crosses_by_brute_force(local, &curve, a, b);
+                let got = crosses_a_curve(&vor, &adjacency, a, b);
                 assert_eq!(got, expected && a != b, "round {round}: {a} → {b}");
                 crossings += usize::from(got);
             }

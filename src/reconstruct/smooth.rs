@@ -63,7 +63,7 @@ mod crossings;
 
 use std::collections::{BinaryHeap, HashMap, HashSet};
 
-use super::curves::Curve;
+use super::curves::LocalCurve;
 use super::delaunay_graph::{FastHash, Graph, Waiting};
 use super::lengths::distance;
 use super::thresholds::smooth::{
@@ -72,6 +72,7 @@ use super::thresholds::smooth::{
     ROBUST_ITERATIONS, SCALE_STEP, SHIFT_RESIDUALS, SIDED_PREFERENCE, TUKEY, WINDOWS, ZIGZAG_SHARE,
 };
 use crate::delaunay::Triangulation;
+use crate::ids::LocalPoint;
 use crate::kernel::{orient, Sign};
 use crate::parallel;
 
@@ -81,7 +82,10 @@ const RESIDUAL_FLOOR: f64 = 1e-12;
 
 /// The fitted position of every point of `curves` (local indices, in the frame of `tri`),
 /// `None` for a point that stays where it is; indexed by local point.
-pub(super) fn fitted_positions(tri: &Triangulation, curves: &[Curve]) -> Vec<Option<[f64; 2]>> {
+pub(super) fn fitted_positions(
+    tri: &Triangulation,
+    curves: &[LocalCurve],
+) -> Vec<Option<[f64; 2]>> {
     let n = tri.points.len();
     let mut moved = vec![None; n];
     if tri.is_degenerate() || curves.is_empty() {
@@ -96,7 +100,7 @@ pub(super) fn fitted_positions(tri: &Triangulation, curves: &[Curve]) -> Vec<Opt
         let edges = if c.closed { k } else { k.saturating_sub(1) };
         for i in 0..edges {
             for p in [c.points[i], c.points[(i + 1) % k]] {
-                degree[p as usize] = degree[p as usize].saturating_add(1);
+                degree[p.index()] = degree[p.index()].saturating_add(1);
             }
         }
     }
@@ -106,7 +110,7 @@ pub(super) fn fitted_positions(tri: &Triangulation, curves: &[Curve]) -> Vec<Opt
             continue;
         }
         for (i, &p) in c.points.iter().enumerate() {
-            if degree[p as usize] <= 2 {
+            if degree[p.index()] <= 2 {
                 vertices.push((j, i));
             }
         }
@@ -116,7 +120,7 @@ pub(super) fn fitted_positions(tri: &Triangulation, curves: &[Curve]) -> Vec<Opt
         fit_vertex(tri, &graph, &curves[j], i)
     });
     for (&(j, i), fit) in vertices.iter().zip(fits) {
-        moved[curves[j].points[i] as usize] = fit;
+        moved[curves[j].points[i].index()] = fit;
     }
     crossings::undo_crossings(&tri.points, curves, &mut moved);
     moved
@@ -129,12 +133,12 @@ pub(super) fn fitted_positions(tri: &Triangulation, curves: &[Curve]) -> Vec<Opt
 /// every run between inflections, which it samples with several vertices, so none do. A
 /// curve that does not zigzag is left as it is: a fit could only trade its samples' exact
 /// positions for the fit's bias.
-fn zigzags(points: &[[f64; 2]], curve: &Curve) -> bool {
+fn zigzags(points: &[[f64; 2]], curve: &LocalCurve) -> bool {
     let k = curve.points.len();
     if k < 5 {
         return false;
     }
-    let at = |i: usize| points[curve.points[i % k] as usize];
+    let at = |i: usize| points[curve.points[i % k].index()];
     // The turn at `b`, `Zero` where it is below [`FLAT`] (a straight run of clean samples
     // that rounding put a hair off its line).
     let turn = |a: [f64; 2], b: [f64; 2], c: [f64; 2]| {
@@ -245,12 +249,17 @@ impl Family {
 
 /// The fitted position of the `i`-th vertex of `curve` (local indices); `None` where no
 /// window is a curve piece, the samples are clean, or the arithmetic fails.
-fn fit_vertex(tri: &Triangulation, graph: &Graph, curve: &Curve, i: usize) -> Option<[f64; 2]> {
-    let at = |q: u32| tri.points[q as usize];
+fn fit_vertex(
+    tri: &Triangulation,
+    graph: &Graph,
+    curve: &LocalCurve,
+    i: usize,
+) -> Option<[f64; 2]> {
+    let at = |q: LocalPoint| tri.points[q.index()];
     let k = curve.points.len();
     // The vertex `offset` places along the curve (`None` past a chain's end; on a loop,
     // the two directions never meet).
-    let along = |offset: isize| -> Option<u32> {
+    let along = |offset: isize| -> Option<LocalPoint> {
         let j = i as isize + offset;
         if curve.closed {
             (2 * offset.unsigned_abs() < k).then(|| curve.points[j.rem_euclid(k as isize) as usize])
@@ -276,27 +285,31 @@ fn fit_vertex(tri: &Triangulation, graph: &Graph, curve: &Curve, i: usize) -> Op
     // vertices, whatever the corner's angle and however unequal the steps.
     // A sample that is a guide vertex takes its side at once (on a clean curve every
     // sample is, and a search of the guide for each would cost the window's size squared).
-    let mut guide: Vec<(u32, i8)> = vec![(p, 0)];
-    let mut guide_side: HashMap<u32, i8, FastHash> = HashMap::default();
+    let mut guide: Vec<(LocalPoint, i8)> = vec![(p, 0)];
+    let mut guide_side: HashMap<LocalPoint, i8, FastHash> = HashMap::default();
     guide_side.insert(p, 0);
     let mut walked = [0isize; 2];
-    let mut extend =
-        |guide: &mut Vec<(u32, i8)>, guide_side: &mut HashMap<u32, i8, FastHash>, radius: f64| {
-            for (d, sign) in [(0, 1isize), (1, -1)] {
-                while guide.len() < MAX_WINDOW_POINTS {
-                    let Some(q) = along(sign * (walked[d] + 1)) else {
-                        break;
-                    };
-                    walked[d] += 1;
-                    guide.push((q, sign as i8));
-                    guide_side.entry(q).or_insert(sign as i8);
-                    if !at_most(distance(o, at(q)), radius) {
-                        break;
-                    }
+    let mut extend = |guide: &mut Vec<(LocalPoint, i8)>,
+                      guide_side: &mut HashMap<LocalPoint, i8, FastHash>,
+                      radius: f64| {
+        for (d, sign) in [(0, 1isize), (1, -1)] {
+            while guide.len() < MAX_WINDOW_POINTS {
+                let Some(q) = along(sign * (walked[d] + 1)) else {
+                    break;
+                };
+                walked[d] += 1;
+                guide.push((q, sign as i8));
+                guide_side.entry(q).or_insert(sign as i8);
+                if !at_most(distance(o, at(q)), radius) {
+                    break;
                 }
             }
-        };
-    let side_of = |guide: &[(u32, i8)], guide_side: &HashMap<u32, i8, FastHash>, q: u32| -> i8 {
+        }
+    };
+    let side_of = |guide: &[(LocalPoint, i8)],
+                   guide_side: &HashMap<LocalPoint, i8, FastHash>,
+                   q: LocalPoint|
+     -> i8 {
         if let Some(&side) = guide_side.get(&q) {
             return side;
         }
@@ -307,11 +320,11 @@ fn fit_vertex(tri: &Triangulation, graph: &Graph, curve: &Curve, i: usize) -> Op
             .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.abs().cmp(&b.1.abs())))
             .map_or(0, |(_, side)| side)
     };
-    let mut seen: HashSet<u32, FastHash> = HashSet::default();
+    let mut seen: HashSet<LocalPoint, FastHash> = HashSet::default();
     let mut waiting = BinaryHeap::new();
-    let mut window: Vec<(f64, u32, i8)> = Vec::new();
+    let mut window: Vec<(f64, LocalPoint, i8)> = Vec::new();
     // The window by local index, merged as it grows.
-    let mut sorted: Vec<(f64, u32, i8)> = Vec::new();
+    let mut sorted: Vec<(f64, LocalPoint, i8)> = Vec::new();
     seen.insert(p);
     waiting.push(Waiting(0.0, p));
     let mut families: [Family; 3] = Default::default();
@@ -330,7 +343,7 @@ fn fit_vertex(tri: &Triangulation, graph: &Graph, curve: &Curve, i: usize) -> Op
             for &w in graph.of(q) {
                 // Along the curve's samples only: not across the inside of a sparse curve,
                 // nor from one noise band to the next.
-                let reach = LINK * graph.nearest[q as usize].max(graph.nearest[w as usize]);
+                let reach = LINK * graph.nearest[q.index()].max(graph.nearest[w.index()]);
                 if !at_most(distance(at(q), at(w)), reach) {
                     continue;
                 }
@@ -428,7 +441,10 @@ fn fit_vertex(tri: &Triangulation, graph: &Graph, curve: &Curve, i: usize) -> Op
 }
 
 /// Two lists of window samples, each by local index, as one by local index.
-fn merged_by_index(a: &[(f64, u32, i8)], b: &[(f64, u32, i8)]) -> Vec<(f64, u32, i8)> {
+fn merged_by_index(
+    a: &[(f64, LocalPoint, i8)],
+    b: &[(f64, LocalPoint, i8)],
+) -> Vec<(f64, LocalPoint, i8)> {
     let mut out = Vec::with_capacity(a.len() + b.len());
     let (mut i, mut j) = (0, 0);
     while i < a.len() && j < b.len() {

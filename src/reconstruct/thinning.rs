@@ -34,6 +34,7 @@ use super::thresholds::thinning::{
     SUBSAMPLE,
 };
 use crate::delaunay::Triangulation;
+use crate::ids::{ids, LocalPoint};
 use crate::parallel;
 
 /// The neighbourhood sizes at which the covariance is read (steps of about 1.5).
@@ -43,7 +44,7 @@ const LADDER: [usize; 15] = [
 
 /// The representatives of a dense noisy band (local indices, ascending), or `None` when
 /// the points are no band.
-pub(super) fn representatives(tri: &Triangulation) -> Option<Vec<u32>> {
+pub(super) fn representatives(tri: &Triangulation) -> Option<Vec<LocalPoint>> {
     let n = tri.points.len();
     if n < MIN_THINNED_POINTS || tri.is_degenerate() {
         return None;
@@ -78,7 +79,9 @@ fn band_noise(tri: &Triangulation) -> Option<f64> {
     let m = probed.points.len();
     let stride = m.div_ceil(PROBES).max(1);
     let probes = m.div_ceil(stride);
-    let turns = parallel::map_range(probes, |i| turn(probed, &graph, (i * stride) as u32));
+    let turns = parallel::map_range(probes, |i| {
+        turn(probed, &graph, LocalPoint::new((i * stride) as u32))
+    });
     let mut banded: Vec<f64> = turns
         .iter()
         .flatten()
@@ -116,19 +119,19 @@ struct Turn {
 
 /// Where the neighbourhood of `p` turns thin; `None` if none up to the ladder's last size
 /// is.
-fn turn(tri: &Triangulation, graph: &Graph, p: u32) -> Option<Turn> {
-    let o = tri.points[p as usize];
-    let mut seen: HashSet<u32, FastHash> = HashSet::default();
+fn turn(tri: &Triangulation, graph: &Graph, p: LocalPoint) -> Option<Turn> {
+    let o = tri.points[p.index()];
+    let mut seen: HashSet<LocalPoint, FastHash> = HashSet::default();
     seen.insert(p);
     let mut waiting = std::collections::BinaryHeap::new();
     for &q in graph.of(p) {
         seen.insert(q);
-        waiting.push(Waiting(distance(o, tri.points[q as usize]), q));
+        waiting.push(Waiting(distance(o, tri.points[q.index()]), q));
     }
     let mut moments = Moments::default();
     let mut rung = 0;
     while let Some(Waiting(d, q)) = waiting.pop() {
-        let x = tri.points[q as usize];
+        let x = tri.points[q.index()];
         moments.add([x[0] - o[0], x[1] - o[1]]);
         if moments.count == LADDER[rung] {
             let (small, large) = moments.principal();
@@ -146,7 +149,7 @@ fn turn(tri: &Triangulation, graph: &Graph, p: u32) -> Option<Turn> {
         }
         for &w in graph.of(q) {
             if seen.insert(w) {
-                waiting.push(Waiting(distance(o, tri.points[w as usize]), w));
+                waiting.push(Waiting(distance(o, tri.points[w.index()]), w));
             }
         }
     }
@@ -191,7 +194,7 @@ impl Moments {
 /// A cell of the cover's grid.
 type Cell = (i64, i64);
 
-type Grid = HashMap<Cell, Vec<u32>, FastHash>;
+type Grid = HashMap<Cell, Vec<LocalPoint>, FastHash>;
 
 /// The cell `c` and its eight neighbours, each once. Far out (a radius tiny against the
 /// coordinates) the cell indices saturate at the ends of `i64`: neighbouring cells may then
@@ -226,7 +229,7 @@ fn neighbourhood(c: Cell) -> impl Iterator<Item = Cell> {
 ///    than [`MIN_CLUSTER_SHARE`] of the median disk's gives none (outliers, frayed edges).
 /// 3. Candidates in seed order, each kept unless a kept one lies within half the radius:
 ///    one file of representatives along the band.
-fn cover(points: &[[f64; 2]], radius: f64) -> Vec<u32> {
+fn cover(points: &[[f64; 2]], radius: f64) -> Vec<LocalPoint> {
     let cell = |p: [f64; 2]| -> Cell {
         (
             (p[0] / radius).floor() as i64,
@@ -237,41 +240,41 @@ fn cover(points: &[[f64; 2]], radius: f64) -> Vec<u32> {
     let within = |grid: &Grid, x: [f64; 2], r: f64| -> bool {
         around(cell(x)).any(|k| {
             grid.get(&k)
-                .is_some_and(|list| list.iter().any(|&q| distance(x, points[q as usize]) < r))
+                .is_some_and(|list| list.iter().any(|&q| distance(x, points[q.index()]) < r))
         })
     };
     let mut seeds = Grid::default();
-    let mut seed_order: Vec<u32> = Vec::new();
+    let mut seed_order: Vec<LocalPoint> = Vec::new();
     let mut all = Grid::default();
-    for (p, &x) in points.iter().enumerate() {
-        all.entry(cell(x)).or_default().push(p as u32);
+    for (p, &x) in ids::<LocalPoint>(points.len()).zip(points) {
+        all.entry(cell(x)).or_default().push(p);
         if !within(&seeds, x, radius) {
-            seeds.entry(cell(x)).or_default().push(p as u32);
-            seed_order.push(p as u32);
+            seeds.entry(cell(x)).or_default().push(p);
+            seed_order.push(p);
         }
     }
     // Each seed's disk: its size and the point nearest its centroid.
     let disks = parallel::map_range(seed_order.len(), |k| {
-        let o = points[seed_order[k] as usize];
-        let members: Vec<u32> = around(cell(o))
+        let o = points[seed_order[k].index()];
+        let members: Vec<LocalPoint> = around(cell(o))
             .filter_map(|c| all.get(&c))
             .flatten()
             .copied()
-            .filter(|&q| distance(o, points[q as usize]) < radius)
+            .filter(|&q| distance(o, points[q.index()]) < radius)
             .collect();
         // In local order, relative to the seed: the same sums for any input order.
         let mut sorted = members;
         sorted.sort_unstable();
         let mut sum = [0.0f64; 2];
         for &q in &sorted {
-            sum[0] += points[q as usize][0] - o[0];
-            sum[1] += points[q as usize][1] - o[1];
+            sum[0] += points[q.index()][0] - o[0];
+            sum[1] += points[q.index()][1] - o[1];
         }
         let count = sorted.len();
         let centroid = [o[0] + sum[0] / count as f64, o[1] + sum[1] / count as f64];
         let nearest = sorted
             .iter()
-            .map(|&q| (distance(centroid, points[q as usize]), q))
+            .map(|&q| (distance(centroid, points[q.index()]), q))
             .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)))
             .map_or(seed_order[k], |(_, q)| q);
         (count, nearest)
@@ -283,7 +286,7 @@ fn cover(points: &[[f64; 2]], radius: f64) -> Vec<u32> {
     let mut kept = Grid::default();
     let mut reps = Vec::new();
     for &(count, candidate) in &disks {
-        let x = points[candidate as usize];
+        let x = points[candidate.index()];
         if count >= least && !within(&kept, x, 0.5 * radius) {
             kept.entry(cell(x)).or_default().push(candidate);
             reps.push(candidate);
@@ -333,7 +336,7 @@ mod tests {
         // They lie near the middle of the band.
         let off: f64 = reps
             .iter()
-            .map(|&p| (tri.points[p as usize][0].hypot(tri.points[p as usize][1]) - 1.0).powi(2))
+            .map(|&p| (tri.points[p.index()][0].hypot(tri.points[p.index()][1]) - 1.0).powi(2))
             .sum::<f64>()
             / reps.len() as f64;
         assert!(off.sqrt() < 0.7 * 0.03, "RMS {} off the circle", off.sqrt());
@@ -369,6 +372,6 @@ mod tests {
             .collect();
         let reps = cover(&points, 1e280);
         assert_eq!(reps.len(), 2, "{reps:?}");
-        assert!(reps[0] < 20 && reps[1] >= 20);
+        assert!(reps[0].get() < 20 && reps[1].get() >= 20);
     }
 }

@@ -47,7 +47,7 @@
 mod insertion;
 
 use crate::delaunay::Triangulation;
-use crate::ids::{typed_edges, LocalPoint, VertexId};
+use crate::ids::{LocalPoint, VertexId};
 use crate::kernel::Sign;
 use crate::reconstruct::curves::chain_edges;
 
@@ -75,7 +75,7 @@ pub(crate) fn edges_of(tri: &Triangulation) -> Vec<[LocalPoint; 2]> {
     if tri.is_degenerate() {
         let mut chain = chain_edges(tri);
         chain.sort_unstable();
-        return typed_edges(chain);
+        return chain;
     }
     let vor = tri.voronoi();
     let n = tri.points.len();
@@ -101,12 +101,13 @@ pub(crate) fn edges_of(tri: &Triangulation) -> Vec<[LocalPoint; 2]> {
             Some(d) => points.incircle(a, b, c, d) != Sign::Zero,
         };
         if strict {
-            edges.push([a.min(b), a.max(b)]);
+            // The insertion store's samples are the local points `0..n`.
+            edges.push([a.min(b), a.max(b)].map(LocalPoint::new));
         }
     });
     edges.sort_unstable();
     edges.dedup();
-    typed_edges(edges)
+    edges
 }
 
 /// Indices of `positions` in the order of a Hilbert curve over their bounding box (2^16 cells

@@ -23,7 +23,7 @@
 //! `y`), never by input index, so the result does not depend on the order of the input.
 
 use crate::delaunay::Triangulation;
-use crate::ids::{typed_edges, LocalPoint};
+use crate::ids::{ids, LocalPoint};
 use crate::reconstruct::curves::chain_edges;
 use crate::reconstruct::proximity::DelaunayGraph;
 
@@ -54,11 +54,11 @@ pub(crate) fn edges_of(tri: &Triangulation) -> Vec<[LocalPoint; 2]> {
     if tri.is_degenerate() {
         let mut chain = chain_edges(tri);
         chain.sort_unstable();
-        return typed_edges(chain);
+        return chain;
     }
     let graph = DelaunayGraph::of(tri);
     let mut edges = Vec::new();
-    for p in 0..tri.points.len() as u32 {
+    for p in ids::<LocalPoint>(tri.points.len()) {
         let proposal = graph.proposal(&tri.points, p, |_| true);
         for q in proposal.iter() {
             edges.push([p.min(q), p.max(q)]);
@@ -66,7 +66,7 @@ pub(crate) fn edges_of(tri: &Triangulation) -> Vec<[LocalPoint; 2]> {
     }
     edges.sort_unstable();
     edges.dedup();
-    typed_edges(edges)
+    edges
 }
 
 #[cfg(test)]

@@ -42,24 +42,24 @@ use crate::voronoi::{EdgeEnd, Voronoi};
 pub(crate) fn repair_corridors(
     vor: &Voronoi<'_>,
     labels: &mut [Label],
-    edges: &mut Vec<[u32; 2]>,
+    edges: &mut Vec<[LocalPoint; 2]>,
 ) -> usize {
     let points = &vor.triangulation().points;
     if every_point_on_two_edges(points.len(), edges) {
         return 0;
     }
-    let length = |[a, b]: [u32; 2]| {
-        let (p, q) = (points[a as usize], points[b as usize]);
+    let length = |[a, b]: [LocalPoint; 2]| {
+        let (p, q) = (points[a.index()], points[b.index()]);
         ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt()
     };
     // Squared lengths for the screen, which runs on every first pass (no square roots).
-    let squared = |[a, b]: [u32; 2]| {
-        let (p, q) = (points[a as usize], points[b as usize]);
+    let squared = |[a, b]: [LocalPoint; 2]| {
+        let (p, q) = (points[a.index()], points[b.index()]);
         (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)
     };
     let mut lengths: Vec<f64> = edges.iter().map(|&e| squared(e)).collect();
     let bound = CHORD * CHORD * median(&mut lengths);
-    let chords: Vec<[u32; 2]> = edges
+    let chords: Vec<[LocalPoint; 2]> = edges
         .iter()
         .copied()
         .filter(|&e| squared(e) > bound)
@@ -71,7 +71,7 @@ pub(crate) fn repair_corridors(
     let mut walls: Vec<VertexId> = chords
         .into_iter()
         .filter_map(|chord| {
-            let o = outer_side(vor, labels, chord.map(LocalPoint::new))?;
+            let o = outer_side(vor, labels, chord)?;
             (width[o.index()] * NARROW < length(chord)).then_some(o)
         })
         .collect();
@@ -106,7 +106,7 @@ pub(crate) fn repair_corridors(
 /// the hole beyond it). Such a first pass is left as it is, which also keeps the widths off
 /// clean samples whose spacing varies (random parameters: crust edges of 4 median ones are
 /// common there, and the widths cost 0.16 s at 10^6 points, measured).
-fn every_point_on_two_edges(point_count: usize, edges: &[[u32; 2]]) -> bool {
+fn every_point_on_two_edges(point_count: usize, edges: &[[LocalPoint; 2]]) -> bool {
     edges.len() == point_count && degrees(point_count, edges).iter().all(|&d| d == 2)
 }
 
@@ -135,7 +135,11 @@ fn outer_side(vor: &Voronoi<'_>, labels: &[Label], [a, b]: [LocalPoint; 2]) -> O
 
 /// The width of every outer vertex (0 for inner ones): widest paths from infinity, by a
 /// Dijkstra search that takes the widest vertex first.
-fn widths(vor: &Voronoi<'_>, labels: &[Label], length: &dyn Fn([u32; 2]) -> f64) -> Vec<f64> {
+fn widths(
+    vor: &Voronoi<'_>,
+    labels: &[Label],
+    length: &dyn Fn([LocalPoint; 2]) -> f64,
+) -> Vec<f64> {
     let mut width = vec![0.0f64; labels.len()];
     let mut heap = BinaryHeap::new();
     for v in ids::<VertexId>(labels.len()) {
@@ -158,7 +162,7 @@ fn widths(vor: &Voronoi<'_>, labels: &[Label], length: &dyn Fn([u32; 2]) -> f64)
             if labels[u.index()] != Label::Outer || done[u.index()] {
                 continue;
             }
-            let through = w.min(length(edge.sites.map(LocalPoint::get)));
+            let through = w.min(length(edge.sites));
             if through > width[u.index()] {
                 width[u.index()] = through;
                 heap.push(Widest(through, u));

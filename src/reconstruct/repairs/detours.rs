@@ -49,7 +49,7 @@ use std::collections::{BTreeMap, BTreeSet, BinaryHeap, HashMap};
 
 use super::shared::{EditedCurves, Repair, Swap};
 use super::spikes::drop_woven_spikes;
-use crate::ids::LocalPoint;
+use crate::ids::{ids, LocalPoint};
 use crate::kernel::metric::{dot_sign, length_order};
 use crate::kernel::Sign;
 use crate::reconstruct::curves::Adjacency;
@@ -61,12 +61,12 @@ use crate::voronoi::Voronoi;
 
 /// The repair (module docs) of `edges` (distinct, `[min, max]`, any order), as edges to add
 /// and to remove.
-pub(crate) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
+pub(crate) fn repair_detours(vor: &Voronoi<'_>, edges: &[[LocalPoint; 2]]) -> Repair {
     let n = vor.triangulation().points.len();
     let mut on_curve = vec![false; n];
     for &[a, b] in edges {
-        on_curve[a as usize] = true;
-        on_curve[b as usize] = true;
+        on_curve[a.index()] = true;
+        on_curve[b.index()] = true;
     }
     if on_curve.iter().all(|&t| t) {
         return Repair::none();
@@ -102,7 +102,7 @@ pub(crate) fn repair_detours(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Repair {
 }
 
 /// A group of step 1 as its edges, sorted.
-type Group = Vec<[u32; 2]>;
+type Group = Vec<[LocalPoint; 2]>;
 
 /// Step 1: the candidate edges, without loose ends, in groups ordered by their smallest
 /// point; only the groups that touch between 2 and [`MAX_ANCHORS`] points on a curve.
@@ -111,16 +111,16 @@ fn stretches(named: &mut NeighbourNames<'_, '_>, on_curve: &[bool]) -> Vec<Group
     // The structures below are over the candidates' points alone, renamed to their
     // positions among them (over all points, they were most of the repair's time on large,
     // nearly clean inputs). The renaming keeps the order, so edges stay `[min, max]`, sorted,
-    // and a group's smallest point is still its root.
-    let mut members: Vec<u32> = candidates.iter().flatten().copied().collect();
+    // and a group's smallest point is still its root. Positions are `u32`, no local points.
+    let mut members: Vec<LocalPoint> = candidates.iter().flatten().copied().collect();
     members.sort_unstable();
     members.dedup();
-    let position = |p: u32| members.binary_search(&p).unwrap_or_default() as u32;
+    let position = |p: LocalPoint| members.binary_search(&p).unwrap_or_default() as u32;
     let mut renamed: Vec<[u32; 2]> = candidates
         .iter()
         .map(|&[a, b]| [position(a), position(b)])
         .collect();
-    let members_on_curve: Vec<bool> = members.iter().map(|&p| on_curve[p as usize]).collect();
+    let members_on_curve: Vec<bool> = members.iter().map(|&p| on_curve[p.index()]).collect();
     without_loose_ends(&mut renamed, &members_on_curve);
     if renamed.is_empty() {
         return Vec::new();
@@ -146,12 +146,12 @@ fn stretches(named: &mut NeighbourNames<'_, '_>, on_curve: &[bool]) -> Vec<Group
 }
 
 /// The points of a group that are on a curve, sorted.
-fn anchors(group: &[[u32; 2]], on_curve: &[bool]) -> Vec<u32> {
-    let mut anchors: Vec<u32> = group
+fn anchors(group: &[[LocalPoint; 2]], on_curve: &[bool]) -> Vec<LocalPoint> {
+    let mut anchors: Vec<LocalPoint> = group
         .iter()
         .flatten()
         .copied()
-        .filter(|&p| on_curve[p as usize])
+        .filter(|&p| on_curve[p.index()])
         .collect();
     anchors.sort_unstable();
     anchors.dedup();
@@ -168,7 +168,7 @@ fn swap_detours(
     group: &Group,
 ) -> bool {
     let vor = named.vor;
-    let mut around: BTreeMap<u32, Vec<u32>> = BTreeMap::new();
+    let mut around: BTreeMap<LocalPoint, Vec<LocalPoint>> = BTreeMap::new();
     for &[a, b] in group {
         around.entry(a).or_default().push(b);
         around.entry(b).or_default().push(a);
@@ -177,12 +177,13 @@ fn swap_detours(
         neighbours.sort_unstable();
     }
     let rank = length_ranks(vor, group);
-    let passable = |p: u32, taken: &BTreeSet<u32>| !on_curve[p as usize] && !taken.contains(&p);
-    let mut taken: BTreeSet<u32> = BTreeSet::new();
+    let passable =
+        |p: LocalPoint, taken: &BTreeSet<LocalPoint>| !on_curve[p.index()] && !taken.contains(&p);
+    let mut taken: BTreeSet<LocalPoint> = BTreeSet::new();
     let anchors = anchors(group, on_curve);
     for (i, &a) in anchors.iter().enumerate() {
         let mut chains = chains_from(curves, a);
-        let mut tree: Option<BTreeMap<u32, u32>> = None;
+        let mut tree: Option<BTreeMap<LocalPoint, LocalPoint>> = None;
         for &b in &anchors[i + 1..] {
             let Some(detour) = detour_to(&chains, b) else {
                 continue;
@@ -220,26 +221,28 @@ fn swap_detours(
 /// The order of the longest edge of `first` and of `second` (non-empty), exact.
 fn longest_edge_order(
     vor: &Voronoi<'_>,
-    first: &[[u32; 2]],
-    second: &[[u32; 2]],
+    first: &[[LocalPoint; 2]],
+    second: &[[LocalPoint; 2]],
 ) -> std::cmp::Ordering {
     let points = &vor.triangulation().points;
-    let at = |i: u32| points[i as usize];
-    let order = |e: &[u32; 2], f: &[u32; 2]| length_order(at(e[0]), at(e[1]), at(f[0]), at(f[1]));
-    let longest = |edges: &[[u32; 2]]| {
+    let at = |i: LocalPoint| points[i.index()];
+    let order = |e: &[LocalPoint; 2], f: &[LocalPoint; 2]| {
+        length_order(at(e[0]), at(e[1]), at(f[0]), at(f[1]))
+    };
+    let longest = |edges: &[[LocalPoint; 2]]| {
         edges
             .iter()
             .copied()
             .max_by(|e, f| order(e, f))
-            .unwrap_or([0, 0])
+            .unwrap_or([LocalPoint::new(0); 2])
     };
     order(&longest(first), &longest(second))
 }
 
 /// The rank of every edge of `group` by length, shortest first (exact; ties by the points).
-fn length_ranks(vor: &Voronoi<'_>, group: &Group) -> BTreeMap<[u32; 2], u32> {
+fn length_ranks(vor: &Voronoi<'_>, group: &Group) -> BTreeMap<[LocalPoint; 2], u32> {
     let points = &vor.triangulation().points;
-    let at = |i: u32| points[i as usize];
+    let at = |i: LocalPoint| points[i.index()];
     let mut sorted = group.clone();
     sorted.sort_by(|&[a, b], &[c, d]| {
         length_order(at(a), at(b), at(c), at(d)).then_with(|| [a, b].cmp(&[c, d]))
@@ -251,16 +254,17 @@ fn length_ranks(vor: &Voronoi<'_>, group: &Group) -> BTreeMap<[u32; 2], u32> {
 /// edge shortest (by `rank`), then fewest edges (Dijkstra on these keys, ties by the points),
 /// until every point of `targets` is reached. Each reached point's predecessor.
 fn bottleneck_tree(
-    around: &BTreeMap<u32, Vec<u32>>,
-    rank: &BTreeMap<[u32; 2], u32>,
-    passable: impl Fn(u32) -> bool,
-    a: u32,
-    targets: &[u32],
-) -> BTreeMap<u32, u32> {
+    around: &BTreeMap<LocalPoint, Vec<LocalPoint>>,
+    rank: &BTreeMap<[LocalPoint; 2], u32>,
+    passable: impl Fn(LocalPoint) -> bool,
+    a: LocalPoint,
+    targets: &[LocalPoint],
+) -> BTreeMap<LocalPoint, LocalPoint> {
     // The best cost found so far to a point, (rank of the longest edge, edges), and from where.
-    let mut best: BTreeMap<u32, ((u32, u32), u32)> = BTreeMap::from([(a, ((0, 0), a))]);
+    let mut best: BTreeMap<LocalPoint, ((u32, u32), LocalPoint)> =
+        BTreeMap::from([(a, ((0, 0), a))]);
     let mut queue = BinaryHeap::from([Reverse(((0u32, 0u32), a))]);
-    let mut settled: BTreeMap<u32, u32> = BTreeMap::new();
+    let mut settled: BTreeMap<LocalPoint, LocalPoint> = BTreeMap::new();
     let mut left = targets.len();
     while let Some(Reverse((cost, p))) = queue.pop() {
         if settled.contains_key(&p) {
@@ -289,7 +293,11 @@ fn bottleneck_tree(
 }
 
 /// The path from `a` to `b` in a [`bottleneck_tree`] from `a`, as sorted edges.
-fn path_in(tree: &BTreeMap<u32, u32>, a: u32, b: u32) -> Option<Vec<[u32; 2]>> {
+fn path_in(
+    tree: &BTreeMap<LocalPoint, LocalPoint>,
+    a: LocalPoint,
+    b: LocalPoint,
+) -> Option<Vec<[LocalPoint; 2]>> {
     let mut path = Vec::new();
     let mut at = b;
     while at != a {
@@ -304,7 +312,7 @@ fn path_in(tree: &BTreeMap<u32, u32>, a: u32, b: u32) -> Option<Vec<[u32; 2]>> {
 /// The points along the curves from `a` in each direction of its two curve edges, `a`
 /// first, up to [`MAX_DETOUR_POINTS`] inner points on, as far as every inner point has
 /// degree 2 (empty when `a` does not have two curve edges).
-fn chains_from(curves: &EditedCurves, a: u32) -> Vec<Vec<u32>> {
+fn chains_from(curves: &EditedCurves, a: LocalPoint) -> Vec<Vec<LocalPoint>> {
     let Some([x, y]) = curves.two_neighbours(a) else {
         return Vec::new();
     };
@@ -331,7 +339,7 @@ fn chains_from(curves: &EditedCurves, a: u32) -> Vec<Vec<u32>> {
 
 /// The detour a swap between `a` and `b` replaces, given `a`'s [`chains_from`]: the chain
 /// that reaches `b`, when exactly one does, as edges.
-fn detour_to(chains: &[Vec<u32>], b: u32) -> Option<Vec<[u32; 2]>> {
+fn detour_to(chains: &[Vec<LocalPoint>], b: LocalPoint) -> Option<Vec<[LocalPoint; 2]>> {
     let mut reaching = chains
         .iter()
         .filter_map(|chain| chain.iter().position(|&p| p == b).map(|end| &chain[..=end]));
@@ -348,17 +356,17 @@ fn detour_to(chains: &[Vec<u32>], b: u32) -> Option<Vec<[u32; 2]>> {
 }
 
 /// Candidate edges of step 1 (module docs), sorted.
-fn candidate_edges(named: &mut NeighbourNames<'_, '_>, on_curve: &[bool]) -> Vec<[u32; 2]> {
+fn candidate_edges(named: &mut NeighbourNames<'_, '_>, on_curve: &[bool]) -> Vec<[LocalPoint; 2]> {
     let mut candidates = Vec::new();
-    for p in 0..on_curve.len() as u32 {
-        if on_curve[p as usize] {
+    for p in ids::<LocalPoint>(on_curve.len()) {
+        if on_curve[p.index()] {
             continue;
         }
         let names = named.of(p);
         for q in named.around(p) {
             // The names of a curve point are never asked (their computation is the cost).
             let named_by_unassigned = names.contains(&Some(q))
-                || (!on_curve[q as usize] && named.of(q).contains(&Some(p)));
+                || (!on_curve[q.index()] && named.of(q).contains(&Some(p)));
             if named_by_unassigned {
                 candidates.push([p.min(q), p.max(q)]);
             }
@@ -370,7 +378,8 @@ fn candidate_edges(named: &mut NeighbourNames<'_, '_>, on_curve: &[bool]) -> Vec
 }
 
 /// Removes, repeatedly, the edges with an unassigned end that no other edge touches: what is
-/// left of a group joins points on curves through unassigned points.
+/// left of a group joins points on curves through unassigned points. On the group's
+/// positions among its members (`u32`), as `stretches` renames them.
 fn without_loose_ends(edges: &mut Vec<[u32; 2]>, on_curve: &[bool]) {
     if edges.is_empty() {
         return;
@@ -412,7 +421,7 @@ fn without_loose_ends(edges: &mut Vec<[u32; 2]>, on_curve: &[bool]) {
 /// array over all points was 16 bytes a point at the memory peak of this phase).
 struct NeighbourNames<'v, 't> {
     vor: &'v Voronoi<'t>,
-    cache: HashMap<u32, [Option<u32>; 2]>,
+    cache: HashMap<LocalPoint, [Option<LocalPoint>; 2]>,
 }
 
 impl<'v, 't> NeighbourNames<'v, 't> {
@@ -424,22 +433,20 @@ impl<'v, 't> NeighbourNames<'v, 't> {
     }
 
     /// The Delaunay neighbours of `p` along edges with a dual Voronoi edge.
-    fn around(&self, p: u32) -> impl Iterator<Item = u32> + Clone + 'v {
-        self.vor
-            .dual_neighbours(LocalPoint::new(p))
-            .map(LocalPoint::get)
+    fn around(&self, p: LocalPoint) -> impl Iterator<Item = LocalPoint> + Clone + 'v {
+        self.vor.dual_neighbours(p)
     }
 
     /// `[nearest, half]` neighbour of `p` among its Delaunay neighbours along edges with a
     /// dual Voronoi edge (the NN-crust's candidates, so cocircular diagonals never count).
-    fn of(&mut self, p: u32) -> [Option<u32>; 2] {
+    fn of(&mut self, p: LocalPoint) -> [Option<LocalPoint>; 2] {
         if let Some(&names) = self.cache.get(&p) {
             return names;
         }
         let points = &self.vor.triangulation().points;
-        let at = |i: u32| points[i as usize];
+        let at = |i: LocalPoint| points[i.index()];
         let around = self.around(p);
-        let nearest = |candidates: &mut dyn Iterator<Item = u32>| {
+        let nearest = |candidates: &mut dyn Iterator<Item = LocalPoint>| {
             candidates.min_by(|&a, &b| closer(at(p), at(a), at(b)))
         };
         let q = nearest(&mut around.clone());
@@ -451,7 +458,7 @@ impl<'v, 't> NeighbourNames<'v, 't> {
     }
 }
 
-/// Union–find over point indices; the root of a group is its smallest member, so it does
+/// Union–find over positions (those of `stretches`); the root of a group is its smallest member, so it does
 /// not depend on the order of the unions.
 struct UnionFind {
     parent: Vec<u32>,
@@ -528,19 +535,17 @@ pub(crate) mod tests {
     ) -> Vec<[u32; 2]> {
         let tri = triangulate(points).unwrap();
         let vor = tri.voronoi();
-        let mut local: Vec<[u32; 2]> = edges
+        let mut local: Vec<[LocalPoint; 2]> = edges
             .iter()
-            .map(|&[a, b]| edge(tri.local_index(a).get(), tri.local_index(b).get()))
+            .map(|&[a, b]| {
+                let (a, b) = (tri.local_index(a), tri.local_index(b));
+                [a.min(b), a.max(b)]
+            })
             .collect();
         repair_detours(&vor, &local).apply(&mut local);
         let mut result: Vec<[u32; 2]> = local
             .iter()
-            .map(|&[a, b]| {
-                edge(
-                    tri.input_index(LocalPoint::new(a)),
-                    tri.input_index(LocalPoint::new(b)),
-                )
-            })
+            .map(|&[a, b]| edge(tri.input_index(a), tri.input_index(b)))
             .collect();
         result.sort_unstable();
         result

@@ -36,7 +36,7 @@
 //! An **islet** ([`drop_islets`], first pass) is the same small loop standing alone in the
 //! noise band of a curve instead of hanging off it: dropped.
 
-use crate::ids::{LocalPoint, VertexId};
+use crate::ids::{ids, LocalPoint, VertexId};
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
@@ -62,33 +62,36 @@ const UNKNOWN: u32 = u32::MAX;
 /// The root vertex at infinity, closing the open cell of a hull point.
 const ROOT: u32 = u32::MAX;
 
+/// No pinch point (in `ear_at`): the component is no ear.
+const NO_PINCH: LocalPoint = LocalPoint::new(u32::MAX);
+
 /// Repairs the ears of `labels` (see the module docs) and updates `edges`, the crust of
 /// `labels` (`[min, max]`, any order; the order of the edges kept is kept, new ones come at
 /// the end). Returns the number of vertices relabelled.
 pub(crate) fn repair_ears(
     vor: &Voronoi<'_>,
     labels: &mut [Label],
-    edges: &mut Vec<[u32; 2]>,
+    edges: &mut Vec<[LocalPoint; 2]>,
     mode: Ears,
 ) -> usize {
     let degree = degrees(vor.triangulation().points.len(), edges);
-    let pinches: Vec<u32> = (0..degree.len() as u32)
-        .filter(|&p| degree[p as usize] >= 4)
+    let pinches: Vec<LocalPoint> = ids::<LocalPoint>(degree.len())
+        .filter(|&p| degree[p.index()] >= 4)
         .collect();
     if pinches.is_empty() {
         return 0;
     }
     let mut search = Components::default();
-    // The pinch point of every ear, by component (UNKNOWN: no ear).
-    let mut ear_at: Vec<u32> = Vec::new();
+    // The pinch point of every ear, by component (NO_PINCH: no ear).
+    let mut ear_at: Vec<LocalPoint> = Vec::new();
     for &p in &pinches {
         let at_p: Vec<u32> = vor
-            .cell_vertices(LocalPoint::new(p))
+            .cell_vertices(p)
             .map(VertexId::get)
             .filter(|&v| labels[v as usize] == Label::Inner)
             .map(|v| search.component(vor, labels, v))
             .collect();
-        ear_at.resize(search.list.len(), UNKNOWN);
+        ear_at.resize(search.list.len(), NO_PINCH);
         // Beside a large component a small one may be an ear; small ones meeting only each
         // other (a tiny input's bow tie) stay as they are.
         if at_p.iter().all(|&c| search.list[c as usize].is_small()) {
@@ -102,8 +105,8 @@ pub(crate) fn repair_ears(
         }
     }
     let mut change = Change::default();
-    for (c, &p) in ear_at.iter().enumerate().filter(|(_, &p)| p != UNKNOWN) {
-        let gap = (mode == Ears::Rejoin && degree[p as usize] == 4)
+    for (c, &p) in ear_at.iter().enumerate().filter(|(_, &p)| p != NO_PINCH) {
+        let gap = (mode == Ears::Rejoin && degree[p.index()] == 4)
             .then(|| rejoining_vertex(vor, labels, &search, c as u32, p))
             .flatten();
         match gap {
@@ -136,7 +139,7 @@ pub(crate) fn repair_ears(
 pub(crate) fn drop_islets(
     vor: &Voronoi<'_>,
     labels: &mut [Label],
-    edges: &mut Vec<[u32; 2]>,
+    edges: &mut Vec<[LocalPoint; 2]>,
 ) -> usize {
     let n = vor.triangulation().points.len();
     let loops = small_loops(n, edges);
@@ -145,12 +148,12 @@ pub(crate) fn drop_islets(
     }
     // The crust edges at the loops' Delaunay neighbours: all that `lies_apart` reads (an
     // adjacency of every edge was most of this step's time on large inputs).
-    let loop_points: Vec<u32> = loops.iter().flatten().copied().collect();
+    let loop_points: Vec<LocalPoint> = loops.iter().flatten().copied().collect();
     let curve = edges_near(vor, &loop_points, edges);
     let mut search = Components::default();
     let mut change = Change::default();
     for points in &loops {
-        let own: Vec<[u32; 2]> = (0..points.len())
+        let own: Vec<[LocalPoint; 2]> = (0..points.len())
             .map(|i| {
                 let (a, b) = (points[i], points[(i + 1) % points.len()]);
                 [a.min(b), a.max(b)]
@@ -170,7 +173,7 @@ pub(crate) fn drop_islets(
         // The inner side of its first edge: the islet's component when the loop encloses it
         // (a loop around an outer pocket of a large region has the large one there).
         let [a, b] = [points[0], points[1]];
-        let Some(e) = vor.delaunay_halfedge(LocalPoint::new(a), LocalPoint::new(b)) else {
+        let Some(e) = vor.delaunay_halfedge(a, b) else {
             continue;
         };
         let twin = vor.triangulation().halfedges()[e.index()];
@@ -199,25 +202,26 @@ pub(crate) fn drop_islets(
 /// on from `prev` to `at` by `xor[at] ^ prev`. Each walk starts along an edge, stops after
 /// [`MIN_LOOP_POINTS`] points or at a point walked over before, so every point is walked over
 /// once (a walked point's degree is set to 0).
-fn small_loops(point_count: usize, edges: &[[u32; 2]]) -> Vec<Vec<u32>> {
+fn small_loops(point_count: usize, edges: &[[LocalPoint; 2]]) -> Vec<Vec<LocalPoint>> {
     let mut degree = degrees(point_count, edges);
+    // The XOR of two local points' numbers: no point itself.
     let mut xor = vec![0u32; point_count];
     for &[a, b] in edges {
-        xor[a as usize] ^= b;
-        xor[b as usize] ^= a;
+        xor[a.index()] ^= b.get();
+        xor[b.index()] ^= a.get();
     }
     let mut loops = Vec::new();
     for &[start, next] in edges {
-        if degree[start as usize] != 2 {
+        if degree[start.index()] != 2 {
             continue;
         }
-        degree[start as usize] = 0;
+        degree[start.index()] = 0;
         let mut path = vec![start];
         let (mut prev, mut at) = (start, next);
-        while at != start && path.len() < MIN_LOOP_POINTS && degree[at as usize] == 2 {
-            degree[at as usize] = 0;
+        while at != start && path.len() < MIN_LOOP_POINTS && degree[at.index()] == 2 {
+            degree[at.index()] = 0;
             path.push(at);
-            (prev, at) = (at, xor[at as usize] ^ prev);
+            (prev, at) = (at, LocalPoint::new(xor[at.index()] ^ prev.get()));
         }
         if at == start && path.len() >= 3 {
             loops.push(path);
@@ -230,9 +234,9 @@ fn small_loops(point_count: usize, edges: &[[u32; 2]]) -> Vec<Vec<u32>> {
 struct Component {
     vertices: Vec<u32>,
     /// The crust edges dual to its inner–outer Voronoi edges, `[min, max]`.
-    boundary: Vec<[u32; 2]>,
+    boundary: Vec<[LocalPoint; 2]>,
     /// Its distinct boundary points, up to [`MIN_LOOP_POINTS`].
-    boundary_points: Vec<u32>,
+    boundary_points: Vec<LocalPoint>,
 }
 
 impl Component {
@@ -243,10 +247,10 @@ impl Component {
     /// Does its loop touch the rest of the crust at `p` only (every other boundary point of
     /// degree 2)? Where strokes of a drawing cross, a small region between them has several
     /// junctions on its boundary.
-    fn hangs_at(&self, p: u32, degree: &[u8]) -> bool {
+    fn hangs_at(&self, p: LocalPoint, degree: &[u8]) -> bool {
         self.boundary_points
             .iter()
-            .all(|&q| q == p || degree[q as usize] == 2)
+            .all(|&q| q == p || degree[q.index()] == 2)
     }
 }
 
@@ -300,7 +304,7 @@ impl Components {
                         }
                     }
                     _ => {
-                        let [a, b] = edge.sites.map(LocalPoint::get);
+                        let [a, b] = edge.sites;
                         component.boundary.push([a.min(b), a.max(b)]);
                         for q in [a, b] {
                             if !component.boundary_points.contains(&q) {
@@ -342,13 +346,11 @@ fn rejoining_vertex(
     labels: &[Label],
     search: &Components,
     ear: u32,
-    p: u32,
+    p: LocalPoint,
 ) -> Option<u32> {
     // Around p; an open cell (a hull point) is closed by the root, outer and never relabelled.
-    let mut cell: Vec<u32> = (vor.cell_vertices(LocalPoint::new(p)))
-        .map(VertexId::get)
-        .collect();
-    if !vor.is_interior(LocalPoint::new(p)) {
+    let mut cell: Vec<u32> = (vor.cell_vertices(p)).map(VertexId::get).collect();
+    if !vor.is_interior(p) {
         cell.push(ROOT);
     }
     let k = cell.len();
@@ -360,7 +362,7 @@ fn rejoining_vertex(
     let gap = |o: u32, beyond: u32| {
         let far_side_outer = || {
             vor.face_edges(VertexId::new(o)).all(|edge| {
-                edge.sites.contains(&LocalPoint::new(p))
+                edge.sites.contains(&p)
                     || match edge.to {
                         EdgeEnd::Infinity => true,
                         EdgeEnd::Vertex(u) => labels[u.index()] == Label::Outer,
@@ -391,16 +393,15 @@ fn rejoining_vertex(
 struct Change {
     to_outer: Vec<u32>,
     to_inner: Vec<u32>,
-    dropped: Vec<[u32; 2]>,
-    added: Vec<[u32; 2]>,
+    dropped: Vec<[LocalPoint; 2]>,
+    added: Vec<[LocalPoint; 2]>,
 }
 
 impl Change {
     /// The triangle `o` at `p` becomes inner: its two edges at `p` stop being crust, its far
     /// edge becomes crust.
-    fn rejoin(&mut self, vor: &Voronoi<'_>, p: u32, o: u32) {
-        let others: Vec<u32> = (vor.face_corners(VertexId::new(o)))
-            .map(LocalPoint::get)
+    fn rejoin(&mut self, vor: &Voronoi<'_>, p: LocalPoint, o: u32) {
+        let others: Vec<LocalPoint> = (vor.face_corners(VertexId::new(o)))
             .filter(|&q| q != p)
             .collect();
         let [x, y] = [others[0], others[1]];
@@ -416,7 +417,7 @@ impl Change {
         self.dropped.extend_from_slice(&ear.boundary);
     }
 
-    fn apply(mut self, labels: &mut [Label], edges: &mut Vec<[u32; 2]>) -> usize {
+    fn apply(mut self, labels: &mut [Label], edges: &mut Vec<[LocalPoint; 2]>) -> usize {
         for &v in &self.to_outer {
             labels[v as usize] = Label::Outer;
         }

@@ -5,8 +5,8 @@
 use super::ears::{repair_ears, Ears};
 use super::shared::{edges_near, lies_apart, median_length, segment_distance};
 use crate::delaunay::triangulate;
-use crate::ids::{HalfEdge, LocalPoint};
-use crate::reconstruct::curves::{assemble_named, Adjacency, Curve};
+use crate::ids::{ids, HalfEdge, LocalPoint};
+use crate::reconstruct::curves::{assemble_unnamed, Adjacency, LocalCurve};
 use crate::reconstruct::extract::wdm_crust_edges;
 use crate::reconstruct::lengths::distance;
 use crate::reconstruct::options::Options;
@@ -42,7 +42,11 @@ use crate::voronoi::Voronoi;
 /// Points excluded by these rules stay without edges: the reconstruction reports them as
 /// unassigned. On clean samples nothing changes: a hole's samples are far from the outer
 /// curve relative to the sample spacing, and its loop is all the pass finds.
-pub(crate) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Options) -> Peeling {
+pub(crate) fn peel(
+    full: &Voronoi<'_>,
+    edges: &mut Vec<[LocalPoint; 2]>,
+    options: &Options,
+) -> Peeling {
     let tri = full.triangulation();
     let points = &tri.points;
     let n = points.len();
@@ -58,21 +62,21 @@ pub(crate) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
     let mut extra = 0;
     loop {
         let curve = Adjacency::new(n, edges);
-        for p in 0..n as u32 {
-            if !spent[p as usize]
+        for p in ids::<LocalPoint>(n) {
+            if !spent[p.index()]
                 && curve.neighbours(p).is_empty()
                 && near_a_curve(full, |q| curve.neighbours(q), p)
             {
-                spent[p as usize] = true;
+                spent[p.index()] = true;
             }
         }
-        let rest: Vec<u32> = (0..n as u32)
-            .filter(|&p| !spent[p as usize] && curve.neighbours(p).is_empty())
+        let rest: Vec<LocalPoint> = ids::<LocalPoint>(n)
+            .filter(|&p| !spent[p.index()] && curve.neighbours(p).is_empty())
             .collect();
         for p in isolated_leftovers(full, &rest) {
-            spent[p as usize] = true;
+            spent[p.index()] = true;
         }
-        let rest: Vec<u32> = rest.into_iter().filter(|&p| !spent[p as usize]).collect();
+        let rest: Vec<LocalPoint> = rest.into_iter().filter(|&p| !spent[p.index()]).collect();
         if rest.len() < 3 {
             return Peeling::done(extra);
         }
@@ -88,14 +92,14 @@ pub(crate) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
         let chord_loops = loops_by_chords(full, &curve, &mut pass);
         let found = Adjacency::new(n, &pass.edges);
         let mut new_curves = Vec::new();
-        let pieces = assemble_named(n, &pass.edges, points, |p| p);
+        let pieces = assemble_unnamed(n, &pass.edges, points, LocalPoint::get);
         for mut piece in chord_loops.into_iter().chain(pieces) {
             close_by_chord(full, &curve, &found, &pass.chords, &mut piece);
             if is_a_curve(points, &piece, scale) {
                 new_curves.extend(piece_edges(&piece));
             } else {
                 for &p in &piece.points {
-                    spent[p as usize] = true;
+                    spent[p.index()] = true;
                 }
             }
         }
@@ -114,22 +118,24 @@ pub(crate) fn peel(full: &Voronoi<'_>, edges: &mut Vec<[u32; 2]>, options: &Opti
 /// but with the curve edges at the untouched points' Delaunay neighbours alone: a large,
 /// nearly clean sample leaves a handful of untouched points, and the loop's structures
 /// over all points (an adjacency of every edge) were then most of the phase's time.
-fn first_pass_may_run(full: &Voronoi<'_>, edges: &[[u32; 2]]) -> bool {
+fn first_pass_may_run(full: &Voronoi<'_>, edges: &[[LocalPoint; 2]]) -> bool {
     let n = full.triangulation().points.len();
     // A flag per point, not a bit: consecutive edges set bits of one word, and each of
     // those read-modify-writes waited for the one before (twice as slow at 10^7).
     let mut touched = vec![false; n];
     for &[a, b] in edges {
-        touched[a as usize] = true;
-        touched[b as usize] = true;
+        touched[a.index()] = true;
+        touched[b.index()] = true;
     }
-    let untouched: Vec<u32> = (0..n as u32).filter(|&p| !touched[p as usize]).collect();
+    let untouched: Vec<LocalPoint> = ids::<LocalPoint>(n)
+        .filter(|&p| !touched[p.index()])
+        .collect();
     if untouched.len() < 3 {
         return false;
     }
     // Every curve edge at a neighbour of an untouched point: all that `near_a_curve` reads.
     let curve = edges_near(full, &untouched, edges);
-    let rest: Vec<u32> = untouched
+    let rest: Vec<LocalPoint> = untouched
         .into_iter()
         .filter(|&p| !near_a_curve(full, |q| curve.neighbours(q), p))
         .collect();
@@ -149,27 +155,26 @@ fn first_pass_may_run(full: &Voronoi<'_>, edges: &[[u32; 2]]) -> bool {
 ///
 /// The groups are sets of points: the result does not depend on the input order. `rest` is
 /// sorted.
-fn isolated_leftovers(full: &Voronoi<'_>, rest: &[u32]) -> Vec<u32> {
+fn isolated_leftovers(full: &Voronoi<'_>, rest: &[LocalPoint]) -> Vec<LocalPoint> {
     let points = &full.triangulation().points;
-    let at = |p: u32| points[p as usize];
+    let at = |p: LocalPoint| points[p.index()];
     // Position in `rest` (sorted) of a point, or none: an array over all points, or for
     // few leftovers a binary search (the array alone would be a pass over all points).
     let slots = (rest.len() >= points.len() / 64).then(|| {
         let mut slots = vec![u32::MAX; points.len()];
         for (i, &p) in rest.iter().enumerate() {
-            slots[p as usize] = i as u32;
+            slots[p.index()] = i as u32;
         }
         slots
     });
-    let slot = |q: u32| match &slots {
-        Some(slots) => Some(slots[q as usize] as usize).filter(|&j| j != u32::MAX as usize),
+    let slot = |q: LocalPoint| match &slots {
+        Some(slots) => Some(slots[q.index()] as usize).filter(|&j| j != u32::MAX as usize),
         None => rest.binary_search(&q).ok(),
     };
     let nearest: Vec<f64> = rest
         .iter()
         .map(|&p| {
-            full.delaunay_neighbours(LocalPoint::new(p))
-                .map(LocalPoint::get)
+            full.delaunay_neighbours(p)
                 .map(|q| distance(at(p), at(q)))
                 .fold(f64::INFINITY, f64::min)
         })
@@ -187,10 +192,7 @@ fn isolated_leftovers(full: &Voronoi<'_>, rest: &[u32]) -> Vec<u32> {
             let i = group[next];
             next += 1;
             let p = rest[i];
-            for q in full
-                .delaunay_neighbours(LocalPoint::new(p))
-                .map(LocalPoint::get)
-            {
+            for q in full.delaunay_neighbours(p) {
                 let Some(j) = slot(q) else {
                     continue;
                 };
@@ -211,19 +213,19 @@ fn isolated_leftovers(full: &Voronoi<'_>, rest: &[u32]) -> Vec<u32> {
 /// (`[min, max]`, local indices of the full triangulation, sorted), and the other ones that
 /// cross no curve found before (sorted): candidates for [`close_by_chord`].
 struct LaterPass {
-    edges: Vec<[u32; 2]>,
-    chords: Vec<[u32; 2]>,
+    edges: Vec<[LocalPoint; 2]>,
+    chords: Vec<[LocalPoint; 2]>,
 }
 
 /// WDM_CRUST on the points `rest` alone (see [`peel`]).
 fn later_pass(
     full: &Voronoi<'_>,
     earlier: &Adjacency,
-    rest: &[u32],
+    rest: &[LocalPoint],
     options: &Options,
 ) -> LaterPass {
     let points = &full.triangulation().points;
-    let subset: Vec<[f64; 2]> = rest.iter().map(|&i| points[i as usize]).collect();
+    let subset: Vec<[f64; 2]> = rest.iter().map(|&i| points[i.index()]).collect();
     let nothing = LaterPass {
         edges: Vec::new(),
         chords: Vec::new(),
@@ -242,18 +244,18 @@ fn later_pass(
     // rejoining edge is the pass's, not always a Delaunay edge of all the points, and the
     // rule below opens the loop there; ARCHITECTURE.md, "Ears").
     repair_ears(&vor, &mut labels, &mut crust, Ears::Drop);
-    // `sub`'s caller indices are positions in `rest`.
-    let (mut edges, chords): (Vec<[u32; 2]>, Vec<[u32; 2]>) = crust
+    // `sub`'s local points are its own; its caller indices are positions in `rest`.
+    let (mut edges, chords): (Vec<[LocalPoint; 2]>, Vec<[LocalPoint; 2]>) = crust
         .iter()
         .map(|&[a, b]| {
-            let at = |p: u32| rest[sub.input_index(LocalPoint::new(p)) as usize];
+            let at = |p: LocalPoint| rest[sub.input_index(p) as usize];
             let (a, b) = (at(a), at(b));
             [a.min(b), a.max(b)]
         })
-        .partition(|&[a, b]| full.is_delaunay_edge(LocalPoint::new(a), LocalPoint::new(b)));
-    let mut chords: Vec<[u32; 2]> = chords
+        .partition(|&[a, b]| full.is_delaunay_edge(a, b));
+    let mut chords: Vec<[LocalPoint; 2]> = chords
         .into_iter()
-        .filter(|&[a, b]| !crosses_a_curve(full, earlier, LocalPoint::new(a), LocalPoint::new(b)))
+        .filter(|&[a, b]| !crosses_a_curve(full, earlier, a, b))
         .collect();
     edges.sort_unstable();
     chords.sort_unstable();
@@ -274,15 +276,15 @@ fn close_by_chord(
     full: &Voronoi<'_>,
     earlier: &Adjacency,
     found: &Adjacency,
-    chords: &[[u32; 2]],
-    piece: &mut Curve,
+    chords: &[[LocalPoint; 2]],
+    piece: &mut LocalCurve,
 ) {
     let p = &piece.points;
     if piece.closed || p.len() < 3 {
         return;
     }
     let (u, v) = (p[0], p[p.len() - 1]);
-    let is_end = |w: u32| found.neighbours(w).len() == 1;
+    let is_end = |w: LocalPoint| found.neighbours(w).len() == 1;
     if chords.binary_search(&[u.min(v), u.max(v)]).is_err() || !is_end(u) || !is_end(v) {
         return;
     }
@@ -312,16 +314,20 @@ fn close_by_chord(
 /// triangulation, so they cross no other curve either: the loop is a curve of a plane
 /// drawing. The separation test keeps chains of a noise band's leftovers near a curve
 /// from being closed this way.
-fn loops_by_chords(full: &Voronoi<'_>, earlier: &Adjacency, pass: &mut LaterPass) -> Vec<Curve> {
+fn loops_by_chords(
+    full: &Voronoi<'_>,
+    earlier: &Adjacency,
+    pass: &mut LaterPass,
+) -> Vec<LocalCurve> {
     if pass.chords.is_empty() {
         return Vec::new();
     }
     let points = &full.triangulation().points;
-    let mut both: Vec<[u32; 2]> = pass.edges.iter().chain(&pass.chords).copied().collect();
+    let mut both: Vec<[LocalPoint; 2]> = pass.edges.iter().chain(&pass.chords).copied().collect();
     both.sort_unstable();
-    let is_chord = |e: &[u32; 2]| pass.chords.binary_search(e).is_ok();
+    let is_chord = |e: &[LocalPoint; 2]| pass.chords.binary_search(e).is_ok();
     let mut loops = Vec::new();
-    for piece in assemble_named(points.len(), &both, points, |p| p) {
+    for piece in assemble_unnamed(points.len(), &both, points, LocalPoint::get) {
         if !piece.closed {
             continue;
         }
@@ -340,16 +346,17 @@ fn loops_by_chords(full: &Voronoi<'_>, earlier: &Adjacency, pass: &mut LaterPass
             loops.push((piece, edges));
         }
     }
-    let mut taken: Vec<[u32; 2]> = loops.iter().flat_map(|(_, e)| e.iter().copied()).collect();
+    let mut taken: Vec<[LocalPoint; 2]> =
+        loops.iter().flat_map(|(_, e)| e.iter().copied()).collect();
     taken.sort_unstable();
-    let kept = |e: &[u32; 2]| taken.binary_search(e).is_err();
+    let kept = |e: &[LocalPoint; 2]| taken.binary_search(e).is_err();
     pass.edges.retain(kept);
     pass.chords.retain(kept);
     loops.into_iter().map(|(piece, _)| piece).collect()
 }
 
 /// The edges `[min, max]` of a curve (a closed one includes its closing edge).
-fn piece_edges(curve: &Curve) -> Vec<[u32; 2]> {
+fn piece_edges(curve: &LocalCurve) -> Vec<[LocalPoint; 2]> {
     let p = &curve.points;
     let closing = curve.closed.then(|| [p[p.len() - 1], p[0]]);
     p.windows(2)
@@ -369,7 +376,7 @@ fn piece_edges(curve: &Curve) -> Vec<[u32; 2]> {
 ///   turning angle between consecutive edges at most [`MAX_MEDIAN_TURN`] (an ε-sample of a
 ///   smooth curve turns by about ε radians per sample, a path through noise points
 ///   zigzags).
-fn is_a_curve(points: &[[f64; 2]], curve: &Curve, scale: f64) -> bool {
+fn is_a_curve(points: &[[f64; 2]], curve: &LocalCurve, scale: f64) -> bool {
     let p = &curve.points;
     let fewest = if curve.closed {
         MIN_LOOP_POINTS
@@ -382,7 +389,7 @@ fn is_a_curve(points: &[[f64; 2]], curve: &Curve, scale: f64) -> bool {
     if curve.closed {
         return true;
     }
-    let at = |i: usize| points[p[i] as usize];
+    let at = |i: usize| points[p[i].index()];
     let mut turns: Vec<f64> = (1..p.len() - 1)
         .map(|i| turning_angle(at(i - 1), at(i), at(i + 1)))
         .collect();
@@ -409,22 +416,24 @@ fn turning_angle(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
 /// is the common case.
 ///
 /// `curve(q)` gives the curve edges at `q`, as [`Adjacency::neighbours`] does.
-fn near_a_curve<'a>(full: &Voronoi<'_>, curve: impl Fn(u32) -> &'a [(u32, u32)], p: u32) -> bool {
+fn near_a_curve<'a>(
+    full: &Voronoi<'_>,
+    curve: impl Fn(LocalPoint) -> &'a [(u32, LocalPoint)],
+    p: LocalPoint,
+) -> bool {
     let points = &full.triangulation().points;
-    let at = |i: u32| points[i as usize];
-    full.delaunay_neighbours(LocalPoint::new(p))
-        .map(LocalPoint::get)
-        .any(|q| {
-            // The sample spacing at q: its shortest curve edge (a long edge, where a curve
-            // bridges a gap, says nothing about how far its noise reaches).
-            let spacing = curve(q)
-                .iter()
-                .map(|&(_, r)| distance(at(q), at(r)))
-                .fold(f64::INFINITY, f64::min);
-            curve(q)
-                .iter()
-                .any(|&(_, r)| segment_distance(at(p), at(q), at(r)) < NEAR_CURVE * spacing)
-        })
+    let at = |i: LocalPoint| points[i.index()];
+    full.delaunay_neighbours(p).any(|q| {
+        // The sample spacing at q: its shortest curve edge (a long edge, where a curve
+        // bridges a gap, says nothing about how far its noise reaches).
+        let spacing = curve(q)
+            .iter()
+            .map(|&(_, r)| distance(at(q), at(r)))
+            .fold(f64::INFINITY, f64::min);
+        curve(q)
+            .iter()
+            .any(|&(_, r)| segment_distance(at(p), at(q), at(r)) < NEAR_CURVE * spacing)
+    })
 }
 
 /// How peeling ended.
@@ -459,9 +468,9 @@ impl Peeling {
 /// pass did not find) and the result are in local indices.
 pub(crate) fn hole_edges(
     vor: &Voronoi<'_>,
-    curves: &[Curve],
-    not_first_pass: impl Fn(&[u32; 2]) -> bool,
-) -> Vec<[u32; 2]> {
+    curves: &[LocalCurve],
+    not_first_pass: impl Fn(&[LocalPoint; 2]) -> bool,
+) -> Vec<[LocalPoint; 2]> {
     let mut holes = Vec::new();
     for curve in curves.iter().filter(|c| c.closed) {
         let loop_edges = curve
@@ -470,9 +479,7 @@ pub(crate) fn hole_edges(
             .zip(curve.points.iter().cycle().skip(1))
             .map(|(&a, &b)| [a.min(b), a.max(b)]);
         let is_hole = loop_edges.clone().all(|[a, b]| {
-            let (a, b) = (LocalPoint::new(a), LocalPoint::new(b));
-            not_first_pass(&[a.get(), b.get()])
-                && vor.delaunay_halfedge(a, b).is_some_and(|e| vor.has_dual(e))
+            not_first_pass(&[a, b]) && vor.delaunay_halfedge(a, b).is_some_and(|e| vor.has_dual(e))
         });
         if is_hole {
             holes.extend(loop_edges);
@@ -484,17 +491,14 @@ pub(crate) fn hole_edges(
 /// Every Voronoi vertex: is it separated from infinity by an odd number of the given edges
 /// (searched from the rays)? Well defined only for a set of closed loops, see
 /// [`hole_edges`].
-pub(crate) fn parity_inside(vor: &Voronoi<'_>, edges: &[[u32; 2]]) -> Vec<bool> {
+pub(crate) fn parity_inside(vor: &Voronoi<'_>, edges: &[[LocalPoint; 2]]) -> Vec<bool> {
     let tri = vor.triangulation();
     // Crust neighbours of every point (two for most): a lookup touches one short row
     // instead of a binary search over all edges.
     let crust = Adjacency::new(tri.points.len(), edges);
     let is_crust = |e: HalfEdge| {
-        let b = tri.dest(e).get();
-        crust
-            .neighbours(tri.org(e).get())
-            .iter()
-            .any(|&(_, q)| q == b)
+        let b = tri.dest(e);
+        crust.neighbours(tri.org(e)).iter().any(|&(_, q)| q == b)
     };
     parity_from_infinity(vor, vec![false; vor.vertex_count()], is_crust)
 }

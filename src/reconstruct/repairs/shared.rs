@@ -14,11 +14,11 @@ use crate::voronoi::Voronoi;
 
 /// The crust degree of every point (saturating at 255). Degrees are even: the labels change an
 /// even number of times around a cell.
-pub(crate) fn degrees(point_count: usize, edges: &[[u32; 2]]) -> Vec<u8> {
+pub(crate) fn degrees(point_count: usize, edges: &[[LocalPoint; 2]]) -> Vec<u8> {
     let mut degree = vec![0u8; point_count];
     for &[a, b] in edges {
-        degree[a as usize] = degree[a as usize].saturating_add(1);
-        degree[b as usize] = degree[b as usize].saturating_add(1);
+        degree[a.index()] = degree[a.index()].saturating_add(1);
+        degree[b.index()] = degree[b.index()].saturating_add(1);
     }
     degree
 }
@@ -26,20 +26,21 @@ pub(crate) fn degrees(point_count: usize, edges: &[[u32; 2]]) -> Vec<u8> {
 /// The `edges` at the Delaunay neighbours of `points`: what peeling's `near_a_curve` and
 /// [`lies_apart`] read of the curves around those points, without an adjacency of every
 /// edge (a pass over all points).
-pub(crate) fn edges_near(full: &Voronoi<'_>, points: &[u32], edges: &[[u32; 2]]) -> SomeAdjacency {
+pub(crate) fn edges_near(
+    full: &Voronoi<'_>,
+    points: &[LocalPoint],
+    edges: &[[LocalPoint; 2]],
+) -> SomeAdjacency {
     let mut asked = Bits::new(full.triangulation().points.len());
     for &p in points {
-        for q in full
-            .delaunay_neighbours(LocalPoint::new(p))
-            .map(LocalPoint::get)
-        {
-            asked.set(q as usize);
+        for q in full.delaunay_neighbours(p) {
+            asked.set(q.index());
         }
     }
-    let near: Vec<[u32; 2]> = edges
+    let near: Vec<[LocalPoint; 2]> = edges
         .iter()
         .copied()
-        .filter(|&[a, b]| asked.get(a as usize) || asked.get(b as usize))
+        .filter(|&[a, b]| asked.get(a.index()) || asked.get(b.index()))
         .collect();
     SomeAdjacency::new(&near)
 }
@@ -53,31 +54,28 @@ pub(crate) fn edges_near(full: &Voronoi<'_>, points: &[u32], edges: &[[u32; 2]])
 /// islets of `ears.rs` leave out their own points).
 pub(crate) fn lies_apart<'a>(
     full: &Voronoi<'_>,
-    earlier: impl Fn(u32) -> &'a [(u32, u32)],
-    curve: &[u32],
+    earlier: impl Fn(LocalPoint) -> &'a [(u32, LocalPoint)],
+    curve: &[LocalPoint],
     spacing: f64,
-    counts: impl Fn(u32) -> bool,
+    counts: impl Fn(LocalPoint) -> bool,
 ) -> bool {
     let points = &full.triangulation().points;
-    let at = |i: u32| points[i as usize];
+    let at = |i: LocalPoint| points[i.index()];
     curve.iter().all(|&p| {
-        full.delaunay_neighbours(LocalPoint::new(p))
-            .map(LocalPoint::get)
-            .filter(|&q| counts(q))
-            .all(|q| {
-                earlier(q)
-                    .iter()
-                    .all(|&(_, r)| segment_distance(at(p), at(q), at(r)) >= APART * spacing)
-            })
+        full.delaunay_neighbours(p).filter(|&q| counts(q)).all(|q| {
+            earlier(q)
+                .iter()
+                .all(|&(_, r)| segment_distance(at(p), at(q), at(r)) >= APART * spacing)
+        })
     })
 }
 
 /// The median length of `edges` (0 for none). A rounded length: it only sets the scale of a
 /// rule's threshold, never an exact decision.
-pub(crate) fn median_length(points: &[[f64; 2]], edges: &[[u32; 2]]) -> f64 {
+pub(crate) fn median_length(points: &[[f64; 2]], edges: &[[LocalPoint; 2]]) -> f64 {
     let mut lengths: Vec<f64> = edges
         .iter()
-        .map(|&[a, b]| distance(points[a as usize], points[b as usize]))
+        .map(|&[a, b]| distance(points[a.index()], points[b.index()]))
         .collect();
     if lengths.is_empty() {
         return 0.0;
@@ -101,9 +99,9 @@ pub(crate) fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
 /// What the repair changes: edges to add and edges to remove, each sorted.
 pub(crate) struct Repair {
     /// The reattached stretches.
-    pub(crate) added: Vec<[u32; 2]>,
+    pub(crate) added: Vec<[LocalPoint; 2]>,
     /// The detours.
-    pub(crate) removed: Vec<[u32; 2]>,
+    pub(crate) removed: Vec<[LocalPoint; 2]>,
 }
 
 impl Repair {
@@ -115,15 +113,15 @@ impl Repair {
     }
 
     /// Applies the repair to the edges it was computed on.
-    pub(crate) fn apply(&self, edges: &mut Vec<[u32; 2]>) {
+    pub(crate) fn apply(&self, edges: &mut Vec<[LocalPoint; 2]>) {
         if let Some(largest) = self.removed.iter().map(|e| e[0]).max() {
             // A bit test on the smaller end first: a search of `removed` for every edge was
             // most of the time.
-            let mut ends = Bits::new(largest as usize + 1);
+            let mut ends = Bits::new(largest.index() + 1);
             for &[a, _] in &self.removed {
-                ends.set(a as usize);
+                ends.set(a.index());
             }
-            let may_be_removed = |a: u32| a <= largest && ends.get(a as usize);
+            let may_be_removed = |a: LocalPoint| a <= largest && ends.get(a.index());
             edges.retain(|e| !may_be_removed(e[0]) || self.removed.binary_search(e).is_err());
         }
         edges.extend_from_slice(&self.added);
@@ -132,8 +130,8 @@ impl Repair {
 
 /// A swap: the stretch's edges replace the detour's.
 pub(crate) struct Swap {
-    pub(crate) stretch: Vec<[u32; 2]>,
-    pub(crate) detour: Vec<[u32; 2]>,
+    pub(crate) stretch: Vec<[LocalPoint; 2]>,
+    pub(crate) detour: Vec<[LocalPoint; 2]>,
 }
 
 /// The curve edges with the swaps made so far: the original edges, and the current
@@ -142,13 +140,13 @@ pub(crate) struct Swap {
 pub(crate) struct EditedCurves {
     original: Adjacency,
     touched: Vec<bool>,
-    current: BTreeMap<u32, Vec<u32>>,
-    removed: BTreeSet<[u32; 2]>,
-    added: BTreeSet<[u32; 2]>,
+    current: BTreeMap<LocalPoint, Vec<LocalPoint>>,
+    removed: BTreeSet<[LocalPoint; 2]>,
+    added: BTreeSet<[LocalPoint; 2]>,
 }
 
 impl EditedCurves {
-    pub(crate) fn new(n: usize, edges: &[[u32; 2]]) -> Self {
+    pub(crate) fn new(n: usize, edges: &[[LocalPoint; 2]]) -> Self {
         EditedCurves {
             original: Adjacency::new(n, edges),
             touched: vec![false; n],
@@ -159,8 +157,8 @@ impl EditedCurves {
     }
 
     /// The current curve neighbours of `p`, when there are exactly two.
-    pub(crate) fn two_neighbours(&self, p: u32) -> Option<[u32; 2]> {
-        if self.touched[p as usize] {
+    pub(crate) fn two_neighbours(&self, p: LocalPoint) -> Option<[LocalPoint; 2]> {
+        if self.touched[p.index()] {
             match self.current[&p].as_slice() {
                 &[x, y] => Some([x, y]),
                 _ => None,
@@ -177,15 +175,15 @@ impl EditedCurves {
     pub(crate) fn on_curve(&self, original: &[bool]) -> Vec<bool> {
         let mut on_curve = original.to_vec();
         for (&p, neighbours) in &self.current {
-            on_curve[p as usize] = !neighbours.is_empty();
+            on_curve[p.index()] = !neighbours.is_empty();
         }
         on_curve
     }
 
     /// The current neighbours of `p`, to edit.
-    pub(crate) fn neighbours_mut(&mut self, p: u32) -> &mut Vec<u32> {
+    pub(crate) fn neighbours_mut(&mut self, p: LocalPoint) -> &mut Vec<LocalPoint> {
         let original = &self.original;
-        self.touched[p as usize] = true;
+        self.touched[p.index()] = true;
         self.current
             .entry(p)
             .or_insert_with(|| original.neighbours(p).iter().map(|&(_, q)| q).collect())

@@ -40,7 +40,7 @@
 //! degrees of `a` and `b` (2) and takes the spike's points from 2 to 0, like a swap.
 
 use super::shared::{EditedCurves, Swap};
-use crate::ids::LocalPoint;
+use crate::ids::{ids, LocalPoint};
 use crate::kernel::{orient, Sign};
 use crate::reconstruct::thresholds::spikes::{
     GLOBAL_CONTRAST, LOCAL_CONTRAST, MEDIAN_SAMPLE, MIN_SPIKE_TURN, PAIR_FACTOR,
@@ -56,9 +56,9 @@ pub(crate) fn drop_woven_spikes(
     median: &mut Option<f64>,
 ) -> usize {
     let points = &vor.triangulation().points;
-    let at = |i: u32| points[i as usize];
+    let at = |i: LocalPoint| points[i.index()];
     let mut dropped = 0;
-    for o in 0..points.len() as u32 {
+    for o in ids::<LocalPoint>(points.len()) {
         let Some([x, y]) = curves.two_neighbours(o) else {
             continue;
         };
@@ -72,11 +72,7 @@ pub(crate) fn drop_woven_spikes(
             let Some(found) = spike_candidate(points, curves, spike) else {
                 continue;
             };
-            if !vor
-                .dual_neighbours(LocalPoint::new(found.a))
-                .map(LocalPoint::get)
-                .any(|q| q == found.b)
-            {
+            if !vor.dual_neighbours(found.a).any(|q| q == found.b) {
                 continue;
             }
             let median = *median.get_or_insert_with(|| median_turn(points, curves));
@@ -97,8 +93,8 @@ pub(crate) fn drop_woven_spikes(
 /// A spike that passes the tests of the module docs on its run, all but the median's.
 struct Candidate {
     /// The curve points before and after the spike.
-    a: u32,
-    b: u32,
+    a: LocalPoint,
+    b: LocalPoint,
     /// The turn of the spike: the sum of its points' turns.
     turn: f64,
 }
@@ -106,9 +102,13 @@ struct Candidate {
 /// `spike` (one point, or two consecutive points of the curves) when it passes conditions
 /// 2–4 of the module docs but the median's: the run `a'' → a' → a → spike → b → b' → b''` has
 /// distinct points, each with two curve edges.
-fn spike_candidate(points: &[[f64; 2]], curves: &EditedCurves, spike: &[u32]) -> Option<Candidate> {
-    let at = |i: u32| points[i as usize];
-    let beyond = |from: u32, p: u32| -> Option<u32> {
+fn spike_candidate(
+    points: &[[f64; 2]],
+    curves: &EditedCurves,
+    spike: &[LocalPoint],
+) -> Option<Candidate> {
+    let at = |i: LocalPoint| points[i.index()];
+    let beyond = |from: LocalPoint, p: LocalPoint| -> Option<LocalPoint> {
         let [x, y] = curves.two_neighbours(p)?;
         Some(if x == from { y } else { x })
     };
@@ -117,7 +117,7 @@ fn spike_candidate(points: &[[f64; 2]], curves: &EditedCurves, spike: &[u32]) ->
         [o1, o2] => (beyond(o2, o1)?, beyond(o1, o2)?),
         _ => return None,
     };
-    let chain: Vec<u32> = std::iter::once(a)
+    let chain: Vec<LocalPoint> = std::iter::once(a)
         .chain(spike.iter().copied())
         .chain(std::iter::once(b))
         .collect();
@@ -164,7 +164,7 @@ fn spike_candidate(points: &[[f64; 2]], curves: &EditedCurves, spike: &[u32]) ->
 }
 
 /// A contrast of condition 4 for `spike`: higher for two points.
-fn contrast(base: f64, spike: &[u32]) -> f64 {
+fn contrast(base: f64, spike: &[LocalPoint]) -> f64 {
     if spike.len() == 2 {
         base * PAIR_FACTOR
     } else {
@@ -172,17 +172,17 @@ fn contrast(base: f64, spike: &[u32]) -> f64 {
     }
 }
 
-fn edge(a: u32, b: u32) -> [u32; 2] {
+fn edge(a: LocalPoint, b: LocalPoint) -> [LocalPoint; 2] {
     [a.min(b), a.max(b)]
 }
 
 /// The edges of `a → spike → b`, sorted.
-fn path_edges(a: u32, spike: &[u32], b: u32) -> Vec<[u32; 2]> {
-    let path: Vec<u32> = std::iter::once(a)
+fn path_edges(a: LocalPoint, spike: &[LocalPoint], b: LocalPoint) -> Vec<[LocalPoint; 2]> {
+    let path: Vec<LocalPoint> = std::iter::once(a)
         .chain(spike.iter().copied())
         .chain(std::iter::once(b))
         .collect();
-    let mut edges: Vec<[u32; 2]> = path.windows(2).map(|w| edge(w[0], w[1])).collect();
+    let mut edges: Vec<[LocalPoint; 2]> = path.windows(2).map(|w| edge(w[0], w[1])).collect();
     edges.sort_unstable();
     edges
 }
@@ -211,9 +211,9 @@ fn turns_more_than(p: [f64; 2], q: [f64; 2], r: [f64; 2], angle: f64) -> bool {
 /// about [`MEDIAN_SAMPLE`] points taken at even steps of the local order (which follows the
 /// coordinates, so the estimate does not depend on the input order).
 fn median_turn(points: &[[f64; 2]], curves: &EditedCurves) -> f64 {
-    let at = |i: u32| points[i as usize];
+    let at = |i: LocalPoint| points[i.index()];
     let step = points.len().div_ceil(MEDIAN_SAMPLE).max(1);
-    let mut turns: Vec<f64> = (0..points.len() as u32)
+    let mut turns: Vec<f64> = ids::<LocalPoint>(points.len())
         .step_by(step)
         .filter_map(|p| {
             let [a, b] = curves.two_neighbours(p)?;
@@ -246,6 +246,11 @@ mod tests {
             .collect()
     }
 
+    /// The edge between the caller indices `a` and `b`, smaller first.
+    fn edge(a: u32, b: u32) -> [u32; 2] {
+        [a.min(b), a.max(b)]
+    }
+
     /// The closed polygon through `order` (caller indices).
     fn polygon(order: &[u32]) -> Vec<[u32; 2]> {
         (0..order.len())
@@ -258,22 +263,17 @@ mod tests {
     fn spikes_of(points: &[[f64; 2]], edges: &[[u32; 2]]) -> (Vec<[u32; 2]>, Vec<[u32; 2]>) {
         let tri = triangulate(points).unwrap();
         let vor = tri.voronoi();
-        let local: Vec<[u32; 2]> = edges
+        let local: Vec<[LocalPoint; 2]> = edges
             .iter()
-            .map(|&[a, b]| edge(tri.local_index(a).get(), tri.local_index(b).get()))
+            .map(|&[a, b]| super::edge(tri.local_index(a), tri.local_index(b)))
             .collect();
         let mut curves = EditedCurves::new(points.len(), &local);
         drop_woven_spikes(&vor, &mut curves, &mut None);
         let repair = curves.into_repair();
-        let caller = |edges: Vec<[u32; 2]>| {
+        let caller = |edges: Vec<[LocalPoint; 2]>| {
             let mut edges: Vec<[u32; 2]> = edges
                 .into_iter()
-                .map(|[a, b]| {
-                    edge(
-                        tri.input_index(LocalPoint::new(a)),
-                        tri.input_index(LocalPoint::new(b)),
-                    )
-                })
+                .map(|[a, b]| edge(tri.input_index(a), tri.input_index(b)))
                 .collect();
             edges.sort_unstable();
             edges

@@ -4,8 +4,9 @@
 //! points involved are undone, until nothing fails.
 
 use super::super::curves::ring_orientation_by;
-use super::super::curves::Curve;
+use super::super::curves::LocalCurve;
 use super::super::thresholds::smooth::{MAX_ROUNDS, SHORTENED, STAGES};
+use crate::ids::LocalPoint;
 use crate::kernel::{orient, Sign};
 
 /// Shortens or undoes the moves of `moved` (fitted positions by local point, `None`: at
@@ -13,10 +14,10 @@ use crate::kernel::{orient, Sign};
 /// remains in `moved` is where the points go.
 pub(super) fn undo_crossings(
     points: &[[f64; 2]],
-    curves: &[Curve],
+    curves: &[LocalCurve],
     moved: &mut [Option<[f64; 2]>],
 ) {
-    let mut segments: Vec<[u32; 2]> = Vec::new();
+    let mut segments: Vec<[LocalPoint; 2]> = Vec::new();
     for c in curves {
         let k = c.points.len();
         let count = if c.closed { k } else { k.saturating_sub(1) };
@@ -25,15 +26,15 @@ pub(super) fn undo_crossings(
     let fitted: Vec<Option<[f64; 2]>> = moved.to_vec();
     let mut stage = vec![0u8; moved.len()];
     for _ in 0..MAX_ROUNDS {
-        let at = |p: u32| moved[p as usize].unwrap_or(points[p as usize]);
-        let mut undo: Vec<u32> = Vec::new();
+        let at = |p: LocalPoint| moved[p.index()].unwrap_or(points[p.index()]);
+        let mut undo: Vec<LocalPoint> = Vec::new();
         for [a, b] in meeting_pairs(&segments, &at) {
             undo.extend(a);
             undo.extend(b);
         }
         for c in curves.iter().filter(|c| c.closed) {
             let ring = &c.points;
-            if ring.iter().any(|&p| moved[p as usize].is_some())
+            if ring.iter().any(|&p| moved[p.index()].is_some())
                 && ring_orientation_by(ring.len(), |i| at(ring[i])) != Sign::Positive
             {
                 undo.extend_from_slice(ring);
@@ -43,7 +44,7 @@ pub(super) fn undo_crossings(
         undo.dedup();
         let mut changed = false;
         for p in undo {
-            let p = p as usize;
+            let p = p.index();
             let (Some(f), Some(_)) = (fitted[p], moved[p]) else {
                 continue;
             };
@@ -65,7 +66,10 @@ pub(super) fn undo_crossings(
 /// Pairs of segments that meet other than at a shared end (a shared end counts when the two
 /// fold over each other, and a segment of length zero meets everything), decided exactly;
 /// candidates from a grid over the segments' boxes.
-fn meeting_pairs(segments: &[[u32; 2]], at: &impl Fn(u32) -> [f64; 2]) -> Vec<[[u32; 2]; 2]> {
+fn meeting_pairs(
+    segments: &[[LocalPoint; 2]],
+    at: &impl Fn(LocalPoint) -> [f64; 2],
+) -> Vec<[[LocalPoint; 2]; 2]> {
     let mut found = Vec::new();
     if segments.is_empty() {
         return found;
@@ -202,7 +206,12 @@ impl Grid {
 /// Whether segments `s` and `t` (point indices, ends at `ps` and `pt`) meet other than
 /// at an end they share, exactly; two that share an end meet when they fold over each
 /// other (collinear, overlapping past it).
-fn segments_meet(s: [u32; 2], t: [u32; 2], ps: [[f64; 2]; 2], pt: [[f64; 2]; 2]) -> bool {
+fn segments_meet(
+    s: [LocalPoint; 2],
+    t: [LocalPoint; 2],
+    ps: [[f64; 2]; 2],
+    pt: [[f64; 2]; 2],
+) -> bool {
     let shared = (0..2).find_map(|i| (0..2).find(|&j| s[i] == t[j]).map(|j| (i, j)));
     if let Some((i, j)) = shared {
         if s[1 - i] == t[1 - j] {
@@ -240,56 +249,61 @@ fn within(a: [f64; 2], b: [f64; 2], q: [f64; 2]) -> bool {
 mod tests {
     use super::*;
 
+    /// The local points numbered `ends`.
+    fn local(ends: [u32; 2]) -> [LocalPoint; 2] {
+        ends.map(LocalPoint::new)
+    }
+
     #[test]
     fn segments_meet_exactly() {
         let s = |a: [f64; 2], b: [f64; 2]| [a, b];
         // Crossing, touching at an inner point, apart, collinear overlapping, collinear apart.
         assert!(segments_meet(
-            [0, 1],
-            [2, 3],
+            local([0, 1]),
+            local([2, 3]),
             s([0.0, 0.0], [2.0, 2.0]),
             s([0.0, 2.0], [2.0, 0.0])
         ));
         assert!(segments_meet(
-            [0, 1],
-            [2, 3],
+            local([0, 1]),
+            local([2, 3]),
             s([0.0, 0.0], [2.0, 0.0]),
             s([1.0, 0.0], [1.0, 1.0])
         ));
         assert!(!segments_meet(
-            [0, 1],
-            [2, 3],
+            local([0, 1]),
+            local([2, 3]),
             s([0.0, 0.0], [1.0, 0.0]),
             s([2.0, 0.0], [3.0, 1.0])
         ));
         assert!(segments_meet(
-            [0, 1],
-            [2, 3],
+            local([0, 1]),
+            local([2, 3]),
             s([0.0, 0.0], [2.0, 0.0]),
             s([1.0, 0.0], [3.0, 0.0])
         ));
         assert!(!segments_meet(
-            [0, 1],
-            [2, 3],
+            local([0, 1]),
+            local([2, 3]),
             s([0.0, 0.0], [1.0, 0.0]),
             s([2.0, 0.0], [3.0, 0.0])
         ));
         // Sharing an end: a turn is fine, folding back is not.
         assert!(!segments_meet(
-            [0, 1],
-            [1, 2],
+            local([0, 1]),
+            local([1, 2]),
             s([0.0, 0.0], [1.0, 0.0]),
             s([1.0, 0.0], [1.0, 1.0])
         ));
         assert!(!segments_meet(
-            [0, 1],
-            [1, 2],
+            local([0, 1]),
+            local([1, 2]),
             s([0.0, 0.0], [1.0, 0.0]),
             s([1.0, 0.0], [2.0, 0.0])
         ));
         assert!(segments_meet(
-            [0, 1],
-            [1, 2],
+            local([0, 1]),
+            local([1, 2]),
             s([0.0, 0.0], [1.0, 0.0]),
             s([1.0, 0.0], [0.5, 0.0])
         ));
@@ -308,9 +322,9 @@ mod tests {
             [0.0, 2.0],
             [0.0, 1.0],
         ];
-        let curves = [Curve {
+        let curves = [LocalCurve {
             closed: true,
-            points: (0..8).collect(),
+            points: crate::ids::ids(8).collect(),
         }];
         let mut moved = vec![None; 8];
         moved[2] = Some([1.0, 2.5]);

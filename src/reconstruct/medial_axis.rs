@@ -283,7 +283,7 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&LocalCurve], frame: Frame) -> MedialA
     // The subset is a selection of already validated distinct points: `axis_through`
     // cannot refuse it.
     let at = |p: LocalPoint| tri.points[p.index()];
-    axis_through(loops, at, at, frame).unwrap_or_default()
+    axis_through(loops, at, at, Drawn::Samples, frame).unwrap_or_default()
 }
 
 /// The pruned medial axis of the closed curves among `curves` (local indices of the
@@ -309,18 +309,29 @@ pub(super) fn fitted_medial_axis(
     if loops.is_empty() {
         return Some(MedialAxis::default());
     }
-    axis_through(&loops, at, sample, frame)
+    axis_through(&loops, at, sample, Drawn::Fitted, frame)
+}
+
+/// Which positions [`axis_through`] draws the loops through.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Drawn {
+    /// The samples themselves.
+    Samples,
+    /// The fitted positions of smoothing.
+    Fitted,
 }
 
 /// The pruned axis of `loops` on a triangulation of the positions `at` gives their points,
 /// every loop's point a site of its own, pruned with the noise amplitudes of the loops drawn
 /// through the positions `noise_from` gives. `None` when the positions are not distinct
 /// finite points, all collinear, or the loops' edges through them no plane drawing (an edge
-/// through another loop point).
+/// through another loop point), or, `drawn` fitted, when a loop edge is no Delaunay edge of
+/// the fitted vertices.
 fn axis_through(
     loops: &[&LocalCurve],
     at: impl Fn(LocalPoint) -> [f64; 2],
     noise_from: impl Fn(LocalPoint) -> [f64; 2],
+    drawn: Drawn,
     frame: Frame,
 ) -> Option<MedialAxis> {
     let points: Vec<[f64; 2]> = loops
@@ -359,12 +370,12 @@ fn axis_through(
     }
     let noise = noise_at_points(&renumbered, &measured);
     let vor = sub.voronoi();
-    // A loop edge that is no Delaunay edge of the loops' points has a point of another
-    // stretch of the loops in its every empty circle: the fit drew two stretches closer than
-    // their spacing, and the diagram's faces no longer lie on one side of the loops (a
-    // fitted loop's axis then crossed its own curve). Samples' loops are crust edges,
-    // Delaunay edges of all the points and so of theirs.
-    if edges.iter().any(|&[a, b]| !vor.is_delaunay_edge(a, b)) {
+    // A fitted loop edge that is no Delaunay edge of the fitted vertices has a vertex of
+    // another stretch of the loops in its every empty circle: the fit drew two stretches
+    // closer than their spacing (a fitted loop's axis then crossed its own curve). Samples'
+    // loops may have such edges only where a later pass closed a loop by a chord, which
+    // the marks below read along the faces the chord crosses.
+    if drawn == Drawn::Fitted && edges.iter().any(|&[a, b]| !vor.is_delaunay_edge(a, b)) {
         return None;
     }
     let axis = {

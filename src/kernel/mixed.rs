@@ -3,8 +3,8 @@
 //! triangulation of the samples.
 //!
 //! Every point is known in three forms: a centre in `f64` with a proven radius (a sample
-//! exactly; a circumcenter as [`circumcenter`] rounds it, within 256 units in the last place
-//! of its larger coordinate), a bounded one in homogeneous coordinates `(X, Y, W)`, `W = 1`
+//! exactly; a circumcenter as [`circumcenter`](super::circumcenter::circumcenter) rounds it,
+//! within 256 units in the last place of its larger coordinate), a bounded one in homogeneous coordinates `(X, Y, W)`, `W = 1`
 //! (coordinates with running error bounds, tighter and exact where the operations were),
 //! and an exact one in integers, `W > 0`, computed on first need and kept. Each predicate is
 //! decided in three stages: the semi-static filter of [`filter`] on the centres and radii
@@ -54,10 +54,11 @@ impl<'a> MixedPoints<'a> {
         Self::with_centres(samples, triangles, &centres)
     }
 
-    /// [`Self::new`] with the circumcenters rounded by the caller: `centres[v]` must be
-    /// [`super::circumcenter::circumcenter`] of three points on the circle of `triangles[v]` (so within 256 units
-    /// in the last place of its larger coordinate of the exact circumcenter), as the
-    /// positions of [`crate::voronoi::Voronoi`] are.
+    /// Samples `samples` and Voronoi vertices that are the circumcenters of `triangles`,
+    /// rounded by the caller: `centres[v]` must be [`super::circumcenter::circumcenter`] of
+    /// three points on the circle of `triangles[v]` (so within 256 units in the last place
+    /// of its larger coordinate of the exact circumcenter), as the positions of
+    /// [`crate::voronoi::Voronoi`] are.
     pub(crate) fn with_centres(
         samples: &'a [[f64; 2]],
         triangles: Vec<[[f64; 2]; 3]>,

@@ -34,7 +34,7 @@
 //! So the crust is computed by its definition. The Voronoi vertices are inserted into `Del(S)`
 //! one by one by Bowyer–Watson insertion with ghost triangles (module `insertion`), in a
 //! biased randomized order: random rounds that double in size, each along a Hilbert curve
-//! refined where vertices crowd ([`insertion_order`]). A vertex whose Delaunay triangle is
+//! refined where vertices crowd (`insertion_order`). A vertex whose Delaunay triangle is
 //! still in the triangulation starts its cavity there (its circumcircle holds it); any other
 //! is located by a walk from the vertex inserted before it. Expected `O(n log n)` work; on a
 //! noisy curve about ten orientation and eighteen in-circle tests per vertex (10⁵ samples:

@@ -1,9 +1,9 @@
 //! Phases of the reconstruction pipeline on curve samples, the fitted (`--smooth`) output on
 //! clean samples and on dense noisy bands, the reconstruction of one input at three exact
-//! power-of-two scales, and the exact predicates.
+//! power-of-two scales, the baselines beside WDM, and the exact predicates.
 //!
-//! `cargo bench --bench pipeline` (filter with e.g. `-- pipeline/`, `-- fitted/`, `-- scaled/`
-//! or `-- predicates/`).
+//! `cargo bench --bench pipeline` (filter with e.g. `-- pipeline/`, `-- fitted/`, `-- scaled/`,
+//! `-- baselines/` or `-- predicates/`).
 
 mod common;
 
@@ -15,7 +15,7 @@ use wdm_crust::predicates::{
     orient2d_added_slack,
 };
 use wdm_crust::reconstruct::wdm::label_vertices;
-use wdm_crust::reconstruct::{reconstruct_with, MedialAxisMode, Options};
+use wdm_crust::reconstruct::{reconstruct_with, Algorithm, MedialAxisMode, Options};
 
 fn bench_phases(c: &mut Criterion) {
     let mut group = c.benchmark_group("pipeline");
@@ -137,6 +137,30 @@ fn bench_scales(c: &mut Criterion) {
             &scaled,
             |b, p| b.iter(|| wdm_crust::reconstruct(p).expect("valid points")),
         );
+    }
+    group.finish();
+}
+
+/// The two baselines (the crust of Amenta, Bern and Eppstein, the NN-crust of Dey and Kumar)
+/// beside the default WDM reconstruction, each from the points (triangulation included), on
+/// the noisy curve sample of the phases above at 10^4 and 10^5 points: the ratios read off
+/// one run.
+fn bench_baselines(c: &mut Criterion) {
+    let mut group = c.benchmark_group("baselines");
+    group.sample_size(10);
+    for n in [10_000, 100_000] {
+        group.throughput(Throughput::Elements(n as u64));
+        let points = curve_points(n, &mut Rng::new(7));
+        for (name, algorithm) in [
+            ("wdm", Algorithm::Wdm),
+            ("crust", Algorithm::Crust),
+            ("nn_crust", Algorithm::NnCrust),
+        ] {
+            let options = Options::new().with_algorithm(algorithm);
+            group.bench_with_input(BenchmarkId::new(name, n), &points, |b, p| {
+                b.iter(|| reconstruct_with(p, &options).expect("valid points"))
+            });
+        }
     }
     group.finish();
 }
@@ -309,6 +333,7 @@ criterion_group!(
     bench_phases,
     bench_fitted,
     bench_scales,
+    bench_baselines,
     bench_predicates
 );
 criterion_main!(benches);

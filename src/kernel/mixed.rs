@@ -2,15 +2,18 @@
 //! input triangles, for the crust baseline, which inserts Voronoi vertices into the
 //! triangulation of the samples.
 //!
-//! Every point is known in two forms, both in homogeneous coordinates `(X, Y, W)`, `W > 0`:
-//! a bounded one (`W = 1` and coordinates with proven error bounds: a sample exactly, a
-//! circumcenter from the running-error stage, or its correctly rounded exact value) and an
-//! exact one in integers, computed on first need and kept. Each predicate is one polynomial
-//! in homogeneous coordinates (`poly::orient_homogeneous`, `poly::incircle_homogeneous`),
-//! evaluated on the bounded points first and, when their bound cannot decide, exactly. No
+//! Every point is known in three forms: a centre in `f64` with a proven radius (a sample
+//! exactly; a circumcenter as [`circumcenter`](super::circumcenter::circumcenter) rounds it,
+//! within 256 units in the last place of its larger coordinate), a bounded one in homogeneous coordinates `(X, Y, W)`, `W = 1`
+//! (coordinates with running error bounds, tighter and exact where the operations were),
+//! and an exact one in integers, `W > 0`, computed on first need and kept. Each predicate is
+//! decided in three stages: the semi-static filter of [`filter`] on the centres and radii
+//! (the plain polynomials `poly::orient_terms_points` and `poly::incircle_terms_points`),
+//! then the running-error filter (`bounded`) and exact evaluation of one polynomial in
+//! homogeneous coordinates (`poly::orient_homogeneous`, `poly::incircle_homogeneous`). No
 //! division and no gcd is ever needed.
 
-use std::cell::OnceCell;
+use std::sync::OnceLock;
 
 use num_bigint::{BigInt, Sign as BigSign};
 
@@ -22,43 +25,63 @@ use super::exact::{integer_sign, ratio_to_f64};
 use super::poly::{incircle_homogeneous, orient_homogeneous};
 use super::Sign;
 
+pub(super) mod filter;
+
+use self::filter::Sr;
+
 /// The samples of a triangulation together with its Voronoi vertices, addressed by one index
 /// space: `i < n` is sample `i` (the caller's index), `n + v` is Voronoi vertex `v`.
 pub(crate) struct MixedPoints<'a> {
     samples: &'a [[f64; 2]],
     /// Defining triangle of every Voronoi vertex (its circumcenter is the vertex).
     triangles: Vec<[[f64; 2]; 3]>,
-    /// Bounded coordinates of the Voronoi vertices.
-    approx: Vec<[Bounded; 2]>,
+    /// Every point (samples first, then Voronoi vertices) as `[x, y, r]`: each coordinate
+    /// within `r` of the exact one (`r = 0` for a sample; a rounded circumcenter).
+    centres: Vec<[f64; 3]>,
     /// Exact points (samples first, then Voronoi vertices), computed when first needed.
-    exact: Vec<OnceCell<Box<[BigInt; 3]>>>,
+    exact: Vec<OnceLock<Box<[BigInt; 3]>>>,
 }
 
 impl<'a> MixedPoints<'a> {
     /// Samples `samples` and Voronoi vertices that are the circumcenters of `triangles`
     /// (each non-collinear).
+    #[cfg(test)]
     pub(crate) fn new(samples: &'a [[f64; 2]], triangles: Vec<[[f64; 2]; 3]>) -> Self {
-        let n = samples.len();
-        let exact: Vec<OnceCell<Box<[BigInt; 3]>>> =
-            (0..n + triangles.len()).map(|_| OnceCell::new()).collect();
-        let approx = triangles
+        let centres: Vec<[f64; 2]> = triangles
             .iter()
-            .zip(&exact[n..])
-            .map(|(&t, cell)| {
-                circumcenter_bounded(t).unwrap_or_else(|| {
-                    // Correctly rounded from the exact point: within half an ulp (and an
-                    // underflow to zero within the smallest subnormal).
-                    let h = circumcenter_homogeneous(t).unwrap_or_else(|| point_homogeneous(t[0]));
-                    let rounded = rounded(&h);
-                    let _ = cell.set(Box::new(h));
-                    rounded.map(|v| Bounded { v, e: ulp(v) })
-                })
-            })
+            .map(|&[a, b, c]| super::circumcenter::circumcenter(a, b, c).unwrap_or([f64::NAN; 2]))
+            .collect();
+        Self::with_centres(samples, triangles, &centres)
+    }
+
+    /// Samples `samples` and Voronoi vertices that are the circumcenters of `triangles`,
+    /// rounded by the caller: `centres[v]` must be [`super::circumcenter::circumcenter`] of
+    /// three points on the circle of `triangles[v]` (so within 256 units in the last place
+    /// of its larger coordinate of the exact circumcenter), as the positions of
+    /// [`crate::voronoi::Voronoi`] are.
+    pub(crate) fn with_centres(
+        samples: &'a [[f64; 2]],
+        triangles: Vec<[[f64; 2]; 3]>,
+        centres: &[[f64; 2]],
+    ) -> Self {
+        let n = samples.len();
+        let exact: Vec<OnceLock<Box<[BigInt; 3]>>> =
+            (0..n + triangles.len()).map(|_| OnceLock::new()).collect();
+        // 256 units in the last place of the larger coordinate magnitude `N` (`ulp(0)` is the
+        // smallest subnormal); an infinite centre has a NaN radius, which never certifies.
+        let centres = samples
+            .iter()
+            .map(|&[x, y]| [x, y, 0.0])
+            .chain(
+                centres
+                    .iter()
+                    .map(|&[x, y]| [x, y, 256.0 * ulp(x.abs().max(y.abs()))]),
+            )
             .collect();
         MixedPoints {
             samples,
             triangles,
-            approx,
+            centres,
             exact,
         }
     }
@@ -68,12 +91,27 @@ impl<'a> MixedPoints<'a> {
         (i as usize) < self.samples.len()
     }
 
-    /// Point `i` with bounded coordinates, `W = 1`.
+    /// Point `i` for the first filter: its centre and radius.
+    #[inline(always)]
+    fn filter_point(&self, i: u32) -> [Sr; 2] {
+        let [x, y, r] = self.centres[i as usize];
+        [Sr::input(x, r), Sr::input(y, r)]
+    }
+
+    /// Point `i` with bounded coordinates, `W = 1`: for a circumcenter, the running-error
+    /// one if it is tight, else the correctly rounded exact one.
+    #[cold]
     fn bounded(&self, i: u32) -> [Bounded; 3] {
-        let i = i as usize;
-        let [x, y] = match self.samples.get(i) {
+        let [x, y] = match self.samples.get(i as usize) {
             Some(&p) => p.map(Bounded::from_f64),
-            None => self.approx[i - self.samples.len()],
+            None => {
+                let t = self.triangles[i as usize - self.samples.len()];
+                circumcenter_bounded(t).unwrap_or_else(|| {
+                    // Within half an ulp (and an underflow to zero within the smallest
+                    // subnormal).
+                    rounded(self.exact(i)).map(|v| Bounded { v, e: ulp(v) })
+                })
+            }
         };
         [x, y, Bounded::from_f64(1.0)]
     }
@@ -108,6 +146,22 @@ impl<'a> MixedPoints<'a> {
             let s = self.samples;
             return orient(s[a as usize], s[b as usize], s[c as usize]);
         }
+        // Written out rather than with `array::map`, which is not always inlined.
+        let (pa, pb, pc) = (
+            self.filter_point(a),
+            self.filter_point(b),
+            self.filter_point(c),
+        );
+        if let Some(sign) = filter::orient(&pa, &pb, &pc) {
+            return sign;
+        }
+        self.orient_slow(a, b, c)
+    }
+
+    /// [`Self::orient`] after the first filter failed.
+    #[cold]
+    #[inline(never)]
+    fn orient_slow(&self, a: u32, b: u32, c: u32) -> Sign {
         let [pa, pb, pc] = [a, b, c].map(|i| self.bounded(i));
         orient_homogeneous(&pa, &pb, &pc).sign().unwrap_or_else(|| {
             let [ea, eb, ec] = [a, b, c].map(|i| self.exact(i));
@@ -118,10 +172,26 @@ impl<'a> MixedPoints<'a> {
     /// Exact position of `d` relative to the circle through the counterclockwise `a, b, c`
     /// (`Positive`: inside).
     pub(crate) fn incircle(&self, a: u32, b: u32, c: u32, d: u32) -> Sign {
-        if [a, b, c, d].iter().all(|&i| self.is_sample(i)) {
+        if self.is_sample(a) && self.is_sample(b) && self.is_sample(c) && self.is_sample(d) {
             let s = self.samples;
             return incircle(s[a as usize], s[b as usize], s[c as usize], s[d as usize]);
         }
+        let (pa, pb, pc, pd) = (
+            self.filter_point(a),
+            self.filter_point(b),
+            self.filter_point(c),
+            self.filter_point(d),
+        );
+        if let Some(sign) = filter::incircle(&pa, &pb, &pc, &pd) {
+            return sign;
+        }
+        self.incircle_slow(a, b, c, d)
+    }
+
+    /// [`Self::incircle`] after the first filter failed.
+    #[cold]
+    #[inline(never)]
+    fn incircle_slow(&self, a: u32, b: u32, c: u32, d: u32) -> Sign {
         let [pa, pb, pc, pd] = [a, b, c, d].map(|i| self.bounded(i));
         incircle_homogeneous(&pa, &pb, &pc, &pd)
             .sign()

@@ -744,6 +744,33 @@ fn filter_constants_match_the_expressions() {
     assert!(filter::LEAF_RANGE_RADIUS.1 <= filter::RADIUS.h);
 }
 
+/// The constants of the mixed predicates' first filter (`mixed::filter`), from the evaluated
+/// expressions: `c1 = (4K + 8)·u`, `c0 ≥ η·(2 + 7(K + 1)·W·2^(H(D − 2)))` (its theorem), and no
+/// overflow below the leaf limit.
+#[test]
+fn mixed_filter_constants_match_the_expressions() {
+    use super::mixed::filter::{self as mixed_filter, Term as MixedTerm};
+    use super::poly::{incircle_terms_points, orient_terms_points};
+    let check = |name: &str, meta: Meta, term: &MixedTerm| {
+        assert_eq!(meta.depth, term.depth, "{name}: depth");
+        assert_eq!(meta.degree, term.degree, "{name}: degree");
+        assert_eq!(meta.w, term.weight, "{name}: weight");
+        assert_eq!(term.c1, f64::from(4 * term.depth + 8) * U, "{name}: c1");
+        assert_eq!(pow2(term.h), mixed_filter::LEAF_MAX, "{name}: leaf limit");
+        let eta = pow2(-1074) / 2.0;
+        let scale = pow2(term.h * (term.degree as i32 - 2));
+        let needed = eta * (2.0 + 7.0 * f64::from(term.depth + 1) * term.weight * scale) * 1.01;
+        assert!(term.c0 >= needed, "{name}: c0 = {:e} < {needed:e}", term.c0);
+        let largest = (meta.p + meta.w) * pow2(term.h * term.degree as i32) * 1.01;
+        assert!(largest < pow2(1000), "{name}: overflow");
+    };
+    let i = [Meta::INPUT; 2];
+    let [v] = orient_terms_points(&i, &i, &i);
+    check("mixed orientation", v, &mixed_filter::ORIENTATION);
+    let [v] = incircle_terms_points(&i, &i, &i, &i);
+    check("mixed in-circle", v, &mixed_filter::INCIRCLE);
+}
+
 // ----------------------------------------------------------------------------------------
 // Stage 1 against exact evaluation, on adversarial input.
 

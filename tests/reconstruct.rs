@@ -609,6 +609,23 @@ fn key(a: [f64; 2], b: [f64; 2]) -> ([u64; 2], [u64; 2]) {
 }
 
 /// The edges of `rec` by their ends' coordinates (the same set in any input order).
+/// The default reconstruction of `points` in the order of a permutation drawn from `seed`
+/// has the same edges (between the same coordinates) as `rec`, theirs in the given order.
+fn assert_same_edges_in_another_order(
+    points: &[[f64; 2]],
+    rec: &wdm_crust::reconstruct::Reconstruction,
+    seed: u64,
+) {
+    let order = Rng::new(seed).permutation(points.len());
+    let shuffled: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
+    let again = reconstruct(&shuffled).unwrap();
+    assert_eq!(
+        edges_of(&again, &shuffled),
+        edges_of(rec, points),
+        "seed {seed}"
+    );
+}
+
 fn edges_of(
     rec: &wdm_crust::reconstruct::Reconstruction,
     pts: &[[f64; 2]],
@@ -769,14 +786,7 @@ fn ears_no_longer_split_noisy_curves() {
         )
         .unwrap();
         assert!(first.irregular_points().is_empty(), "seed {seed}");
-        let order = Rng::new(seed).permutation(points.len());
-        let shuffled: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
-        let again = reconstruct(&shuffled).unwrap();
-        assert_eq!(
-            edges_of(&again, &shuffled),
-            edges_of(&rec, &points),
-            "seed {seed}"
-        );
+        assert_same_edges_in_another_order(&points, &rec, seed);
     }
 }
 
@@ -801,10 +811,7 @@ fn islets_beside_a_noisy_curve_are_dropped() {
     let rec = reconstruct(&points).unwrap();
     assert_eq!(rec.curves().len(), 2);
     assert!(rec.curves().iter().all(|c| c.closed && c.points.len() >= 7));
-    let order = Rng::new(seed).permutation(points.len());
-    let shuffled: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
-    let again = reconstruct(&shuffled).unwrap();
-    assert_eq!(edges_of(&again, &shuffled), edges_of(&rec, &points));
+    assert_same_edges_in_another_order(&points, &rec, seed);
 }
 
 /// A hole's loop that a later pass bridges across two or more pockets of its own noise
@@ -831,14 +838,7 @@ fn a_hole_bridged_across_several_pockets_of_noise_is_kept() {
             "seed {seed}: the hole is not inside the outer curve"
         );
         assert_eq!(polygons[0].holes.len(), 1, "seed {seed}");
-        let order = Rng::new(seed).permutation(points.len());
-        let shuffled: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
-        let again = reconstruct(&shuffled).unwrap();
-        assert_eq!(
-            edges_of(&again, &shuffled),
-            edges_of(&rec, &points),
-            "seed {seed}"
-        );
+        assert_same_edges_in_another_order(&points, &rec, seed);
     }
 }
 
@@ -885,12 +885,6 @@ fn corridors_into_a_hole_are_closed_off() {
     // The hole's samples lie within 0.2 of its circle (five standard deviations); the outer
     // curve is 0.6 or more away from its centre.
     let in_hole = |p: [f64; 2]| (p[0] - 0.3).hypot(p[1]) < 0.65;
-    let edges_of = |rec: &wdm_crust::reconstruct::Reconstruction, pts: &[[f64; 2]]| {
-        rec.edges()
-            .iter()
-            .map(|&[a, b]| key(pts[a as usize], pts[b as usize]))
-            .collect::<BTreeSet<_>>()
-    };
     for (noise, seed) in [
         (1.0, 3),
         (1.0, 7),
@@ -943,10 +937,7 @@ fn corridors_into_a_hole_are_closed_off() {
             rec.curves().iter().all(|c| c.closed),
             "noise {noise}, seed {seed}"
         );
-        let order = Rng::new(seed).permutation(points.len());
-        let shuffled: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
-        let again = reconstruct(&shuffled).unwrap();
-        assert_eq!(edges_of(&again, &shuffled), edges_of(&rec, &points));
+        assert_same_edges_in_another_order(&points, &rec, seed);
     }
 }
 

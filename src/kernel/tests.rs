@@ -687,19 +687,65 @@ impl Arith for Meta {
     }
 }
 
+/// The [`Constants`] of a term of either filter (the two `Term` types have these fields).
+macro_rules! constants_of {
+    ($term:expr) => {
+        Constants {
+            depth: $term.depth,
+            degree: $term.degree,
+            weight: $term.weight,
+            c1: $term.c1,
+            c0: $term.c0,
+            h: $term.h,
+        }
+    };
+}
+
 /// Checks the constants of `term` against the expression's `meta` (the theorem of `filter`).
 fn check_term(name: &str, meta: Meta, term: &Term, leaf_max: f64) {
+    let depth = f64::from(term.depth + 1);
+    check_constants(
+        name,
+        meta,
+        constants_of!(term),
+        leaf_max,
+        // c1 = (K + 1)·u; c0 ≥ η·(1 + 3(K + 1)·W·2^(H(D − 2))).
+        depth * U,
+        |scale| 1.0 + 3.0 * depth * term.weight * scale,
+    );
+}
+
+/// The constants of one filter term, whichever filter it is of.
+struct Constants {
+    depth: u32,
+    degree: u32,
+    weight: f64,
+    c1: f64,
+    c0: f64,
+    h: i32,
+}
+
+/// Checks `term` against the expression's `meta`: the same depth, degree and weight, the
+/// relative constant `c1`, the leaf limit `2^H = leaf_max`, the absolute constant at least
+/// `η·floor(2^(H(D − 2)))` (with a 1 % margin for its roundings), and no overflow:
+/// `(P + W)·2^(H·D)`, times 1.01, stays below 2^1000.
+fn check_constants(
+    name: &str,
+    meta: Meta,
+    term: Constants,
+    leaf_max: f64,
+    c1: f64,
+    floor: impl Fn(f64) -> f64,
+) {
     assert_eq!(meta.depth, term.depth, "{name}: depth");
     assert_eq!(meta.degree, term.degree, "{name}: degree");
     assert_eq!(meta.w, term.weight, "{name}: weight");
-    assert_eq!(term.c1, f64::from(term.depth + 1) * U, "{name}: c1");
+    assert_eq!(term.c1, c1, "{name}: c1");
     assert_eq!(pow2(term.h), leaf_max, "{name}: leaf limit");
-    // c0 ≥ η·(1 + 3(K + 1)·W·2^(H(D − 2))), evaluated with a 1 % margin for its roundings.
     let eta = pow2(-1074) / 2.0;
     let scale = pow2(term.h * (term.degree as i32 - 2));
-    let needed = eta * (1.0 + 3.0 * f64::from(term.depth + 1) * term.weight * scale) * 1.01;
+    let needed = eta * floor(scale) * 1.01;
     assert!(term.c0 >= needed, "{name}: c0 = {:e} < {needed:e}", term.c0);
-    // No overflow: (P + W)·2^(H·D), times 1.01, stays below 2^1000.
     let largest = (meta.p + meta.w) * pow2(term.h * term.degree as i32) * 1.01;
     assert!(largest < pow2(1000), "{name}: overflow");
 }
@@ -751,18 +797,13 @@ fn filter_constants_match_the_expressions() {
 fn mixed_filter_constants_match_the_expressions() {
     use super::mixed::filter::{self as mixed_filter, Term as MixedTerm};
     use super::poly::{incircle_terms_points, orient_terms_points};
+    // c1 = (4K + 8)·u; c0 ≥ η·(2 + 7(K + 1)·W·2^(H(D − 2))).
     let check = |name: &str, meta: Meta, term: &MixedTerm| {
-        assert_eq!(meta.depth, term.depth, "{name}: depth");
-        assert_eq!(meta.degree, term.degree, "{name}: degree");
-        assert_eq!(meta.w, term.weight, "{name}: weight");
-        assert_eq!(term.c1, f64::from(4 * term.depth + 8) * U, "{name}: c1");
-        assert_eq!(pow2(term.h), mixed_filter::LEAF_MAX, "{name}: leaf limit");
-        let eta = pow2(-1074) / 2.0;
-        let scale = pow2(term.h * (term.degree as i32 - 2));
-        let needed = eta * (2.0 + 7.0 * f64::from(term.depth + 1) * term.weight * scale) * 1.01;
-        assert!(term.c0 >= needed, "{name}: c0 = {:e} < {needed:e}", term.c0);
-        let largest = (meta.p + meta.w) * pow2(term.h * term.degree as i32) * 1.01;
-        assert!(largest < pow2(1000), "{name}: overflow");
+        let constants = constants_of!(term);
+        let depth = f64::from(term.depth + 1);
+        let c1 = f64::from(4 * term.depth + 8) * U;
+        let floor = |scale| 2.0 + 7.0 * depth * term.weight * scale;
+        check_constants(name, meta, constants, mixed_filter::LEAF_MAX, c1, floor);
     };
     let i = [Meta::INPUT; 2];
     let [v] = orient_terms_points(&i, &i, &i);

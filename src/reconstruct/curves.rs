@@ -38,6 +38,15 @@ impl LocalCurve {
             points: self.points.into_iter().map(name).collect(),
         }
     }
+
+    /// `curve` (caller indices) with every point renamed by `local` into the
+    /// triangulation's local points: the inverse of [`LocalCurve::named`].
+    pub(crate) fn from_caller(curve: &Curve, local: impl Fn(u32) -> LocalPoint) -> LocalCurve {
+        LocalCurve {
+            closed: curve.closed,
+            points: curve.points.iter().map(|&i| local(i)).collect(),
+        }
+    }
 }
 
 /// The point space an [`Adjacency`] is built over: the triangulation's local points

@@ -283,7 +283,7 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&LocalCurve], frame: Frame) -> MedialA
     // The subset is a selection of already validated distinct points: `axis_through`
     // cannot refuse it.
     let at = |p: LocalPoint| tri.points[p.index()];
-    axis_through(loops, at, at, Drawn::Samples, frame).unwrap_or_default()
+    axis_through(loops, at, None::<fn(LocalPoint) -> [f64; 2]>, frame).unwrap_or_default()
 }
 
 /// The pruned medial axis of the closed curves among `curves` (local indices of the
@@ -309,29 +309,20 @@ pub(super) fn fitted_medial_axis(
     if loops.is_empty() {
         return Some(MedialAxis::default());
     }
-    axis_through(&loops, at, sample, Drawn::Fitted, frame)
-}
-
-/// Which positions [`axis_through`] draws the loops through.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Drawn {
-    /// The samples themselves.
-    Samples,
-    /// The fitted positions of smoothing.
-    Fitted,
+    axis_through(&loops, at, Some(sample), frame)
 }
 
 /// The pruned axis of `loops` on a triangulation of the positions `at` gives their points,
-/// every loop's point a site of its own, pruned with the noise amplitudes of the loops drawn
-/// through the positions `noise_from` gives. `None` when the positions are not distinct
-/// finite points, all collinear, or the loops' edges through them no plane drawing (an edge
-/// through another loop point), or, `drawn` fitted, when a loop edge is no Delaunay edge of
+/// every loop's point a site of its own. `samples` is `None` when those positions are the
+/// samples; when they are fitted ones, it gives the samples, and the pruning reads the
+/// noise amplitudes of the loops drawn through them. `None` when the positions are not
+/// distinct finite points, all collinear, or the loops' edges through them no plane drawing
+/// (an edge through another loop point), or, fitted, when a loop edge is no Delaunay edge of
 /// the fitted vertices.
 fn axis_through(
     loops: &[&LocalCurve],
     at: impl Fn(LocalPoint) -> [f64; 2],
-    noise_from: impl Fn(LocalPoint) -> [f64; 2],
-    drawn: Drawn,
+    samples: Option<impl Fn(LocalPoint) -> [f64; 2]>,
     frame: Frame,
 ) -> Option<MedialAxis> {
     let points: Vec<[f64; 2]> = loops
@@ -361,21 +352,26 @@ fn axis_through(
         .collect();
     let renumbered: Vec<&LocalCurve> = renumbered.iter().collect();
     let edges = loop_edges(&renumbered);
-    // The positions the noise is read from, by the subset's local index.
-    let mut measured = vec![[0.0; 2]; sub.points.len()];
-    for (original, local) in loops.iter().zip(&renumbered) {
-        for (&p, &q) in original.points.iter().zip(&local.points) {
-            measured[q.index()] = noise_from(p);
+    let noise = match &samples {
+        None => noise_at_points(&renumbered, &sub.points),
+        Some(sample) => {
+            // The samples by the subset's local index.
+            let mut measured = vec![[0.0; 2]; sub.points.len()];
+            for (original, local) in loops.iter().zip(&renumbered) {
+                for (&p, &q) in original.points.iter().zip(&local.points) {
+                    measured[q.index()] = sample(p);
+                }
+            }
+            noise_at_points(&renumbered, &measured)
         }
-    }
-    let noise = noise_at_points(&renumbered, &measured);
+    };
     let vor = sub.voronoi();
     // A fitted loop edge that is no Delaunay edge of the fitted vertices has a vertex of
     // another stretch of the loops in its every empty circle: the fit drew two stretches
     // closer than their spacing (a fitted loop's axis then crossed its own curve). Samples'
     // loops may have such edges only where a later pass closed a loop by a chord, which
     // the marks below read along the faces the chord crosses.
-    if drawn == Drawn::Fitted && edges.iter().any(|&[a, b]| !vor.is_delaunay_edge(a, b)) {
+    if samples.is_some() && edges.iter().any(|&[a, b]| !vor.is_delaunay_edge(a, b)) {
         return None;
     }
     let axis = {
@@ -899,10 +895,7 @@ mod tests {
     fn local_curves(tri: &Triangulation, curves: &[Curve]) -> Vec<LocalCurve> {
         curves
             .iter()
-            .map(|c| LocalCurve {
-                closed: c.closed,
-                points: c.points.iter().map(|&i| tri.local_index(i)).collect(),
-            })
+            .map(|c| LocalCurve::from_caller(c, |i| tri.local_index(i)))
             .collect()
     }
 

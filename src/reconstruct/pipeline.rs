@@ -579,10 +579,7 @@ fn smoothing(
 fn local_curves(tri: &Triangulation, curves: &[curves::Curve]) -> Vec<curves::LocalCurve> {
     curves
         .iter()
-        .map(|c| curves::LocalCurve {
-            closed: c.closed,
-            points: c.points.iter().map(|&i| tri.local_index(i)).collect(),
-        })
+        .map(|c| curves::LocalCurve::from_caller(c, |i| tri.local_index(i)))
         .collect()
 }
 

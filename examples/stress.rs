@@ -11,6 +11,9 @@
 //! * `curve`: on a smooth closed star-shaped curve `r = 1 + 0.3 cos 5t`, random parameters;
 //! * `even-curve`: the benches' workload: that star squashed to 0.7 in y, at jittered even
 //!   spacing, with radial noise of a tenth of the spacing;
+//! * `band`: a dense noisy scan, an ellipse 2 × 1.2 at random positions with Gaussian noise
+//!   across it of 1 % of its bounding box's diagonal (the environment variable `BAND` sets
+//!   another share: `BAND=0.00001` is about 5 mean steps at 10^6 points);
 //! * `circle`: on the unit circle, random angles (nearly cocircular: exact fallbacks galore);
 //! * `grid`: the integer grid `⌈√n⌉ × ⌈√n⌉` truncated to `n` (every cell cocircular);
 //! * `two-lines`: half on `y = 0`, half on `y = 1`, integer x (every quad cocircular);
@@ -39,7 +42,7 @@ fn main() {
         args.first(),
         args.get(1).and_then(|s| s.parse::<usize>().ok()),
     ) else {
-        eprintln!("usage: stress <uniform|curve|even-curve|circle|grid|two-lines|crossing-lines|dup3|collinear> <n> [points,triangulate,voronoi,single,reconstruct,raw,curves]");
+        eprintln!("usage: stress <uniform|curve|even-curve|band|circle|grid|two-lines|crossing-lines|dup3|collinear> <n> [points,triangulate,voronoi,single,reconstruct,raw,curves]");
         std::process::exit(2);
     };
     let stages: Vec<&str> = args
@@ -165,6 +168,26 @@ fn generate(set: &str, n: usize) -> Option<Vec<[f64; 2]>> {
                     let t = (i as f64 + 0.5 * rng.f64()) * spacing;
                     let r = 1.0 + 0.3 * (5.0 * t).cos() + 0.1 * spacing * rng.normal();
                     [r * t.cos(), 0.7 * r * t.sin()]
+                })
+                .collect()
+        }
+        "band" => {
+            // A dense noisy scan: an ellipse 2 × 1.2 with Gaussian noise across it of a share
+            // of its bounding box's diagonal (`BAND`, default 1 %: σ ≈ 0.023).
+            let sigma = std::env::var("BAND")
+                .ok()
+                .and_then(|s| s.parse().ok())
+                .unwrap_or(0.01)
+                * (4.0f64 + 1.44).sqrt();
+            (0..n)
+                .map(|_| {
+                    let t = rng.range(0.0, tau);
+                    let (c, s) = (t.cos(), t.sin());
+                    let (x, y) = (c, 0.6 * s);
+                    let normal = [0.6 * c, s];
+                    let len = (normal[0] * normal[0] + normal[1] * normal[1]).sqrt();
+                    let d = sigma * rng.normal() / len;
+                    [x + d * normal[0], y + d * normal[1]]
                 })
                 .collect()
         }

@@ -313,6 +313,46 @@ fn closed_curves_are_the_water_flows_alone() {
     }
 }
 
+/// The edges of the closed polygon through `points` in the order of their angles about the
+/// origin (the known answer for a sample of a curve star-shaped about it), `[min, max]`.
+fn angular_polygon(points: &[[f64; 2]]) -> BTreeSet<[u32; 2]> {
+    let mut order: Vec<u32> = (0..points.len() as u32).collect();
+    order.sort_by(|&i, &j| {
+        let angle = |k: u32| points[k as usize][1].atan2(points[k as usize][0]);
+        angle(i).total_cmp(&angle(j))
+    });
+    (0..order.len())
+        .map(|k| {
+            let (a, b) = (order[k], order[(k + 1) % order.len()]);
+            [a.min(b), a.max(b)]
+        })
+        .collect()
+}
+
+#[test]
+fn a_closed_curve_sampled_at_random_positions_is_one_loop() {
+    // Random positions leave gaps of many mean spacings beside short ones here and there
+    // (the longest of n exponential gaps is about ln n mean spacings): such a gap is no chord
+    // across an open curve, and the loop is the curve.
+    for seed in 0..6u64 {
+        let mut rng = Rng::new(500 + seed);
+        let n = 2000 + rng.below(4000);
+        let (a, b) = (1.0, rng.range(0.5, 1.0));
+        let lobes = rng.below(6) as f64;
+        let points: Vec<[f64; 2]> = (0..n)
+            .map(|_| {
+                let t = rng.range(0.0, TAU);
+                let r = 1.0 + 0.2 * (lobes * t).cos();
+                [a * r * t.cos(), b * r * t.sin()]
+            })
+            .collect();
+        let rec = reconstruct(&points).unwrap();
+        let output: BTreeSet<[u32; 2]> = rec.edges().iter().copied().collect();
+        assert_eq!(output, angular_polygon(&points), "seed {seed}, {n} points");
+        assert_eq!(counts(&rec), (1, 0), "seed {seed}");
+    }
+}
+
 /// Inputs of every kind for the manifold property: scatters, grids, cocircular rings,
 /// noisy and clean curves with outliers, collinear runs, duplicates.
 fn any_input() -> impl Strategy<Value = Vec<[f64; 2]>> {

@@ -52,8 +52,8 @@ use std::cmp::Ordering;
 
 use super::proximity::{closer, DelaunayGraph, Proposal};
 use super::thresholds::open_curves::{
-    CHORD_DOUBLINGS, GAP_DOUBLINGS, ISOLATION_DOUBLINGS, JOIN_DOUBLINGS, MIN_CHAIN_POINTS,
-    MIN_CLOSED_POINTS,
+    CHORD_DOUBLINGS, CHORD_OUTLIER_DOUBLINGS, GAP_DOUBLINGS, ISOLATION_DOUBLINGS, JOIN_DOUBLINGS,
+    MAX_DISSOLVED_PIECES, MIN_CHAIN_POINTS, MIN_CLOSED_POINTS,
 };
 use crate::delaunay::Triangulation;
 use crate::ids::{ids, LocalPoint};
@@ -94,6 +94,15 @@ pub(super) fn settle(
         let listed: Vec<LocalPoint> = ids::<LocalPoint>(n).filter(|&p| free(p)).collect();
         let graph = DelaunayGraph::of_points(vor, &listed);
         let chain_edges = chains(&graph, points, &free);
+        // A loop dissolved in the round before whose points proximity cannot draw as a few
+        // curves is restored, for good: the flow's loop was the better reading.
+        let failed = loops.failed_dissolutions(n, &chain_edges);
+        if !failed.is_empty() {
+            for l in failed {
+                loops.restore(l);
+            }
+            continue;
+        }
         let beside = loops_beside_chains(&graph, points, &chain_edges, &loops);
         if beside.is_empty() {
             break chain_edges;
@@ -139,6 +148,10 @@ struct SureLoops {
     of: Vec<u32>,
     /// The paths that the loops with chords leave without them (rule 5).
     fallbacks: Vec<Vec<LocalPoint>>,
+    /// The loops dissolved since their dissolutions were last checked.
+    dissolved: Vec<u32>,
+    /// Whether a loop was restored after a dissolution that failed (never dissolved again).
+    restored: Vec<bool>,
 }
 
 impl SureLoops {
@@ -146,6 +159,49 @@ impl SureLoops {
         for &p in &self.cycles[l as usize] {
             self.of[p.index()] = NONE;
         }
+        self.dissolved.push(l);
+    }
+
+    /// Puts loop `l` back; it is never dissolved again.
+    fn restore(&mut self, l: u32) {
+        for &p in &self.cycles[l as usize] {
+            self.of[p.index()] = l;
+        }
+        self.restored[l as usize] = true;
+    }
+
+    /// The loops dissolved since the last call whose points the chains `chain_edges` leave
+    /// in more than [`MAX_DISSOLVED_PIECES`] pieces, or more than a quarter of them on no
+    /// chain: a loop dissolved for a chain beside it is expected to become that chain's curve
+    /// (or two curves), and a clean loop among noise leftovers falls apart instead.
+    fn failed_dissolutions(&mut self, n: usize, chain_edges: &[[LocalPoint; 2]]) -> Vec<u32> {
+        let dissolved = std::mem::take(&mut self.dissolved);
+        if dissolved.is_empty() {
+            return dissolved;
+        }
+        let mut pieces = Pieces::new(n);
+        let mut on_chain = vec![false; n];
+        for &[a, b] in chain_edges {
+            let (ra, rb) = (pieces.root(a), pieces.root(b));
+            pieces.join(ra, rb);
+            on_chain[a.index()] = true;
+            on_chain[b.index()] = true;
+        }
+        dissolved
+            .into_iter()
+            .filter(|&l| {
+                let cycle = &self.cycles[l as usize];
+                let mut roots: Vec<LocalPoint> = cycle
+                    .iter()
+                    .filter(|&&p| on_chain[p.index()])
+                    .map(|&p| pieces.root(p))
+                    .collect();
+                let placed = roots.len();
+                roots.sort_unstable();
+                roots.dedup();
+                roots.len() > MAX_DISSOLVED_PIECES || 4 * (cycle.len() - placed) > cycle.len()
+            })
+            .collect()
     }
 
     /// The longer of the two loop edges at `p`, as its far end.
@@ -181,6 +237,8 @@ fn sure_loops(points: &[[f64; 2]], edges: &[[LocalPoint; 2]]) -> SureLoops {
         cycles: Vec::new(),
         of: vec![NONE; n],
         fallbacks: Vec::new(),
+        dissolved: Vec::new(),
+        restored: Vec::new(),
     };
     let mut seen = vec![false; n];
     let mut cycle = Vec::new();
@@ -214,6 +272,7 @@ fn sure_loops(points: &[[f64; 2]], edges: &[[LocalPoint; 2]]) -> SureLoops {
                 loops.of[p.index()] = l;
             }
             loops.cycles.push(cycle.clone());
+            loops.restored.push(false);
         } else {
             // The loop between its chords, from the end of one to the start of the next.
             for (c, &i) in chords.iter().enumerate() {
@@ -290,6 +349,7 @@ fn loops_beside_chains(
         .filter(|&l| {
             let cycle = &loops.cycles[l as usize];
             loops.of[cycle[0].index()] == l
+                && !loops.restored[l as usize]
                 && (continued[l as usize] || 4 * count[l as usize] > cycle.len())
         })
         .collect()
@@ -333,9 +393,38 @@ fn chords(points: &[[f64; 2]], cycle: &[LocalPoint]) -> Vec<usize> {
         scaled_length_order(at(i), at(i + 1), at(j), at(j + 1), CHORD_DOUBLINGS)
             == Ordering::Greater
     };
-    (0..k)
+    let locally_long: Vec<usize> = (0..k)
         .filter(|&i| {
             longer(i, i + k - 1) && longer(i, i + 1) && longer(i, i + k - 2) && longer(i, i + 2)
+        })
+        .collect();
+    if locally_long.is_empty() {
+        return locally_long;
+    }
+    // A candidate is a chord only when it also stands out of the whole loop: longer than
+    // `2^CHORD_OUTLIER_DOUBLINGS` times the loop's longest *ordinary* edge, one no longer
+    // than `2^CHORD_DOUBLINGS` times any of its four neighbours (an edge beside a chord is
+    // long without being a candidate). Picked exactly; none when no edge is ordinary.
+    let ordinary = |i: usize| (1..=2).all(|d| !longer(i, i + k - d) && !longer(i, i + d));
+    let longest_ordinary = (0..k).filter(|&i| ordinary(i)).reduce(|a, b| {
+        match length_order(at(a), at(a + 1), at(b), at(b + 1)) {
+            Ordering::Less => b,
+            _ => a,
+        }
+    });
+    let Some(ordinary) = longest_ordinary else {
+        return locally_long;
+    };
+    locally_long
+        .into_iter()
+        .filter(|&i| {
+            scaled_length_order(
+                at(i),
+                at(i + 1),
+                at(ordinary),
+                at(ordinary + 1),
+                CHORD_OUTLIER_DOUBLINGS,
+            ) == Ordering::Greater
         })
         .collect()
 }

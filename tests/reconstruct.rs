@@ -1008,3 +1008,23 @@ fn omitting_the_medial_axis_changes_nothing_else() {
     .unwrap();
     assert_eq!(baseline.medial_axis_mode(), None);
 }
+
+#[test]
+fn a_large_uniform_scatter_gives_no_curve_and_says_so() {
+    // The first pass reaches about 4.7 √n points of a uniform scatter, each crowded: no
+    // later pass, no repair and no proximity chains run over the rest, and no curve is drawn.
+    for seed in 0..3u64 {
+        let mut rng = wdm_crust_testkit::Rng::new(40 + seed);
+        let points: Vec<[f64; 2]> = (0..30_000).map(|_| [rng.f64(), rng.f64()]).collect();
+        let rec = reconstruct(&points).unwrap();
+        assert_eq!(rec.passes(), 1, "seed {seed}");
+        assert!(rec.curves().is_empty(), "seed {seed}: {} curves", rec.curves().len());
+        assert_eq!(rec.unassigned().len(), points.len(), "seed {seed}");
+        assert!(
+            rec.warnings()
+                .iter()
+                .any(|w| w.code == wdm_crust::reconstruct::WarningCode::MostUnassigned),
+            "seed {seed}"
+        );
+    }
+}

@@ -37,6 +37,7 @@ pub mod polygons;
 mod proximity;
 mod repairs;
 mod result;
+mod scatter;
 mod segment_walk;
 mod smooth;
 mod thinning;

@@ -80,11 +80,7 @@ pub(super) fn settle(
     if loops.of.iter().filter(|&&l| l == NONE).count() < MIN_CHAIN_POINTS {
         // (Nearly) every point on a sure loop, the samples of closed curves: too few points
         // left for any chain or any path of the flow's.
-        return edges
-            .iter()
-            .copied()
-            .filter(|e| loops.of[e[0].index()] != NONE)
-            .collect();
+        return loops.edges_of(edges);
     }
     // Each round joins the free points into chains; a loop that a chain runs beside is
     // dissolved and its points join the next round (rule 4). At most one round a loop.
@@ -141,6 +137,23 @@ pub(super) fn settle(
     kept
 }
 
+/// The edges of `edges` on those sure loops of `edges` (rule 1 of the module docs) that
+/// `keep` accepts (given their points in order): what a scatter keeps (`scatter`), whose
+/// leftovers hold no curves for proximity to draw.
+pub(super) fn sure_loop_edges(
+    points: &[[f64; 2]],
+    edges: &[[LocalPoint; 2]],
+    keep: impl Fn(&[LocalPoint]) -> bool,
+) -> Vec<[LocalPoint; 2]> {
+    let mut loops = sure_loops(points, edges);
+    for l in 0..loops.cycles.len() as u32 {
+        if !keep(&loops.cycles[l as usize]) {
+            loops.dissolve(l);
+        }
+    }
+    loops.edges_of(edges)
+}
+
 /// The sure loops (rule 1 of the module docs): each loop's points in order, and the loop of
 /// every point (`NONE` when free).
 struct SureLoops {
@@ -155,6 +168,15 @@ struct SureLoops {
 }
 
 impl SureLoops {
+    /// The edges of `edges` on a sure loop.
+    fn edges_of(&self, edges: &[[LocalPoint; 2]]) -> Vec<[LocalPoint; 2]> {
+        edges
+            .iter()
+            .copied()
+            .filter(|e| self.of[e[0].index()] != NONE)
+            .collect()
+    }
+
     fn dissolve(&mut self, l: u32) {
         for &p in &self.cycles[l as usize] {
             self.of[p.index()] = NONE;

@@ -13,6 +13,7 @@ use super::repairs::ears::{drop_islets, repair_ears, Ears};
 use super::repairs::peel::{hole_edges, parity_inside, peel, Peeling};
 use super::repairs::shared::Repair;
 use super::result::{untouched_points, MedialAxis, Reconstruction};
+use super::scatter;
 use super::smooth;
 use super::thinning;
 use super::wdm::{self, Label, LabelRule};
@@ -238,6 +239,7 @@ fn wdm_crust(
     lap: &mut dyn FnMut(Phase),
 ) -> Outcome {
     let mut run = WdmRun::first_pass(tri, options, lap);
+    run.scatter = scatter::crowding(&run.vor, &run.edges);
     run.repairs(options);
     run.peeling(options);
     lap(Phase::Peel);
@@ -267,6 +269,9 @@ struct WdmRun<'t> {
     /// How many edges there were after the repairs: those after them are peeling's.
     repaired_len: usize,
     peeling: Peeling,
+    /// Where the first pass read a scatter, which of its points are crowded: then no repair,
+    /// no later pass and no proximity chains (see `scatter`).
+    scatter: Option<Vec<bool>>,
 }
 
 /// The curves of a WDM run in local indices (until the axis has read them), its unassigned
@@ -320,6 +325,7 @@ impl<'t> WdmRun<'t> {
             repair: Repair::none(),
             repaired_len: 0,
             peeling: Peeling::done(0),
+            scatter: None,
         }
     }
 
@@ -327,7 +333,7 @@ impl<'t> WdmRun<'t> {
     /// reattaches are then no leftovers for the later passes, which otherwise closed small
     /// loops through some of them (measured in ARCHITECTURE.md, "Outliers: detour repair").
     fn repairs(&mut self, options: &Options) {
-        if options.detour_repair() && !self.tri.is_degenerate() {
+        if options.detour_repair() && !self.tri.is_degenerate() && self.scatter.is_none() {
             self.repair = repair_detours(&self.vor, &self.edges);
         }
         self.repair.apply(&mut self.edges);
@@ -336,7 +342,7 @@ impl<'t> WdmRun<'t> {
 
     /// The later passes on the points no curve reached (holes, nested curves).
     fn peeling(&mut self, options: &Options) {
-        if options.peeling() {
+        if options.peeling() && self.scatter.is_none() {
             self.peeling = peel(&self.vor, &mut self.edges, options);
         }
     }
@@ -359,7 +365,13 @@ impl<'t> WdmRun<'t> {
         }
         // Sure loops kept, every other point joined into chains by proximity.
         if options.open_curves() && !tri.is_degenerate() {
-            edges = open_curves::settle(tri, &self.vor, &edges);
+            edges = match &self.scatter {
+                // A scatter keeps the sure loops that read as curves.
+                Some(crowded) => open_curves::sure_loop_edges(&tri.points, &edges, |cycle| {
+                    2 * cycle.iter().filter(|p| crowded[p.index()]).count() < cycle.len()
+                }),
+                None => open_curves::settle(tri, &self.vor, &edges),
+            };
         }
         lap(Phase::OpenCurves);
         // In local indices until the axis has read them (see `assemble_unnamed`).

@@ -1018,7 +1018,11 @@ fn a_large_uniform_scatter_gives_no_curve_and_says_so() {
         let points: Vec<[f64; 2]> = (0..30_000).map(|_| [rng.f64(), rng.f64()]).collect();
         let rec = reconstruct(&points).unwrap();
         assert_eq!(rec.passes(), 1, "seed {seed}");
-        assert!(rec.curves().is_empty(), "seed {seed}: {} curves", rec.curves().len());
+        assert!(
+            rec.curves().is_empty(),
+            "seed {seed}: {} curves",
+            rec.curves().len()
+        );
         assert_eq!(rec.unassigned().len(), points.len(), "seed {seed}");
         assert!(
             rec.warnings()

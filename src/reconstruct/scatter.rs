@@ -37,26 +37,33 @@ pub(super) fn crowding(vor: &Voronoi<'_>, edges: &[[LocalPoint; 2]]) -> Option<V
         return None;
     }
     let at = |p: LocalPoint| points[p.index()];
+    // How many points are on an edge, before anything is compared: on curve samples nearly
+    // all, and the answer is no.
+    let mut degree = vec![0u8; n];
+    for &[a, b] in edges {
+        degree[a.index()] = degree[a.index()].saturating_add(1);
+        degree[b.index()] = degree[b.index()].saturating_add(1);
+    }
+    let on_curves = degree.iter().filter(|&&d| d > 0).count();
+    if on_curves as f64 >= MAX_TOUCHED_SHARE * n as f64 {
+        return None;
+    }
     // Each point's longest edge, by its far end, and its first two edge neighbours.
     let mut far = vec![NO_POINT; n];
     let mut along = vec![[NO_POINT; 2]; n];
-    let mut degree = vec![0u8; n];
     for &[a, b] in edges {
         for (p, q) in [(a, b), (b, a)] {
-            let d = degree[p.index()];
-            if d < 2 {
-                along[p.index()][d as usize] = q;
+            let slot = &mut along[p.index()];
+            if slot[0] == NO_POINT {
+                slot[0] = q;
+            } else if slot[1] == NO_POINT {
+                slot[1] = q;
             }
-            degree[p.index()] = d.saturating_add(1);
             let f = far[p.index()];
             if f == NO_POINT || length_order(at(p), at(q), at(p), at(f)) == Ordering::Greater {
                 far[p.index()] = q;
             }
         }
-    }
-    let on_curves = degree.iter().filter(|&&d| d > 0).count();
-    if on_curves as f64 >= MAX_TOUCHED_SHARE * n as f64 {
-        return None;
     }
     let crowded: Vec<bool> = ids::<LocalPoint>(n)
         .map(|p| {

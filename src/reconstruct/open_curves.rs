@@ -9,7 +9,9 @@
 //!
 //! 1. **Sure loops.** A loop of the flow is kept when it is a simple cycle and none of its
 //!    edges is a *chord*: longer than [`CHORD_DOUBLINGS`] doublings of each of the two loop
-//!    edges before it and the two after it. A loop the flow closes around an open curve
+//!    edges before it and the two after it, and than [`CHORD_OUTLIER_DOUBLINGS`] doublings of
+//!    the loop's longest ordinary edge (a closed curve sampled at random positions has gaps
+//!    8× their neighbours by chance, among ordinary gaps nearly as long). A loop the flow closes around an open curve
 //!    crosses from one end to the other, many sample spacings long beside steps of one
 //!    spacing; a closed curve's loop has no such edge, whatever its corners, its sampling
 //!    density (the ε = 1.2 samples of the quality benchmark) or its noise (two edges on each
@@ -25,7 +27,10 @@
 //!    [`MIN_CLOSED_POINTS`] points. Then the ends left (noise turns a step away from both
 //!    its ends' proposals now and then) join the Delaunay neighbours that are ends too or on
 //!    no chain and choose each other as nearest, under the same rules, when the join is at
-//!    most [`JOIN_DOUBLINGS`] doublings of the chain's step at each end it joins.
+//!    most [`JOIN_DOUBLINGS`] doublings of the chain's step at each end it joins, or at most
+//!    [`GAP_JOIN_DOUBLINGS`] doublings of the longest step of each chain it joins (samples
+//!    at random positions leave gaps far longer than the steps beside them); in rounds while
+//!    any pair joins.
 //! 3. **Junk.** A piece is a curve when it has at least [`MIN_CHAIN_POINTS`] points and at
 //!    least three quarters of them are *isolated*: every Delaunay neighbour off the piece is
 //!    farther than [`ISOLATION_DOUBLINGS`] doublings of the point's longer step along it. A
@@ -38,7 +43,9 @@
 //!    among noise: it is dissolved, and the chains are drawn again with its points. So is a
 //!    loop that a chain ends beside, nearer to one of its points than that point's longer
 //!    loop step: the chain goes on along the loop, which the flow closed around the end of
-//!    the same open curve.
+//!    the same open curve. A dissolved loop whose points proximity then leaves in more than
+//!    [`MAX_DISSOLVED_PIECES`] pieces (or a quarter of them on none) is put back for good:
+//!    the chain was noise left beside a closed curve.
 //! 5. **The flow's paths.** Where a loop with chords lies on points that proximity joined
 //!    into no curve (a noisy scan of an open curve, whose chains are no isolated curves),
 //!    the loop's paths between its chords are kept, each run of at least
@@ -52,13 +59,18 @@ use std::cmp::Ordering;
 
 use super::proximity::{closer, DelaunayGraph, Proposal};
 use super::thresholds::open_curves::{
-    CHORD_DOUBLINGS, CHORD_OUTLIER_DOUBLINGS, GAP_DOUBLINGS, ISOLATION_DOUBLINGS, JOIN_DOUBLINGS,
-    MAX_DISSOLVED_PIECES, MIN_CHAIN_POINTS, MIN_CLOSED_POINTS,
+    CHORD_DOUBLINGS, CHORD_OUTLIER_DOUBLINGS, GAP_DOUBLINGS, GAP_JOIN_DOUBLINGS,
+    ISOLATION_DOUBLINGS, JOIN_DOUBLINGS, MAX_DISSOLVED_PIECES, MIN_CHAIN_POINTS, MIN_CLOSED_POINTS,
 };
 use crate::delaunay::Triangulation;
 use crate::ids::{ids, LocalPoint};
 use crate::kernel::metric::{length_order, scaled_length_order};
 use crate::voronoi::Voronoi;
+
+/// At most this many rounds of joins of chain ends: each round joins the mutual nearest
+/// ends; a curve broken at several random gaps needs a round for each gap that only a grown
+/// chain's longest step admits.
+const MAX_JOIN_ROUNDS: usize = 8;
 
 /// No loop, no position on one.
 const NONE: u32 = u32::MAX;
@@ -519,8 +531,29 @@ fn chains(
         greedy.take(edge);
     }
     // Noise turns a step of the curve away from both its ends' proposals now and then (the
-    // next sample falls less than 90° from the previous one): the chain ends there. Ends that
-    // are Delaunay neighbours join, shortest first, under the same rules.
+    // next sample falls less than 90° from the previous one), and samples at random positions
+    // leave gaps far longer than the steps beside them: the chain ends there. Ends that are
+    // Delaunay neighbours join, shortest first, under the same rules, in rounds while any
+    // join (chains that grew may reach across a gap they could not before).
+    for _ in 0..MAX_JOIN_ROUNDS {
+        if join_ends(graph, points, free, &mut greedy) == 0 {
+            break;
+        }
+    }
+    keep_curve_like_pieces(graph, points, greedy.taken)
+}
+
+/// One round of joins of chain ends (rule 2 of the module docs): each end's nearest admissible
+/// end or lone point among its Delaunay neighbours; pairs that choose each other join. The
+/// number of joins taken.
+fn join_ends(
+    graph: &DelaunayGraph,
+    points: &[[f64; 2]],
+    free: &dyn Fn(LocalPoint) -> bool,
+    greedy: &mut Greedy,
+) -> usize {
+    let n = points.len();
+    let at = |i: LocalPoint| points[i.index()];
     let mut along = vec![[NO_POINT; 2]; n];
     for &[a, b] in &greedy.taken {
         for (p, q) in [(a, b), (b, a)] {
@@ -547,13 +580,34 @@ fn chains(
             },
         )
     };
+    // Each chain's longest step, by the chain's root.
+    let root: Vec<LocalPoint> = ids::<LocalPoint>(n)
+        .map(|p| greedy.pieces.root(p))
+        .collect();
+    let mut longest = vec![[NO_POINT; 2]; n];
+    for &[a, b] in &greedy.taken {
+        let slot = &mut longest[root[a.index()].index()];
+        if slot[0] == NO_POINT
+            || length_order(at(a), at(b), at(slot[0]), at(slot[1])) == Ordering::Greater
+        {
+            *slot = [a, b];
+        }
+    }
     // A join is no longer than `2^JOIN_DOUBLINGS` times the step at each chain end it
-    // joins: a break of one curve, not the gap between two.
+    // joins, or than `2^GAP_JOIN_DOUBLINGS` times the longest step of each chain it joins: a
+    // break of one curve, not the gap between two. (Samples at random positions leave
+    // gaps many times the steps beside them, each no longer than the longest gaps elsewhere
+    // along the same curve.)
     let short = |p: LocalPoint, q: LocalPoint| {
         [(p, q), (q, p)].iter().all(|&(end, other)| {
             end_step(end).is_none_or(|[a, b]| {
                 scaled_length_order(at(end), at(other), at(a), at(b), JOIN_DOUBLINGS)
                     != Ordering::Greater
+                    || {
+                        let [c, d] = longest[root[end.index()].index()];
+                        scaled_length_order(at(end), at(other), at(c), at(d), GAP_JOIN_DOUBLINGS)
+                            != Ordering::Greater
+                    }
             })
         })
     };
@@ -590,10 +644,11 @@ fn chains(
     joins.sort_unstable_by(|e, f| {
         length_order(at(e[0]), at(e[1]), at(f[0]), at(f[1])).then_with(|| e.cmp(f))
     });
+    let taken = joins.len();
     for edge in joins {
         greedy.take(edge);
     }
-    keep_curve_like_pieces(graph, points, greedy.taken)
+    taken
 }
 
 /// The chains drawn so far: each point's degree, the pieces, the edges taken.

@@ -28,7 +28,7 @@
 //!    its ends' proposals now and then) join the Delaunay neighbours that are ends too or on
 //!    no chain and choose each other as nearest, under the same rules, when the join is at
 //!    most [`JOIN_DOUBLINGS`] doublings of the chain's step at each end it joins, or at most
-//!    [`GAP_JOIN_DOUBLINGS`] doublings of the longest step of each chain it joins (samples
+//!    [`GAP_JOIN_DOUBLINGS`] doublings of the longest step of either chain it joins (samples
 //!    at random positions leave gaps far longer than the steps beside them); in rounds while
 //!    any pair joins.
 //! 3. **Junk.** A piece is a curve when it has at least [`MIN_CHAIN_POINTS`] points and at
@@ -594,21 +594,31 @@ fn join_ends(
         }
     }
     // A join is no longer than `2^JOIN_DOUBLINGS` times the step at each chain end it
-    // joins, or than `2^GAP_JOIN_DOUBLINGS` times the longest step of each chain it joins: a
-    // break of one curve, not the gap between two. (Samples at random positions leave
+    // joins, or than `2^GAP_JOIN_DOUBLINGS` times the longest step of either chain it joins:
+    // a break of one curve, not the gap between two. (Samples at random positions leave
     // gaps many times the steps beside them, each no longer than the longest gaps elsewhere
     // along the same curve.)
+    // A piece too small to be a curve ([`MIN_CHAIN_POINTS`]) sets no bound of its own: a
+    // close pair of random samples in a gap would otherwise bar both its sides.
+    let sizes: Vec<u32> = root.iter().map(|r| greedy.pieces.size[r.index()]).collect();
     let short = |p: LocalPoint, q: LocalPoint| {
         [(p, q), (q, p)].iter().all(|&(end, other)| {
-            end_step(end).is_none_or(|[a, b]| {
-                scaled_length_order(at(end), at(other), at(a), at(b), JOIN_DOUBLINGS)
-                    != Ordering::Greater
-                    || {
-                        let [c, d] = longest[root[end.index()].index()];
-                        scaled_length_order(at(end), at(other), at(c), at(d), GAP_JOIN_DOUBLINGS)
-                            != Ordering::Greater
-                    }
-            })
+            (sizes[end.index()] as usize) < MIN_CHAIN_POINTS
+                || end_step(end).is_none_or(|[a, b]| {
+                    scaled_length_order(at(end), at(other), at(a), at(b), JOIN_DOUBLINGS)
+                        != Ordering::Greater
+                        || [end, other].iter().any(|&x| {
+                            let [c, d] = longest[root[x.index()].index()];
+                            c != NO_POINT
+                                && scaled_length_order(
+                                    at(end),
+                                    at(other),
+                                    at(c),
+                                    at(d),
+                                    GAP_JOIN_DOUBLINGS,
+                                ) != Ordering::Greater
+                        })
+                })
         })
     };
     let step: Vec<LocalPoint> = along.iter().map(|a| a[0]).collect();

@@ -225,9 +225,11 @@ pub(crate) mod open_curves {
     /// same curve, whereas two evenly sampled strokes apart are farther than twice any step of
     /// either.
     ///
-    /// Measurement (with the rounds of joins): random-position arcs of 90–330°, 5 seeds each:
-    /// 320 points one chain in 10 of 20 (0 before), 160 points 13 (3), 640 points 2;
-    /// quality benchmark: S-curves at noise 0.3 right 90 → 95 %, every other row unchanged.
+    /// Measurement (the bound of either chain, pieces under `MIN_CHAIN_POINTS` setting none,
+    /// rounds of joins): random-position arcs of 90–330°, 5 seeds each, one chain in 13 / 16 /
+    /// 18 / 13 / 4 of 20 at 160 / 320 / 640 / 1 280 / 2 560 points (3 / 0 / – / – / – with
+    /// neither rule); quality benchmark: S-curves at noise 0.3 right 90 → 95 %, every other row
+    /// unchanged.
     /// Used by `reconstruct/open_curves.rs`.
     pub(crate) const GAP_JOIN_DOUBLINGS: u32 = 1;
 

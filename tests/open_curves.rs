@@ -353,6 +353,31 @@ fn a_closed_curve_sampled_at_random_positions_is_one_loop() {
     }
 }
 
+#[test]
+fn an_arc_sampled_at_random_positions_is_one_chain() {
+    // Random positions leave gaps many times the steps beside them, and close pairs or
+    // triples of samples inside some gaps: the chain ends on both sides still join, through
+    // them, into the one chain of the arc in the order of the angles.
+    for seed in 0..3u64 {
+        for (n, degrees) in [(400, 90.0), (400, 200.0), (3000, 300.0), (3000, 120.0)] {
+            let mut rng = Rng::new(900 + seed);
+            let end = f64::to_radians(degrees);
+            let mut angles: Vec<f64> = (0..n - 2).map(|_| rng.range(0.0, end)).collect();
+            angles.extend([0.0, end]);
+            let points: Vec<[f64; 2]> = angles.iter().map(|t| [t.cos(), t.sin()]).collect();
+            let mut order: Vec<u32> = (0..n as u32).collect();
+            order.sort_by(|&i, &j| angles[i as usize].total_cmp(&angles[j as usize]));
+            let truth: BTreeSet<[u32; 2]> = order
+                .windows(2)
+                .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
+                .collect();
+            let rec = reconstruct(&points).unwrap();
+            let output: BTreeSet<[u32; 2]> = rec.edges().iter().copied().collect();
+            assert_eq!(output, truth, "seed {seed}, {n} points, {degrees}°");
+        }
+    }
+}
+
 /// Inputs of every kind for the manifold property: scatters, grids, cocircular rings,
 /// noisy and clean curves with outliers, collinear runs, duplicates.
 fn any_input() -> impl Strategy<Value = Vec<[f64; 2]>> {

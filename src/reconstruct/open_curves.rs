@@ -639,6 +639,10 @@ fn join_ends(
                     open(q)
                         && step[p.index()] != q
                         && degree[p.index()] + degree[q.index()] >= 1
+                        // The other end of a chain too short to close: a join `take`
+                        // refuses, which would bar both ends from any other.
+                        && !(root[p.index()] == root[q.index()]
+                            && (sizes[p.index()] as usize) < MIN_CLOSED_POINTS)
                         && short(p, q)
                 })
                 .min_by(|&a, &b| closer(at(p), at(a), at(b)))

@@ -151,15 +151,21 @@ pub fn reconstruct_observed(
     // edges come out in the caller's.
     let (mut triangulation, frame) = Frame::triangulate(points)?;
     lap(Phase::Triangulate);
+    // Whether the probes read an area: a scatter is then possible (see `scatter`).
+    let mut area = false;
     if options.algorithm() == Algorithm::Wdm && options.thinning() {
-        let representatives = thinning::representatives(&triangulation);
+        let reading = thinning::read(&triangulation);
         lap(Phase::Thin);
-        if let Some(local) = representatives {
-            return thinned(points, triangulation, frame, &local, options, on_phase);
+        match reading {
+            thinning::Reading::Band(local) => {
+                return thinned(points, triangulation, frame, &local, options, on_phase);
+            }
+            thinning::Reading::Area => area = true,
+            thinning::Reading::Neither => {}
         }
     }
     let mut outcome = if options.algorithm() == Algorithm::Wdm {
-        wdm_crust(&triangulation, frame, options, &mut lap)
+        wdm_crust(&triangulation, frame, options, area, &mut lap)
     } else {
         let mut outcome = baseline(&triangulation, options, &mut lap);
         outcome.fitted = smoothing(&triangulation, &outcome.curves, options);
@@ -231,15 +237,19 @@ fn baseline(tri: &Triangulation, options: &Options, lap: &mut dyn FnMut(Phase)) 
     }
 }
 
-/// WDM_CRUST and its medial axis, step by step.
+/// WDM_CRUST and its medial axis, step by step; `area` when the thinning's probes read the
+/// points as an area, where the first pass may read a scatter (see `scatter`).
 fn wdm_crust(
     tri: &Triangulation,
     frame: Frame,
     options: &Options,
+    area: bool,
     lap: &mut dyn FnMut(Phase),
 ) -> Outcome {
     let mut run = WdmRun::first_pass(tri, options, lap);
-    run.scatter = scatter::crowding(&run.vor, &run.edges);
+    if area {
+        run.scatter = scatter::crowding(&run.vor, &run.edges);
+    }
     run.repairs(options);
     run.peeling(options);
     lap(Phase::Peel);

@@ -1,15 +1,18 @@
-//! Whether the first pass read a scatter: it reached few of the points, and most of those
-//! have another point as close as their curve neighbours.
+//! Whether the first pass read a scatter: the thinning's probes saw an area (their
+//! neighbourhoods never turn thin, `thinning::Reading::Area`), the water flow reached few of
+//! the points, and most of those have another point as close as their curve neighbours.
 //!
-//! A curve sample's points have their curve neighbours nearest; in a uniform scatter, a
-//! filled area or a noise band many spacings wide, every edge the water flow draws is one
-//! path among many equally short, and most points are left over. Peeling and the open-curve
-//! stage look for more curves among those leftovers, and in a scatter each of their passes
-//! finds one more such path at the cost of a whole reconstruction: 10^6 uniform points took
-//! 5 peeling passes, a detour repair over junk and 7 s where the first pass took 0.4 s. So a scatter keeps the first
-//! pass's sure loops that read as curves (most of their points not crowded) and nothing
-//! else, without repairs (`pipeline`); `diagnose` warns of it with the same reading of the
-//! final curves.
+//! A curve sample's points have their curve neighbours nearest; in a uniform scatter or a
+//! filled area every edge the water flow draws is one path among many equally short, and
+//! most points are left over. Peeling and the open-curve stage look for more curves among
+//! those leftovers, and in a scatter each of their passes finds one more such path at the
+//! cost of a whole reconstruction: 10^6 uniform points took 5 peeling passes, a detour repair
+//! over junk and 7 s where the first pass took 0.4 s. So a scatter keeps the first pass's
+//! sure loops that read as curves (most of their points not crowded) and nothing else,
+//! without repairs (`pipeline`); `diagnose` warns of it with the same reading of the final
+//! curves. The probes' reading is what tells a scatter from dense curves with noise of about
+//! their spacing, where the first pass also reaches few points, crowded, but the later
+//! passes find the curves: their neighbourhoods turn thin.
 //!
 //! Every comparison is exact (the kernel's `length_order`); which points count is decided on
 //! the Delaunay graph without the diagonals of cocircular groups, so the answer does not

@@ -42,24 +42,46 @@ const LADDER: [usize; 15] = [
     8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, 768, 1024,
 ];
 
-/// The representatives of a dense noisy band (local indices, ascending), or `None` when
-/// the points are no band.
-pub(super) fn representatives(tri: &Triangulation) -> Option<Vec<LocalPoint>> {
-    let n = tri.points.len();
-    if n < MIN_THINNED_POINTS || tri.is_degenerate() {
-        return None;
-    }
-    let sigma = band_noise(tri)?;
-    let radius = COVER_RADIUS * sigma;
-    if !(radius.is_finite() && radius > 0.0) {
-        return None;
-    }
-    Some(cover(&tri.points, radius))
+/// What the probes read the points as.
+pub(super) enum Reading {
+    /// A dense noisy band, and its representatives (local indices, ascending).
+    Band(Vec<LocalPoint>),
+    /// An area: at least half the probes' neighbourhoods never turn thin (a uniform
+    /// scatter, a filled region), up to the ladder's last size.
+    Area,
+    /// Neither (curve samples, small or degenerate inputs).
+    Neither,
 }
 
-/// The noise of the band (its across deviation, in the frame's units), or `None` when the
-/// points are no band.
-fn band_noise(tri: &Triangulation) -> Option<f64> {
+/// How the probes read the points: a band with its representatives, an area, or neither.
+pub(super) fn read(tri: &Triangulation) -> Reading {
+    let n = tri.points.len();
+    if n < MIN_THINNED_POINTS || tri.is_degenerate() {
+        return Reading::Neither;
+    }
+    let sigma = match band_noise(tri) {
+        Noise::Band(sigma) => sigma,
+        Noise::Area => return Reading::Area,
+        Noise::Neither => return Reading::Neither,
+    };
+    let radius = COVER_RADIUS * sigma;
+    if !(radius.is_finite() && radius > 0.0) {
+        return Reading::Neither;
+    }
+    Reading::Band(cover(&tri.points, radius))
+}
+
+/// The noise of a band, or what else the probes saw.
+enum Noise {
+    /// The band's across deviation, in the frame's units.
+    Band(f64),
+    Area,
+    Neither,
+}
+
+/// The noise of the band (its across deviation, in the frame's units), or what else the
+/// probes saw.
+fn band_noise(tri: &Triangulation) -> Noise {
     let n = tri.points.len();
     let rate = n.div_ceil(SUBSAMPLE).max(1);
     let subsample;
@@ -70,10 +92,10 @@ fn band_noise(tri: &Triangulation) -> Option<f64> {
             .filter(|&i| mix(i) % rate as u64 == 0)
             .map(|i| tri.points[i as usize])
             .collect();
-        subsample = crate::delaunay::triangulate(&kept).ok()?;
-        if subsample.is_degenerate() {
-            return None;
-        }
+        subsample = match crate::delaunay::triangulate(&kept) {
+            Ok(sub) if !sub.is_degenerate() => sub,
+            _ => return Noise::Neither,
+        };
         (&subsample, Graph::adjacency(&subsample))
     };
     let m = probed.points.len();
@@ -93,10 +115,15 @@ fn band_noise(tri: &Triangulation) -> Option<f64> {
         .map(|t| t.deviation)
         .collect();
     if 2 * banded.len() < probes {
-        return None;
+        let never_thin = turns.iter().filter(|t| t.is_none()).count();
+        return if 2 * never_thin >= probes {
+            Noise::Area
+        } else {
+            Noise::Neither
+        };
     }
     banded.sort_by(f64::total_cmp);
-    Some(banded[banded.len() / 2])
+    Noise::Band(banded[banded.len() / 2])
 }
 
 /// SplitMix64's finaliser: a subsample that owes nothing to the locality order's pattern.
@@ -321,10 +348,15 @@ mod tests {
                 [t.cos(), t.sin()]
             })
             .collect();
-        assert!(representatives(&triangulate(&clean).unwrap()).is_none());
+        assert!(matches!(
+            read(&triangulate(&clean).unwrap()),
+            Reading::Neither
+        ));
         // 4000 points, spacing along the circle 0.0016, noise 0.03: about 19 spacings.
         let tri = triangulate(&band(4000, 0.03, 7)).unwrap();
-        let reps = representatives(&tri).expect("a band");
+        let Reading::Band(reps) = read(&tri) else {
+            panic!("a band");
+        };
         // Disks of 3 σ along a circle of length 2π: between one and two radii apart.
         let radius = COVER_RADIUS * 0.03;
         let expected = std::f64::consts::TAU / radius;
@@ -343,10 +375,20 @@ mod tests {
     }
 
     #[test]
-    fn a_uniform_scatter_is_no_band() {
+    fn a_uniform_scatter_is_an_area_and_no_band() {
         let mut rng = Rng::new(11);
         let scatter: Vec<[f64; 2]> = (0..3000).map(|_| [rng.f64(), rng.f64()]).collect();
-        assert!(representatives(&triangulate(&scatter).unwrap()).is_none());
+        assert!(matches!(
+            read(&triangulate(&scatter).unwrap()),
+            Reading::Area
+        ));
+        // A dense noisy circle whose noise is about its spacing: no band, and no area
+        // either (its neighbourhoods turn thin).
+        let noisy = band(20_000, 0.0003, 12);
+        assert!(matches!(
+            read(&triangulate(&noisy).unwrap()),
+            Reading::Neither
+        ));
     }
 
     #[test]

@@ -252,7 +252,7 @@ pub(crate) mod open_curves {
 /// A scatter read off the first pass (`reconstruct/scatter.rs`).
 pub(crate) mod scatter {
     /// The first pass read a scatter only when it put fewer than this share of the points on an
-    /// edge (and most of those are crowded): the water flow's loops through a uniform scatter
+    /// edge (and most of those are crowded, and the thinning's probes read an area): the water flow's loops through a uniform scatter
     /// reach about `4.7 √n` points (8.6 % of 3 000, 4.7 % of 10^4, 1.5 % of 10^5, 0.47 % of
     /// 10^6), whereas sparse noisy samples (noise of one spacing: a third of the points left
     /// over, most curve points crowded) and curves among 70 % outliers reach a quarter or
@@ -262,8 +262,9 @@ pub(crate) mod scatter {
     ///
     /// Measurement: a third (the `scatter` warning's share): noise 1 × spacing rows of the
     /// quality benchmark right 95 → 50 % and 100 → 0 % with a hole, 70 % outliers 100 → 93 %;
-    /// an eighth: every quality row unchanged, but that circle among outliers lost. Used by
-    /// `reconstruct/scatter.rs`.
+    /// an eighth: every quality row unchanged, but that circle among outliers lost. Without the
+    /// probes' area reading, a 90 000-point annulus with noise of one spacing (first pass: a
+    /// few % of the points) lost both its curves. Used by `reconstruct/scatter.rs`.
     pub(crate) const MAX_TOUCHED_SHARE: f64 = 0.05;
 }
 

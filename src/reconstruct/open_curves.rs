@@ -45,7 +45,8 @@
 //!    loop step: the chain goes on along the loop, which the flow closed around the end of
 //!    the same open curve. A dissolved loop whose points proximity then leaves in more than
 //!    [`MAX_DISSOLVED_PIECES`] pieces (or a quarter of them on none) is put back for good:
-//!    the chain was noise left beside a closed curve.
+//!    the chain was noise left beside a closed curve, and a chain of fewer than twice
+//!    [`MIN_CHAIN_POINTS`] points ending beside such a loop is dropped as a stub of it.
 //! 5. **The flow's paths.** Where a loop with chords lies on points that proximity joined
 //!    into no curve (a noisy scan of an open curve, whose chains are no isolated curves),
 //!    the loop's paths between its chords are kept, each run of at least
@@ -96,7 +97,7 @@ pub(super) fn settle(
     }
     // Each round joins the free points into chains; a loop that a chain runs beside is
     // dissolved and its points join the next round (rule 4). At most one round a loop.
-    let chain_edges = loop {
+    let (chain_edges, graph) = loop {
         let free = |p: LocalPoint| loops.of[p.index()] == NONE;
         // The Delaunay neighbours of the free points only: few on closed curves.
         let listed: Vec<LocalPoint> = ids::<LocalPoint>(n).filter(|&p| free(p)).collect();
@@ -113,12 +114,13 @@ pub(super) fn settle(
         }
         let beside = loops_beside_chains(&graph, points, &chain_edges, &loops);
         if beside.is_empty() {
-            break chain_edges;
+            break (chain_edges, graph);
         }
         for l in beside {
             loops.dissolve(l);
         }
     };
+    let chain_edges = without_stubs_of_restored_loops(&graph, points, chain_edges, &loops);
     let mut kept: Vec<[LocalPoint; 2]> = edges
         .iter()
         .copied()
@@ -318,6 +320,61 @@ fn sure_loops(points: &[[f64; 2]], edges: &[[LocalPoint; 2]]) -> SureLoops {
         }
     }
     loops
+}
+
+/// `chain_edges` without the short chains that end beside a loop put back (rule 4 of the
+/// module docs): fewer than twice [`MIN_CHAIN_POINTS`] points, an end nearer to a point of
+/// such a loop than that point's longer loop step. The loop was dissolved for them and could
+/// not be drawn again without it: they are a stub of its noise, not the rest of its curve.
+fn without_stubs_of_restored_loops(
+    graph: &DelaunayGraph,
+    points: &[[f64; 2]],
+    chain_edges: Vec<[LocalPoint; 2]>,
+    loops: &SureLoops,
+) -> Vec<[LocalPoint; 2]> {
+    if chain_edges.is_empty() || !loops.restored.iter().any(|&r| r) {
+        return chain_edges;
+    }
+    let n = points.len();
+    let at = |i: LocalPoint| points[i.index()];
+    let mut position = vec![NONE; n];
+    for cycle in &loops.cycles {
+        for (i, &p) in cycle.iter().enumerate() {
+            position[p.index()] = i as u32;
+        }
+    }
+    let mut degree = vec![0u8; n];
+    let mut pieces = Pieces::new(n);
+    for &[a, b] in &chain_edges {
+        degree[a.index()] += 1;
+        degree[b.index()] += 1;
+        let (ra, rb) = (pieces.root(a), pieces.root(b));
+        pieces.join(ra, rb);
+    }
+    let mut stub = vec![false; n];
+    for &c in chain_edges.iter().flatten() {
+        if degree[c.index()] != 1 {
+            continue;
+        }
+        let beside = graph.neighbours(c).iter().any(|&p| {
+            let l = loops.of[p.index()];
+            l != NONE && loops.restored[l as usize] && {
+                let step = loops.longer_step(points, p, &position);
+                length_order(at(p), at(c), at(p), at(step)) == Ordering::Less
+            }
+        });
+        if beside {
+            let root = pieces.root(c);
+            stub[root.index()] = true;
+        }
+    }
+    chain_edges
+        .into_iter()
+        .filter(|&[a, _]| {
+            let root = pieces.root(a);
+            !(stub[root.index()] && (pieces.size[root.index()] as usize) < 2 * MIN_CHAIN_POINTS)
+        })
+        .collect()
 }
 
 /// The loops still sure that a chain runs beside (rule 4 of the module docs): more than a

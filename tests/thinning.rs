@@ -243,3 +243,26 @@ fn a_uniform_scatter_is_not_thinned_and_thinning_can_be_turned_off() {
     assert!(off.thinned().is_none());
     assert!(!off.labels().is_empty());
 }
+
+#[test]
+fn a_large_noisy_sample_at_random_positions_is_thinned_to_one_loop() {
+    // 40 000 points at random positions around a circle, noise of half the mean step on each
+    // coordinate: too little for a band by the measure of small samples, yet over so many
+    // points the water flow fails here and there and left tens to hundreds of junk chains.
+    let mut rng = Rng::new(41);
+    let n = 40_000;
+    let spacing = std::f64::consts::TAU / n as f64;
+    for noise in [0.5, 1.0] {
+        let points = band(
+            &circle(1.0, [0.0, 0.0], 4000),
+            true,
+            n,
+            noise * spacing,
+            &mut rng,
+        );
+        let rec = default(&points);
+        assert!(rec.thinned().is_some(), "noise {noise}");
+        assert_eq!(counts(&rec), (1, 0), "noise {noise}");
+        assert!(largest_degree(&rec) <= 2);
+    }
+}

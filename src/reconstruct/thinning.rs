@@ -30,8 +30,8 @@ use std::collections::{HashMap, HashSet};
 use super::delaunay_graph::{FastHash, Graph, Waiting};
 use super::lengths::distance;
 use super::thresholds::thinning::{
-    BAND_SPACINGS, COVER_RADIUS, MAX_ASPECT, MIN_CLUSTER_SHARE, MIN_THINNED_POINTS, PROBES,
-    SUBSAMPLE,
+    BAND_SPACINGS, COVER_RADIUS, LARGE_BAND_SPACINGS, LARGE_SAMPLE, MAX_ASPECT, MIN_CLUSTER_SHARE,
+    MIN_THINNED_POINTS, PROBES, SUBSAMPLE,
 };
 use crate::delaunay::Triangulation;
 use crate::ids::{ids, LocalPoint};
@@ -99,6 +99,12 @@ fn band_noise(tri: &Triangulation) -> Noise {
         (&subsample, Graph::adjacency(&subsample))
     };
     let m = probed.points.len();
+    // Large samples: local failures of the water flow add up (see `LARGE_BAND_SPACINGS`).
+    let threshold = if n >= LARGE_SAMPLE {
+        LARGE_BAND_SPACINGS
+    } else {
+        BAND_SPACINGS
+    };
     let stride = m.div_ceil(PROBES).max(1);
     let probes = m.div_ceil(stride);
     let turns = parallel::map_range(probes, |i| {
@@ -110,7 +116,7 @@ fn band_noise(tri: &Triangulation) -> Noise {
         .filter(|t| {
             // The spacing along the curve of all the points, not only the subsample's.
             let spacing = 2.0 * t.radius / (t.size * rate) as f64;
-            t.deviation >= BAND_SPACINGS * spacing
+            t.deviation >= threshold * spacing
         })
         .map(|t| t.deviation)
         .collect();

@@ -159,13 +159,16 @@ pub(super) fn sure_loop_edges(
     edges: &[[LocalPoint; 2]],
     keep: impl Fn(&[LocalPoint]) -> bool,
 ) -> Vec<[LocalPoint; 2]> {
-    let mut loops = sure_loops(points, edges);
-    for l in 0..loops.cycles.len() as u32 {
-        if !keep(&loops.cycles[l as usize]) {
-            loops.dissolve(l);
-        }
-    }
-    loops.edges_of(edges)
+    let loops = sure_loops(points, edges);
+    let kept: Vec<bool> = loops.cycles.iter().map(|c| keep(c)).collect();
+    edges
+        .iter()
+        .copied()
+        .filter(|e| {
+            let l = loops.of[e[0].index()];
+            l != NONE && kept[l as usize]
+        })
+        .collect()
 }
 
 /// The sure loops (rule 1 of the module docs): each loop's points in order, and the loop of
@@ -182,6 +185,17 @@ struct SureLoops {
 }
 
 impl SureLoops {
+    /// Each point's position on its loop (`NONE` when on none), for `longer_step`.
+    fn positions(&self, n: usize) -> Vec<u32> {
+        let mut position = vec![NONE; n];
+        for cycle in &self.cycles {
+            for (i, &p) in cycle.iter().enumerate() {
+                position[p.index()] = i as u32;
+            }
+        }
+        position
+    }
+
     /// The edges of `edges` on a sure loop.
     fn edges_of(&self, edges: &[[LocalPoint; 2]]) -> Vec<[LocalPoint; 2]> {
         edges
@@ -215,13 +229,10 @@ impl SureLoops {
         if dissolved.is_empty() {
             return dissolved;
         }
-        let mut pieces = Pieces::new(n);
+        let mut pieces = Pieces::of(n, chain_edges);
         let mut on_chain = vec![false; n];
-        for &[a, b] in chain_edges {
-            let (ra, rb) = (pieces.root(a), pieces.root(b));
-            pieces.join(ra, rb);
-            on_chain[a.index()] = true;
-            on_chain[b.index()] = true;
+        for &p in chain_edges.iter().flatten() {
+            on_chain[p.index()] = true;
         }
         dissolved
             .into_iter()
@@ -337,19 +348,11 @@ fn without_stubs_of_restored_loops(
     }
     let n = points.len();
     let at = |i: LocalPoint| points[i.index()];
-    let mut position = vec![NONE; n];
-    for cycle in &loops.cycles {
-        for (i, &p) in cycle.iter().enumerate() {
-            position[p.index()] = i as u32;
-        }
-    }
+    let position = loops.positions(n);
+    let mut pieces = Pieces::of(n, &chain_edges);
     let mut degree = vec![0u8; n];
-    let mut pieces = Pieces::new(n);
-    for &[a, b] in &chain_edges {
-        degree[a.index()] += 1;
-        degree[b.index()] += 1;
-        let (ra, rb) = (pieces.root(a), pieces.root(b));
-        pieces.join(ra, rb);
+    for &p in chain_edges.iter().flatten() {
+        degree[p.index()] += 1;
     }
     let mut stub = vec![false; n];
     for &c in chain_edges.iter().flatten() {
@@ -390,12 +393,7 @@ fn loops_beside_chains(
         return Vec::new();
     }
     let n = points.len();
-    let mut position = vec![NONE; n];
-    for cycle in &loops.cycles {
-        for (i, &p) in cycle.iter().enumerate() {
-            position[p.index()] = i as u32;
-        }
-    }
+    let position = loops.positions(n);
     let at = |i: LocalPoint| points[i.index()];
     let mut crowded = vec![false; n];
     let mut count = vec![0usize; loops.cycles.len()];
@@ -768,6 +766,16 @@ impl Pieces {
             parent: ids(n).collect(),
             size: vec![1; n],
         }
+    }
+
+    /// The pieces of `edges` among `n` points.
+    fn of(n: usize, edges: &[[LocalPoint; 2]]) -> Pieces {
+        let mut pieces = Pieces::new(n);
+        for &[a, b] in edges {
+            let (ra, rb) = (pieces.root(a), pieces.root(b));
+            pieces.join(ra, rb);
+        }
+        pieces
     }
 
     fn root(&mut self, mut p: LocalPoint) -> LocalPoint {

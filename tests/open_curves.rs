@@ -269,6 +269,46 @@ fn noisy_open_curves_give_one_chain_and_no_chord() {
 }
 
 #[test]
+fn noisy_wide_arcs_are_not_closed_across_their_gap() {
+    // Arcs of 170–290° with Gaussian noise of 0.3 steps on each coordinate: noise makes the
+    // steps beside the gap uneven, so the flow's chord need not be 8× each of its neighbours;
+    // it is still more than 4× every other edge of its loop, and never drawn.
+    let mut rng = Rng::new(31);
+    let mut failures = Vec::new();
+    for round in 0..40 {
+        let angle = rng.range(3.0, 5.0);
+        let n = 20 + rng.below(100);
+        let step = angle / (n - 1) as f64;
+        let points: Vec<[f64; 2]> = arc([0.0, 0.0], 1.0, 0.0, angle, n)
+            .iter()
+            .map(|p| {
+                [
+                    p[0] + 0.3 * step * rng.normal(),
+                    p[1] + 0.3 * step * rng.normal(),
+                ]
+            })
+            .collect();
+        let rec = reconstruct(&points).unwrap();
+        let gap = 2.0 * ((TAU - angle) / 2.0).sin();
+        let longest = rec
+            .edges()
+            .iter()
+            .map(|&[a, b]| {
+                let (p, q) = (points[a as usize], points[b as usize]);
+                ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt()
+            })
+            .fold(0.0, f64::max);
+        if counts(&rec).0 != 0 || longest > gap / 2.0 {
+            failures.push((round, angle, n, counts(&rec), longest / gap));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "(round, angle, points, (loops, chains), longest edge / gap): {failures:?}"
+    );
+}
+
+#[test]
 fn the_axis_is_drawn_for_the_closed_curves_only() {
     let circle = arc([0.0, 0.0], 1.0, 0.0, TAU * (1.0 - 1.0 / 100.0), 100);
     let beside = arc([3.0, 0.0], 1.0, 0.5, 2.5, 50);

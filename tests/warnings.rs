@@ -215,8 +215,8 @@ fn a_chord_across_an_open_curve_is_a_long_edge() {
 
 #[test]
 fn a_loop_closed_across_a_short_gap_is_named() {
-    // A 355° arc of 300 points: its two ends about 4 steps apart, within the open-curve
-    // stage's chord bound, so the loop stays closed; its closing edge is alone in its length.
+    // A 355° arc of 300 points: its two ends about 4 steps apart. The water flow alone closes
+    // it; its closing edge is alone in its length, and the warning names the arc's two ends.
     let n = 300;
     let arc: Vec<[f64; 2]> = (0..n)
         .map(|k| {
@@ -224,7 +224,8 @@ fn a_loop_closed_across_a_short_gap_is_named() {
             [t.cos(), t.sin()]
         })
         .collect();
-    let rec = reconstruct(&arc).unwrap();
+    let flow_only = Options::new().with_open_curves(false);
+    let rec = reconstruct_with(&arc, &flow_only).unwrap();
     assert!(
         rec.curves().len() == 1 && rec.curves()[0].closed,
         "{:?}",
@@ -236,11 +237,20 @@ fn a_loop_closed_across_a_short_gap_is_named() {
             .iter()
             .find(|w| w.code == WarningCode::LoopAcrossGap)
             .unwrap_or_else(|| panic!("{:?}", rec.warnings()));
-        // It names the arc's two ends.
         let mut ends = warning.points.clone();
         ends.sort_unstable();
         assert_eq!(ends, [0, n as u32 - 1]);
     }
+    // The default opens the loop at that edge: one chain from end to end, nothing to say.
+    let rec = reconstruct(&arc).unwrap();
+    assert_eq!(rec.curves().len(), 1, "{:?}", rec.curves());
+    let chain = &rec.curves()[0];
+    assert!(!chain.closed);
+    let mut ends = [chain.points[0], *chain.points.last().unwrap()];
+    ends.sort_unstable();
+    assert_eq!(ends, [0, n as u32 - 1]);
+    assert_eq!(chain.points.len(), n);
+    assert!(rec.warnings().is_empty(), "{:?}", rec.warnings());
 }
 
 #[test]

@@ -11,7 +11,9 @@
 //!    edges is a *chord*: longer than [`CHORD_DOUBLINGS`] doublings of each of the two loop
 //!    edges before it and the two after it, and than [`CHORD_OUTLIER_DOUBLINGS`] doublings of
 //!    the loop's longest ordinary edge (a closed curve sampled at random positions has gaps
-//!    8× their neighbours by chance, among ordinary gaps nearly as long). A loop the flow closes around an open curve
+//!    8× their neighbours by chance, among ordinary gaps nearly as long); or, whatever its
+//!    neighbours, longer than [`LONE_CHORD_DOUBLINGS`] doublings of every other edge of the
+//!    loop (noise makes the steps beside a gap uneven). A loop the flow closes around an open curve
 //!    crosses from one end to the other, many sample spacings long beside steps of one
 //!    spacing; a closed curve's loop has no such edge, whatever its corners, its sampling
 //!    density (the ε = 1.2 samples of the quality benchmark) or its noise (two edges on each
@@ -30,7 +32,8 @@
 //!    most [`JOIN_DOUBLINGS`] doublings of the chain's step at each end it joins, or at most
 //!    [`GAP_JOIN_DOUBLINGS`] doublings of the longest step of either chain it joins (samples
 //!    at random positions leave gaps far longer than the steps beside them); in rounds while
-//!    any pair joins.
+//!    any pair joins. A loop so closed loses its chords (rule 1's test): an end's half
+//!    neighbour can be the other end across an open curve's gap.
 //! 3. **Junk.** A piece is a curve when it has at least [`MIN_CHAIN_POINTS`] points and at
 //!    least three quarters of them are *isolated*: every Delaunay neighbour off the piece is
 //!    farther than [`ISOLATION_DOUBLINGS`] doublings of the point's longer step along it. A
@@ -61,7 +64,8 @@ use std::cmp::Ordering;
 use super::proximity::{closer, DelaunayGraph, Proposal};
 use super::thresholds::open_curves::{
     CHORD_DOUBLINGS, CHORD_OUTLIER_DOUBLINGS, GAP_DOUBLINGS, GAP_JOIN_DOUBLINGS,
-    ISOLATION_DOUBLINGS, JOIN_DOUBLINGS, MAX_DISSOLVED_PIECES, MIN_CHAIN_POINTS, MIN_CLOSED_POINTS,
+    ISOLATION_DOUBLINGS, JOIN_DOUBLINGS, LONE_CHORD_DOUBLINGS, MAX_DISSOLVED_PIECES,
+    MIN_CHAIN_POINTS, MIN_CLOSED_POINTS,
 };
 use crate::delaunay::Triangulation;
 use crate::ids::{ids, LocalPoint};
@@ -268,18 +272,6 @@ impl SureLoops {
 /// Which points lie on a sure loop of `edges` (rule 1 of the module docs).
 fn sure_loops(points: &[[f64; 2]], edges: &[[LocalPoint; 2]]) -> SureLoops {
     let n = points.len();
-    // The two neighbours of every point of degree at most 2; degree above 2 marked.
-    let mut next = vec![[NO_POINT; 2]; n];
-    let mut degree = vec![0u32; n];
-    for &[a, b] in edges {
-        for (p, q) in [(a, b), (b, a)] {
-            let d = degree[p.index()];
-            if d < 2 {
-                next[p.index()][d as usize] = q;
-            }
-            degree[p.index()] = d + 1;
-        }
-    }
     let mut loops = SureLoops {
         cycles: Vec::new(),
         of: vec![NONE; n],
@@ -287,38 +279,14 @@ fn sure_loops(points: &[[f64; 2]], edges: &[[LocalPoint; 2]]) -> SureLoops {
         dissolved: Vec::new(),
         restored: Vec::new(),
     };
-    let mut seen = vec![false; n];
-    let mut cycle = Vec::new();
-    for start in ids::<LocalPoint>(n) {
-        if seen[start.index()] || degree[start.index()] != 2 {
-            continue;
-        }
-        // Walk from `start`; a simple cycle returns to it through degree-2 points only.
-        cycle.clear();
-        let (mut prev, mut at) = (start, next[start.index()][0]);
-        cycle.push(start);
-        seen[start.index()] = true;
-        let mut simple = true;
-        while at != start {
-            if degree[at.index()] != 2 || seen[at.index()] {
-                simple = false;
-                break;
-            }
-            seen[at.index()] = true;
-            cycle.push(at);
-            let [x, y] = next[at.index()];
-            (prev, at) = (at, if x == prev { y } else { x });
-        }
-        if !simple {
-            continue;
-        }
+    for cycle in simple_cycles(n, edges) {
         let chords = chords(points, &cycle);
         if chords.is_empty() {
             let l = loops.cycles.len() as u32;
             for &p in &cycle {
                 loops.of[p.index()] = l;
             }
-            loops.cycles.push(cycle.clone());
+            loops.cycles.push(cycle);
             loops.restored.push(false);
         } else {
             // The loop between its chords, from the end of one to the start of the next.
@@ -331,6 +299,73 @@ fn sure_loops(points: &[[f64; 2]], edges: &[[LocalPoint; 2]]) -> SureLoops {
         }
     }
     loops
+}
+
+/// The simple cycles of `edges` among `n` points (components whose points all have two
+/// edges), each as its points in order.
+fn simple_cycles(n: usize, edges: &[[LocalPoint; 2]]) -> Vec<Vec<LocalPoint>> {
+    // The two neighbours of every point of degree at most 2; degree above 2 marked.
+    let mut next = vec![[NO_POINT; 2]; n];
+    let mut degree = vec![0u32; n];
+    for &[a, b] in edges {
+        for (p, q) in [(a, b), (b, a)] {
+            let d = degree[p.index()];
+            if d < 2 {
+                next[p.index()][d as usize] = q;
+            }
+            degree[p.index()] = d + 1;
+        }
+    }
+    let mut cycles = Vec::new();
+    let mut seen = vec![false; n];
+    for start in ids::<LocalPoint>(n) {
+        if seen[start.index()] || degree[start.index()] != 2 {
+            continue;
+        }
+        // Walk from `start`; a simple cycle returns to it through degree-2 points only.
+        let mut cycle = vec![start];
+        let (mut prev, mut at) = (start, next[start.index()][0]);
+        seen[start.index()] = true;
+        let mut simple = true;
+        while at != start {
+            if degree[at.index()] != 2 || seen[at.index()] {
+                simple = false;
+                break;
+            }
+            seen[at.index()] = true;
+            cycle.push(at);
+            let [x, y] = next[at.index()];
+            (prev, at) = (at, if x == prev { y } else { x });
+        }
+        if simple {
+            cycles.push(cycle);
+        }
+    }
+    cycles
+}
+
+/// `edges` (each point on at most two) without the chords of their loops (rule 1's test on
+/// the loops that proximity closed): the half neighbour of a chain's end can be its other
+/// end across the gap of an open curve, shorter than a gap between curves.
+fn without_chords(points: &[[f64; 2]], mut edges: Vec<[LocalPoint; 2]>) -> Vec<[LocalPoint; 2]> {
+    let mut chords_of_loops: Vec<[LocalPoint; 2]> = simple_cycles(points.len(), &edges)
+        .into_iter()
+        .flat_map(|cycle| {
+            let k = cycle.len();
+            chords(points, &cycle)
+                .into_iter()
+                .map(move |i| {
+                    let (a, b) = (cycle[i], cycle[(i + 1) % k]);
+                    [a.min(b), a.max(b)]
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    if !chords_of_loops.is_empty() {
+        chords_of_loops.sort_unstable();
+        edges.retain(|e| chords_of_loops.binary_search(e).is_err());
+    }
+    edges
 }
 
 /// `chain_edges` without the short chains that end beside a loop put back (rule 4 of the
@@ -488,7 +523,7 @@ fn chords(points: &[[f64; 2]], cycle: &[LocalPoint]) -> Vec<usize> {
         })
         .collect();
     if locally_long.is_empty() {
-        return locally_long;
+        return lone_chord(points, cycle).into_iter().collect();
     }
     // A candidate is a chord only when it also stands out of the whole loop: longer than
     // `2^CHORD_OUTLIER_DOUBLINGS` times the loop's longest *ordinary* edge, one no longer
@@ -516,6 +551,32 @@ fn chords(points: &[[f64; 2]], cycle: &[LocalPoint]) -> Vec<usize> {
             ) == Ordering::Greater
         })
         .collect()
+}
+
+/// The loop's longest edge, by position, when it is longer than `2^LONE_CHORD_DOUBLINGS`
+/// times every other edge of the loop (rule 1): the one gap of an open curve that noise left
+/// without two short steps on each side. Picked exactly; ties have no lone edge.
+fn lone_chord(points: &[[f64; 2]], cycle: &[LocalPoint]) -> Option<usize> {
+    let k = cycle.len();
+    let at = |i: usize| points[cycle[i % k].index()];
+    let order = |i: usize, j: usize| length_order(at(i), at(i + 1), at(j), at(j + 1));
+    let (mut longest, mut second) = (0, None);
+    for i in 1..k {
+        if order(i, longest) == Ordering::Greater {
+            (longest, second) = (i, Some(longest));
+        } else if second.is_none_or(|s| order(i, s) == Ordering::Greater) {
+            second = Some(i);
+        }
+    }
+    let second = second?;
+    let lone = scaled_length_order(
+        at(longest),
+        at(longest + 1),
+        at(second),
+        at(second + 1),
+        LONE_CHORD_DOUBLINGS,
+    ) == Ordering::Greater;
+    lone.then_some(longest)
 }
 
 /// Whether `pq` is longer than `2^doublings` times the nearest-neighbour distance at both
@@ -595,7 +656,7 @@ fn chains(
             break;
         }
     }
-    keep_curve_like_pieces(graph, points, greedy.taken)
+    keep_curve_like_pieces(graph, points, without_chords(points, greedy.taken))
 }
 
 /// One round of joins of chain ends (rule 2 of the module docs): each end's nearest admissible

@@ -209,6 +209,28 @@ fn open_strokes_beside_closed_loops() {
 }
 
 #[test]
+fn strokes_sampled_sparser_than_the_loop_beside_them() {
+    // Three arcs around an ellipse, their steps 1.5–3 times the ellipse's: the water flow
+    // runs from the ellipse across chords to the sparse strokes and back, and such a loop is
+    // no closed curve even where a chord is only 5–7 of a stroke's steps.
+    let ellipse: Vec<[f64; 2]> = (0..68)
+        .map(|k| {
+            let t = TAU * k as f64 / 68.0;
+            [t.cos(), 0.73 * t.sin()]
+        })
+        .collect();
+    let pieces = [
+        (ellipse, true),
+        (arc([0.0, 0.0], 1.6, -1.623, -0.532, 34), false),
+        (arc([0.0, 0.0], 2.1, 1.326, 3.746, 24), false),
+        (arc([0.0, 0.0], 2.6, 2.815, 3.978, 77), false),
+    ];
+    for seed in 0..4 {
+        assert_exact("ellipse and sparse strokes", &mixed(&pieces, seed));
+    }
+}
+
+#[test]
 fn epsilon_samples_of_open_curves_are_exact() {
     // The testkit's ε-sampler on open curves: uneven spacing, endpoints always sampled. (At
     // ε = 0.25 an arc has four samples a radian, and the flow's chord across a 230° arc is

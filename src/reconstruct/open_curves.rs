@@ -9,7 +9,8 @@
 //!
 //! 1. **Sure loops.** A loop of the flow is kept when it is a simple cycle and none of its
 //!    edges is a *chord*: longer than [`CHORD_DOUBLINGS`] doublings of each of the two loop
-//!    edges before it and the two after it, and than [`CHORD_OUTLIER_DOUBLINGS`] doublings of
+//!    edges on one side of it and [`CHORD_SIDE_DOUBLINGS`] doublings of the two on the other
+//!    (a chord from a dense curve to a sparse one), and than [`CHORD_OUTLIER_DOUBLINGS`] doublings of
 //!    the loop's longest ordinary edge (a closed curve sampled at random positions has gaps
 //!    8× their neighbours by chance, among ordinary gaps nearly as long); or, whatever its
 //!    neighbours, longer than [`LONE_CHORD_DOUBLINGS`] doublings of every other edge of the
@@ -63,9 +64,9 @@ use std::cmp::Ordering;
 
 use super::proximity::{closer, DelaunayGraph, Proposal};
 use super::thresholds::open_curves::{
-    CHORD_DOUBLINGS, CHORD_OUTLIER_DOUBLINGS, GAP_DOUBLINGS, GAP_JOIN_DOUBLINGS,
-    ISOLATION_DOUBLINGS, JOIN_DOUBLINGS, LONE_CHORD_DOUBLINGS, MAX_DISSOLVED_PIECES,
-    MIN_CHAIN_POINTS, MIN_CLOSED_POINTS,
+    CHORD_DOUBLINGS, CHORD_OUTLIER_DOUBLINGS, CHORD_SIDE_DOUBLINGS, GAP_DOUBLINGS,
+    GAP_JOIN_DOUBLINGS, ISOLATION_DOUBLINGS, JOIN_DOUBLINGS, LONE_CHORD_DOUBLINGS,
+    MAX_DISSOLVED_PIECES, MIN_CHAIN_POINTS, MIN_CLOSED_POINTS,
 };
 use crate::delaunay::Triangulation;
 use crate::ids::{ids, LocalPoint};
@@ -498,9 +499,8 @@ fn chords(points: &[[f64; 2]], cycle: &[LocalPoint]) -> Vec<usize> {
             dx * dx + dy * dy
         })
         .collect();
-    let factor = f64::from(4u32.pow(CHORD_DOUBLINGS));
-    let longer = |i: usize, j: usize| {
-        let (a, b) = (squared[i], factor * squared[j % k]);
+    let longer_by = |i: usize, j: usize, doublings: u32| {
+        let (a, b) = (squared[i], f64::from(4u32.pow(doublings)) * squared[j % k]);
         // Each rounded square is within 4 units of the exact one while nothing overflows or
         // nears the subnormal range; 16 units of margin cover both and the product.
         let normal = |d: f64| d.is_finite() && d > 1e-280;
@@ -514,12 +514,18 @@ fn chords(points: &[[f64; 2]], cycle: &[LocalPoint]) -> Vec<usize> {
             }
         }
         let j = j % k;
-        scaled_length_order(at(i), at(i + 1), at(j), at(j + 1), CHORD_DOUBLINGS)
-            == Ordering::Greater
+        scaled_length_order(at(i), at(i + 1), at(j), at(j + 1), doublings) == Ordering::Greater
     };
+    let longer = |i: usize, j: usize| longer_by(i, j, CHORD_DOUBLINGS);
+    // Long against the two edges on one side and, by a smaller factor, the two on the other:
+    // a chord from a densely sampled curve to a sparser one is many of the dense curve's
+    // steps but fewer of the sparse one's.
+    let before = |i: usize, d: u32| longer_by(i, i + k - 1, d) && longer_by(i, i + k - 2, d);
+    let after = |i: usize, d: u32| longer_by(i, i + 1, d) && longer_by(i, i + 2, d);
     let locally_long: Vec<usize> = (0..k)
         .filter(|&i| {
-            longer(i, i + k - 1) && longer(i, i + 1) && longer(i, i + k - 2) && longer(i, i + 2)
+            (before(i, CHORD_DOUBLINGS) && after(i, CHORD_SIDE_DOUBLINGS))
+                || (before(i, CHORD_SIDE_DOUBLINGS) && after(i, CHORD_DOUBLINGS))
         })
         .collect();
     if locally_long.is_empty() {

@@ -254,6 +254,85 @@ fn a_loop_closed_across_a_short_gap_is_named() {
 }
 
 #[test]
+fn chains_ending_close_together_are_named() {
+    // One noisy open polyline that the default breaks at a corner into two chains.
+    let points = data("tests/data/regressions/noisy-polyline-broken-at-a-corner.txt");
+    let rec = reconstruct(&points).unwrap();
+    assert_eq!(rec.curves().len(), 2, "{:?}", rec.curves());
+    let warning = rec
+        .warnings()
+        .iter()
+        .find(|w| w.code == WarningCode::ChainEndsClose)
+        .unwrap_or_else(|| panic!("{:?}", rec.warnings()));
+    // The points named are an end of each chain.
+    let ends: Vec<[u32; 2]> = rec
+        .curves()
+        .iter()
+        .map(|c| [c.points[0], *c.points.last().unwrap()])
+        .collect();
+    let [i, j] = [warning.points[0], warning.points[1]];
+    assert!(
+        (ends[0].contains(&i) && ends[1].contains(&j))
+            || (ends[0].contains(&j) && ends[1].contains(&i)),
+        "{:?} {ends:?}",
+        warning.points
+    );
+}
+
+#[test]
+fn separate_strokes_do_not_say_their_ends_are_close() {
+    // An ellipse with one to three arcs around it at radii half a unit apart, clean and with
+    // noise of 0.3 steps: whenever the result has the right loops and chains, no two chains
+    // are said to end close together.
+    let mut rng = Rng::new(31);
+    let mut right = 0;
+    for trial in 0..60 {
+        let mut pieces = vec![Ellipse {
+            a: 1.0,
+            b: rng.range(0.5, 1.0),
+        }
+        .dense(60 + rng.below(100))];
+        for k in 0..1 + rng.below(3) {
+            let a0 = rng.range(0.0, TAU);
+            let r = 1.6 + 0.5 * k as f64;
+            let span = rng.range(0.5, 2.5);
+            let n = 20 + rng.below(60);
+            let arc: Vec<[f64; 2]> = (0..n)
+                .map(|i| {
+                    let t = a0 + span * i as f64 / (n - 1) as f64;
+                    [r * t.cos(), r * t.sin()]
+                })
+                .collect();
+            pieces.push(DenseCurve::from_points(&arc, false, &[]));
+        }
+        let noise = if trial % 2 == 0 { 0.0 } else { 0.3 };
+        let mut points = Vec::new();
+        for piece in &pieces {
+            let steps = piece.points.len() - usize::from(!piece.closed);
+            let step = piece.length() / steps as f64;
+            points.extend(piece.points.iter().map(|p| {
+                [
+                    p[0] + noise * step * rng.normal(),
+                    p[1] + noise * step * rng.normal(),
+                ]
+            }));
+        }
+        rng.shuffle(&mut points);
+        let rec = reconstruct(&points).unwrap();
+        let closed = rec.curves().iter().filter(|c| c.closed).count();
+        if closed == 1 && rec.curves().len() == pieces.len() {
+            right += 1;
+            assert!(
+                !codes(&rec).contains(&WarningCode::ChainEndsClose),
+                "trial {trial}: {:?}",
+                rec.warnings()
+            );
+        }
+    }
+    assert!(right >= 45, "{right} of 60 right");
+}
+
+#[test]
 fn a_spent_peeling_budget_is_a_warning() {
     let rings: Vec<[f64; 2]> = (1..=12)
         .flat_map(|r| circle([0.0, 0.0], r as f64, 200))
@@ -311,6 +390,7 @@ fn codes_are_stable_names() {
             "scatter",
             "long-edge",
             "loop-across-gap",
+            "chain-ends-close",
             "curves-too-close",
             "peeling-budget"
         ]

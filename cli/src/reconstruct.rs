@@ -47,7 +47,8 @@ JSON output (one line):
   duplicates not listed; coords are the curve's points' coordinates (fitted with --smooth);
   duplicates pair each repeated point with its first occurrence; warnings say when the
   result is probably not what was wanted (codes most-unassigned, scatter, long-edge,
-  loop-across-gap, curves-too-close, peeling-budget), empty when there is nothing to say;
+  loop-across-gap, chain-ends-close, curves-too-close, peeling-budget), empty when there
+  is nothing to say;
   \"thinned\": N appears when a dense noisy band was thinned to N representatives.
   Warnings are also printed on standard error, and a file written with -o gets a summary
   line there (--quiet: neither).

@@ -12,6 +12,7 @@
 //! | `scatter` | most curve points have a point that is not their curve neighbour as close as their curve edges, and over a third of the points are on no curve: a uniform scatter, a filled area or a wide band of noise |
 //! | `long-edge` | a curve edge is more than 8 × each curve edge within two steps of it (at a chain's end: the end's nearest-neighbour distance) |
 //! | `loop-across-gap` | a closed loop's longest edge is more than 4 × its next longest: the loop may close across the gap of an open curve |
+//! | `chain-ends-close` | two open chains end at most 4 × the step at each of those ends apart: they may be one curve, broken by noise or at a sharp corner |
 //! | `curves-too-close` | two curve points as close as their curve edges lie on different curves, or more than 32 steps apart on one: the sampling cannot tell the curves apart there |
 //! | `peeling-budget` | peeling stopped at its budget: curves may remain among the points on no curve |
 //!
@@ -25,8 +26,10 @@ use std::cmp::Ordering;
 use super::lengths::distance;
 use super::proximity::closer;
 use super::result::{Reconstruction, Warning, WarningCode};
-use super::thresholds::warnings::{CLOSE_CURVE_STEPS, GAP_EDGE_DOUBLINGS, LONG_EDGE_DOUBLINGS};
-use crate::delaunay::NO_TWIN;
+use super::thresholds::warnings::{
+    CLOSE_CURVE_STEPS, CLOSE_ENDS_DOUBLINGS, GAP_EDGE_DOUBLINGS, LONG_EDGE_DOUBLINGS,
+};
+use crate::delaunay::{triangulate, NO_TWIN};
 use crate::ids::LocalPoint;
 use crate::kernel::metric::{length_order, scaled_length_order};
 use crate::predicates::{incircle, CirclePosition};
@@ -97,6 +100,7 @@ pub(super) fn warnings(rec: &Reconstruction) -> Vec<Warning> {
         return found;
     }
     found.extend(edge_warnings(rec, &view, &survey));
+    found.extend(chain_ends_close(rec, &view));
     if let Some(w) = curves_too_close(rec, &survey) {
         found.push(w);
     }
@@ -466,6 +470,82 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
         });
     }
     out
+}
+
+/// `chain-ends-close`: two open chains whose ends are at most `2^CLOSE_ENDS_DOUBLINGS` times
+/// the step at each end apart. The pairs looked at are the edges of the Delaunay
+/// triangulation of the chain ends alone: an end's nearest other end is among them.
+fn chain_ends_close(rec: &Reconstruction, view: &CurveView) -> Option<Warning> {
+    let tri = &rec.triangulation;
+    let points = &tri.points;
+    let at = |i: LocalPoint| points[i.index()];
+    // Each end, its chain, and its step (the longer of its last two edges, as a pair).
+    let mut ends: Vec<(LocalPoint, usize, [LocalPoint; 2])> = Vec::new();
+    for (c, (curve, closed)) in view.curves.iter().enumerate() {
+        let k = curve.len();
+        if *closed || k < 2 {
+            continue;
+        }
+        for (end, next, after) in [
+            (curve[0], curve[1], curve.get(2)),
+            (
+                curve[k - 1],
+                curve[k - 2],
+                k.checked_sub(3).map(|i| &curve[i]),
+            ),
+        ] {
+            let step = match after {
+                Some(&a)
+                    if length_order(at(next), at(a), at(end), at(next)) == Ordering::Greater =>
+                {
+                    [next, a]
+                }
+                _ => [end, next],
+            };
+            ends.push((end, c, step));
+        }
+    }
+    if ends.len() < 4 {
+        return None;
+    }
+    let coords: Vec<[f64; 2]> = ends.iter().map(|&(p, _, _)| at(p)).collect();
+    let Ok(among) = triangulate(&coords) else {
+        return None;
+    };
+    let within = |p: LocalPoint, q: LocalPoint, [a, b]: [LocalPoint; 2]| {
+        scaled_length_order(at(p), at(q), at(a), at(b), CLOSE_ENDS_DOUBLINGS) != Ordering::Greater
+    };
+    let (mut pairs, mut first) = (0usize, None::<[u32; 2]>);
+    for (e, &twin) in among.halfedge_ids().zip(among.halfedges()) {
+        if twin != NO_TWIN && twin < e {
+            continue;
+        }
+        let (x, y) = (
+            ends[among.input_index(among.org(e)) as usize],
+            ends[among.input_index(among.dest(e)) as usize],
+        );
+        if x.1 == y.1 || !within(x.0, y.0, x.2) || !within(x.0, y.0, y.2) {
+            continue;
+        }
+        pairs += 1;
+        let (i, j) = (tri.input_index(x.0), tri.input_index(y.0));
+        let named = [i.min(j), i.max(j)];
+        if first.is_none_or(|f| named < f) {
+            first = Some(named);
+        }
+    }
+    let [i, j] = first?;
+    Some(Warning {
+        code: WarningCode::ChainEndsClose,
+        message: format!(
+            "{} within a few steps of each other (points {i} and {j} at {}): if they are one curve, \
+             noise or a corner sharper than the spacing allows broke it there; sample it more \
+             densely or with less noise",
+            count(pairs, "pair of open chains ends", "pairs of open chains end"),
+            position(at(tri.local_index(i)))
+        ),
+        points: vec![i, j],
+    })
 }
 
 /// Counts one more flagged edge, keeping the worst.

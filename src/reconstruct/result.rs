@@ -187,6 +187,8 @@ pub enum WarningCode {
     LongEdge,
     /// A closed loop may close across the gap of an open curve.
     LoopAcrossGap,
+    /// Two open chains end within a step or two of each other: they may be one curve.
+    ChainEndsClose,
     /// Curves come within the sample spacing of each other.
     CurvesTooClose,
     /// Peeling stopped at its budget.
@@ -195,11 +197,12 @@ pub enum WarningCode {
 
 impl WarningCode {
     /// Every code, in the order the warnings are listed.
-    pub const ALL: [WarningCode; 6] = [
+    pub const ALL: [WarningCode; 7] = [
         WarningCode::MostUnassigned,
         WarningCode::Scatter,
         WarningCode::LongEdge,
         WarningCode::LoopAcrossGap,
+        WarningCode::ChainEndsClose,
         WarningCode::CurvesTooClose,
         WarningCode::PeelingBudget,
     ];
@@ -211,6 +214,7 @@ impl WarningCode {
             WarningCode::Scatter => "scatter",
             WarningCode::LongEdge => "long-edge",
             WarningCode::LoopAcrossGap => "loop-across-gap",
+            WarningCode::ChainEndsClose => "chain-ends-close",
             WarningCode::CurvesTooClose => "curves-too-close",
             WarningCode::PeelingBudget => "peeling-budget",
         }

@@ -640,6 +640,19 @@ pub(crate) mod smooth {
 
 /// Warnings: signs that a result is not what was wanted (`docs/design/warnings.md`).
 pub(crate) mod warnings {
+    /// Two open chains whose ends are at most `2^CLOSE_ENDS_DOUBLINGS` times the step at each of
+    /// those ends apart (the longer of its last two edges) may be one curve: noise or a sharp
+    /// corner broke it where the samples of its two sides interleave, so that the ends are no
+    /// Delaunay neighbours and the open-curve stage could not join them under its own bound
+    /// (`open_curves::JOIN_DOUBLINGS`, the same 4×).
+    ///
+    /// Measurement: 1 200 trials of the quality benchmark's six open-curve families on other
+    /// seeds (clean and noise 0.3 steps): spoke on 50 of the 126 wrong results, none of the
+    /// 1 074 right ones; the quality benchmark's right results still warned 1 in 1 053, its
+    /// wrong ones 30 → 36 of 218. At 1 (2×) the corner of a noisy polyline (ends 1.9 and 2.4
+    /// of their steps apart) was not named. Used by `reconstruct/diagnose.rs`.
+    pub(crate) const CLOSE_ENDS_DOUBLINGS: u32 = 2;
+
     /// An edge is *long* when it is more than `2^LONG_EDGE_DOUBLINGS` times each of the (up to
     /// four) curve edges within two steps of it. The open-curve stage already opens a loop at such
     /// a chord, and its chains never take an edge that long; what remains is a chord of the

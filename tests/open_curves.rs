@@ -231,6 +231,22 @@ fn strokes_sampled_sparser_than_the_loop_beside_them() {
 }
 
 #[test]
+fn a_noisy_corner_whose_sides_interleave_is_one_chain() {
+    // A noisy open polyline whose samples at one corner interleave: the chain along one side
+    // ended at the tip with the sample before it between the tip and the other side's end,
+    // and the two ends were no Delaunay neighbours (two chains before the swap).
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/regressions/noisy-polyline-broken-at-a-corner.txt"
+    );
+    let points = wdm_crust::io::read_points_from_path(std::path::Path::new(path)).unwrap();
+    let rec = reconstruct(&points).unwrap();
+    assert_eq!(counts(&rec), (0, 1), "{:?}", rec.curves());
+    assert_eq!(rec.curves()[0].points.len(), points.len());
+    assert!(rec.warnings().is_empty(), "{:?}", rec.warnings());
+}
+
+#[test]
 fn epsilon_samples_of_open_curves_are_exact() {
     // The testkit's ε-sampler on open curves: uneven spacing, endpoints always sampled. (At
     // ε = 0.25 an arc has four samples a radian, and the flow's chord across a 230° arc is

@@ -255,8 +255,8 @@ fn a_loop_closed_across_a_short_gap_is_named() {
 
 #[test]
 fn chains_ending_close_together_are_named() {
-    // One noisy open polyline that the default breaks at a corner into two chains.
-    let points = data("tests/data/regressions/noisy-polyline-broken-at-a-corner.txt");
+    // One noisy open polyline that the default breaks into two chains.
+    let points = data("tests/data/regressions/noisy-polyline-broken-in-two.txt");
     let rec = reconstruct(&points).unwrap();
     assert_eq!(rec.curves().len(), 2, "{:?}", rec.curves());
     let warning = rec

@@ -34,7 +34,9 @@
 //!    [`GAP_JOIN_DOUBLINGS`] doublings of the longest step of either chain it joins (samples
 //!    at random positions leave gaps far longer than the steps beside them); in rounds while
 //!    any pair joins. A loop so closed loses its chords (rule 1's test): an end's half
-//!    neighbour can be the other end across an open curve's gap.
+//!    neighbour can be the other end across an open curve's gap. Where noise interleaves the
+//!    samples of a sharp corner's two sides, an end and the sample before it swap places to
+//!    join the other side's end ([`swap_interleaved_ends`]).
 //! 3. **Junk.** A piece is a curve when it has at least [`MIN_CHAIN_POINTS`] points and at
 //!    least three quarters of them are *isolated*: every Delaunay neighbour off the piece is
 //!    farther than [`ISOLATION_DOUBLINGS`] doublings of the point's longer step along it. A
@@ -662,6 +664,7 @@ fn chains(
             break;
         }
     }
+    swap_interleaved_ends(graph, points, free, &mut greedy);
     keep_curve_like_pieces(graph, points, without_chords(points, greedy.taken))
 }
 
@@ -785,6 +788,115 @@ fn join_ends(
         greedy.take(edge);
     }
     taken
+}
+
+/// Where the samples of a curve's two sides interleave (noise at a sharp corner), one chain
+/// ends at the tip `p` with the sample `x` before it lying between the tip and the other
+/// chain's end `q`, so that `p` and `q` are no Delaunay neighbours and never join: the chain
+/// runs `… y, x, p` where the curve runs `… y, p, x, q …`. Swaps `x` and `p` and joins `x` to
+/// `q` when `y p` and `x q` are Delaunay edges no longer than `2^JOIN_DOUBLINGS` times the
+/// chain's steps `y x` and `x p` (the longer of them) and than the step at `q`. The number of
+/// swaps made.
+fn swap_interleaved_ends(
+    graph: &DelaunayGraph,
+    points: &[[f64; 2]],
+    free: &dyn Fn(LocalPoint) -> bool,
+    greedy: &mut Greedy,
+) -> usize {
+    let n = points.len();
+    let at = |i: LocalPoint| points[i.index()];
+    let mut along = vec![[NO_POINT; 2]; n];
+    for &[a, b] in &greedy.taken {
+        for (p, q) in [(a, b), (b, a)] {
+            let slot = usize::from(along[p.index()][0] != NO_POINT);
+            along[p.index()][slot] = q;
+        }
+    }
+    let other = |p: LocalPoint, not: LocalPoint| {
+        let [u, v] = along[p.index()];
+        if u == not {
+            v
+        } else {
+            u
+        }
+    };
+    let is_end = |p: LocalPoint| free(p) && greedy.degree[p.index()] == 1;
+    // `pq` no longer than `2^JOIN_DOUBLINGS` times `ab`.
+    let within = |p: LocalPoint, q: LocalPoint, [a, b]: [LocalPoint; 2]| {
+        scaled_length_order(at(p), at(q), at(a), at(b), JOIN_DOUBLINGS) != Ordering::Greater
+    };
+    let longer_of = |e: [LocalPoint; 2], f: [LocalPoint; 2]| {
+        if length_order(at(e[0]), at(e[1]), at(f[0]), at(f[1])) == Ordering::Less {
+            f
+        } else {
+            e
+        }
+    };
+    let mut touched = vec![false; n];
+    let mut removed: Vec<[LocalPoint; 2]> = Vec::new();
+    let mut added: Vec<[LocalPoint; 2]> = Vec::new();
+    let mut joined: Vec<LocalPoint> = Vec::new();
+    for p in ids::<LocalPoint>(n) {
+        if !is_end(p) || touched[p.index()] {
+            continue;
+        }
+        let x = along[p.index()][0];
+        if greedy.degree[x.index()] != 2 || touched[x.index()] {
+            continue;
+        }
+        let y = other(x, p);
+        if touched[y.index()] || !graph.neighbours(p).contains(&y) {
+            continue;
+        }
+        let step = longer_of([y, x], [x, p]);
+        let chain = greedy.pieces.root(p);
+        let partner = graph
+            .neighbours(x)
+            .iter()
+            .copied()
+            .filter(|&q| {
+                q != p
+                    && is_end(q)
+                    && !touched[q.index()]
+                    && greedy.pieces.root(q) != chain
+                    && !graph.neighbours(p).contains(&q)
+                    && within(x, q, step)
+                    && within(y, p, step)
+                    && {
+                        let r = along[q.index()][0];
+                        let q_step = match other(r, q) {
+                            NO_POINT => [q, r],
+                            s => longer_of([q, r], [r, s]),
+                        };
+                        within(x, q, q_step)
+                    }
+            })
+            .min_by(|&a, &b| closer(at(x), at(a), at(b)));
+        let Some(q) = partner else {
+            continue;
+        };
+        for z in [p, x, y, q] {
+            touched[z.index()] = true;
+        }
+        removed.extend([[y.min(x), y.max(x)], [x.min(p), x.max(p)]]);
+        added.extend([[y, p], [p, x], [x, q]]);
+        let (a, b) = (greedy.pieces.root(p), greedy.pieces.root(q));
+        greedy.pieces.join(a, b);
+        joined.push(q);
+    }
+    if added.is_empty() {
+        return 0;
+    }
+    for q in joined {
+        greedy.degree[q.index()] += 1;
+    }
+    removed.sort_unstable();
+    greedy
+        .taken
+        .retain(|&[a, b]| removed.binary_search(&[a.min(b), a.max(b)]).is_err());
+    let swaps = added.len() / 3;
+    greedy.taken.extend(added);
+    swaps
 }
 
 /// The chains drawn so far: each point's degree, the pieces, the edges taken.

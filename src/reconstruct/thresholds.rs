@@ -647,10 +647,11 @@ pub(crate) mod warnings {
     /// (`open_curves::JOIN_DOUBLINGS`, the same 4×).
     ///
     /// Measurement: 1 200 trials of the quality benchmark's six open-curve families on other
-    /// seeds (clean and noise 0.3 steps): spoke on 50 of the 126 wrong results, none of the
-    /// 1 074 right ones; the quality benchmark's right results still warned 1 in 1 053, its
-    /// wrong ones 30 → 36 of 218. At 1 (2×) the corner of a noisy polyline (ends 1.9 and 2.4
-    /// of their steps apart) was not named. Used by `reconstruct/diagnose.rs`.
+    /// seeds (clean and noise 0.3 steps): spoke on 29 of the 109 wrong results (50 of 126
+    /// before the swap of interleaved ends fixed most broken corners), none of the 1 091 right
+    /// ones; the quality benchmark's right results warned 1 in 1 056, its wrong ones 32 of 215
+    /// (30 of 218 without the code). At 1 (2×) a noisy polyline's corner whose ends were 1.9
+    /// and 2.4 of their steps apart was not named. Used by `reconstruct/diagnose.rs`.
     pub(crate) const CLOSE_ENDS_DOUBLINGS: u32 = 2;
 
     /// An edge is *long* when it is more than `2^LONG_EDGE_DOUBLINGS` times each of the (up to

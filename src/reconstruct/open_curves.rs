@@ -668,6 +668,32 @@ fn chains(
     keep_curve_like_pieces(graph, points, without_chords(points, greedy.taken))
 }
 
+/// The chain's step at its end `end`, as a pair: the longer of its last two edges (noise
+/// makes single steps short); `None` for a point on no chain. `along` is each point's
+/// neighbours along the chains.
+fn end_step(
+    points: &[[f64; 2]],
+    along: &[[LocalPoint; 2]],
+    end: LocalPoint,
+) -> Option<[LocalPoint; 2]> {
+    let at = |i: LocalPoint| points[i.index()];
+    let first = along[end.index()][0];
+    if first == NO_POINT {
+        return None;
+    }
+    let [x, y] = along[first.index()];
+    let second = if x == end { y } else { x };
+    Some(
+        if second != NO_POINT
+            && length_order(at(first), at(second), at(end), at(first)) == Ordering::Greater
+        {
+            [first, second]
+        } else {
+            [end, first]
+        },
+    )
+}
+
 /// One round of joins of chain ends (rule 2 of the module docs): each end's nearest admissible
 /// end or lone point among its Delaunay neighbours; pairs that choose each other join. The
 /// number of joins taken.
@@ -679,32 +705,8 @@ fn join_ends(
 ) -> usize {
     let n = points.len();
     let at = |i: LocalPoint| points[i.index()];
-    let mut along = vec![[NO_POINT; 2]; n];
-    for &[a, b] in &greedy.taken {
-        for (p, q) in [(a, b), (b, a)] {
-            let slot = usize::from(along[p.index()][0] != NO_POINT);
-            along[p.index()][slot] = q;
-        }
-    }
-    // The chain's step at an end: the longer of its last two edges (noise makes single
-    // steps short).
-    let end_step = |end: LocalPoint| -> Option<[LocalPoint; 2]> {
-        let first = along[end.index()][0];
-        if first == NO_POINT {
-            return None;
-        }
-        let [x, y] = along[first.index()];
-        let second = if x == end { y } else { x };
-        Some(
-            if second != NO_POINT
-                && length_order(at(first), at(second), at(end), at(first)) == Ordering::Greater
-            {
-                [first, second]
-            } else {
-                [end, first]
-            },
-        )
-    };
+    let along = greedy.along(n);
+    let end_step = |end: LocalPoint| end_step(points, &along, end);
     // Each chain's longest step, by the chain's root.
     let root: Vec<LocalPoint> = ids::<LocalPoint>(n)
         .map(|p| greedy.pieces.root(p))
@@ -805,13 +807,7 @@ fn swap_interleaved_ends(
 ) -> usize {
     let n = points.len();
     let at = |i: LocalPoint| points[i.index()];
-    let mut along = vec![[NO_POINT; 2]; n];
-    for &[a, b] in &greedy.taken {
-        for (p, q) in [(a, b), (b, a)] {
-            let slot = usize::from(along[p.index()][0] != NO_POINT);
-            along[p.index()][slot] = q;
-        }
-    }
+    let along = greedy.along(n);
     let other = |p: LocalPoint, not: LocalPoint| {
         let [u, v] = along[p.index()];
         if u == not {
@@ -862,14 +858,7 @@ fn swap_interleaved_ends(
                     && !graph.neighbours(p).contains(&q)
                     && within(x, q, step)
                     && within(y, p, step)
-                    && {
-                        let r = along[q.index()][0];
-                        let q_step = match other(r, q) {
-                            NO_POINT => [q, r],
-                            s => longer_of([q, r], [r, s]),
-                        };
-                        within(x, q, q_step)
-                    }
+                    && end_step(points, &along, q).is_some_and(|step| within(x, q, step))
             })
             .min_by(|&a, &b| closer(at(x), at(a), at(b)));
         let Some(q) = partner else {
@@ -913,6 +902,19 @@ impl Greedy {
             pieces: Pieces::new(n),
             taken: Vec::new(),
         }
+    }
+
+    /// Each point's neighbours along the chains among `n` points (`NO_POINT` where it has
+    /// fewer than two).
+    fn along(&self, n: usize) -> Vec<[LocalPoint; 2]> {
+        let mut along = vec![[NO_POINT; 2]; n];
+        for &[a, b] in &self.taken {
+            for (p, q) in [(a, b), (b, a)] {
+                let slot = usize::from(along[p.index()][0] != NO_POINT);
+                along[p.index()][slot] = q;
+            }
+        }
+        along
     }
 
     /// Takes `[a, b]` if both have fewer than two edges and, when they are the ends of one

@@ -4,8 +4,40 @@ use std::cmp::Ordering;
 
 use crate::delaunay::Triangulation;
 use crate::ids::{ids, LocalPoint};
+use crate::kernel::metric::{length_order, scaled_length_order};
 use crate::kernel::{orient, Sign};
 use crate::parallel;
+
+/// The loop `ring`'s longest edge and its next longest, by position (edge `i` runs from
+/// `ring[i]` to `ring[i + 1]`, the last back to the first), when the longest is more than
+/// `2^doublings` times every other edge: an edge alone in its length, as a chord across the
+/// gap of an open curve is. Exact; ties have no lone edge.
+pub(crate) fn lone_longest_edge(
+    points: &[[f64; 2]],
+    ring: &[LocalPoint],
+    doublings: u32,
+) -> Option<(usize, usize)> {
+    let k = ring.len();
+    let at = |i: usize| points[ring[i % k].index()];
+    let order = |i: usize, j: usize| length_order(at(i), at(i + 1), at(j), at(j + 1));
+    let (mut longest, mut second) = (0, None);
+    for i in 1..k {
+        if order(i, longest) == Ordering::Greater {
+            (longest, second) = (i, Some(longest));
+        } else if second.is_none_or(|s| order(i, s) == Ordering::Greater) {
+            second = Some(i);
+        }
+    }
+    let second = second?;
+    let lone = scaled_length_order(
+        at(longest),
+        at(longest + 1),
+        at(second),
+        at(second + 1),
+        doublings,
+    ) == Ordering::Greater;
+    lone.then_some((longest, second))
+}
 
 /// One reconstructed curve.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -23,6 +23,7 @@
 
 use std::cmp::Ordering;
 
+use super::curves::lone_longest_edge;
 use super::lengths::distance;
 use super::proximity::closer;
 use super::result::{Reconstruction, Warning, WarningCode};
@@ -413,20 +414,8 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
         // A loop whose longest edge is far longer than every other one: an open curve whose
         // ends were joined.
         if closed && n >= 4 {
-            let order = |i: usize, j: usize| {
-                length_order(
-                    at(edge(i)[0]),
-                    at(edge(i)[1]),
-                    at(edge(j)[0]),
-                    at(edge(j)[1]),
-                )
-            };
-            let longest = (0..n).max_by(|&i, &j| order(i, j)).unwrap_or(0);
-            let second = (0..n)
-                .filter(|&j| j != longest)
-                .max_by(|&i, &j| order(i, j))
-                .unwrap_or(0);
-            if !long_here[longest] && longer(edge(longest), edge(second), GAP_EDGE_DOUBLINGS) {
+            let lone = lone_longest_edge(points, curve, GAP_EDGE_DOUBLINGS);
+            if let Some((longest, second)) = lone.filter(|&(longest, _)| !long_here[longest]) {
                 note(
                     &mut gap,
                     length(edge(longest)) / length(edge(second)),

@@ -64,6 +64,7 @@
 
 use std::cmp::Ordering;
 
+use super::curves::lone_longest_edge;
 use super::proximity::{closer, DelaunayGraph, Proposal};
 use super::thresholds::open_curves::{
     CHORD_DOUBLINGS, CHORD_OUTLIER_DOUBLINGS, CHORD_SIDE_DOUBLINGS, GAP_DOUBLINGS,
@@ -531,7 +532,12 @@ fn chords(points: &[[f64; 2]], cycle: &[LocalPoint]) -> Vec<usize> {
         })
         .collect();
     if locally_long.is_empty() {
-        return lone_chord(points, cycle).into_iter().collect();
+        // Whatever its neighbours, an edge alone in its length: noise makes the steps beside
+        // an open curve's gap uneven.
+        return lone_longest_edge(points, cycle, LONE_CHORD_DOUBLINGS)
+            .map(|(longest, _)| longest)
+            .into_iter()
+            .collect();
     }
     // A candidate is a chord only when it also stands out of the whole loop: longer than
     // `2^CHORD_OUTLIER_DOUBLINGS` times the loop's longest *ordinary* edge, one no longer
@@ -559,32 +565,6 @@ fn chords(points: &[[f64; 2]], cycle: &[LocalPoint]) -> Vec<usize> {
             ) == Ordering::Greater
         })
         .collect()
-}
-
-/// The loop's longest edge, by position, when it is longer than `2^LONE_CHORD_DOUBLINGS`
-/// times every other edge of the loop (rule 1): the one gap of an open curve that noise left
-/// without two short steps on each side. Picked exactly; ties have no lone edge.
-fn lone_chord(points: &[[f64; 2]], cycle: &[LocalPoint]) -> Option<usize> {
-    let k = cycle.len();
-    let at = |i: usize| points[cycle[i % k].index()];
-    let order = |i: usize, j: usize| length_order(at(i), at(i + 1), at(j), at(j + 1));
-    let (mut longest, mut second) = (0, None);
-    for i in 1..k {
-        if order(i, longest) == Ordering::Greater {
-            (longest, second) = (i, Some(longest));
-        } else if second.is_none_or(|s| order(i, s) == Ordering::Greater) {
-            second = Some(i);
-        }
-    }
-    let second = second?;
-    let lone = scaled_length_order(
-        at(longest),
-        at(longest + 1),
-        at(second),
-        at(second + 1),
-        LONE_CHORD_DOUBLINGS,
-    ) == Ordering::Greater;
-    lone.then_some(longest)
 }
 
 /// Whether `pq` is longer than `2^doublings` times the nearest-neighbour distance at both
@@ -797,14 +777,13 @@ fn join_ends(
 /// chain's end `q`, so that `p` and `q` are no Delaunay neighbours and never join: the chain
 /// runs `… y, x, p` where the curve runs `… y, p, x, q …`. Swaps `x` and `p` and joins `x` to
 /// `q` when `y p` and `x q` are Delaunay edges no longer than `2^JOIN_DOUBLINGS` times the
-/// chain's steps `y x` and `x p` (the longer of them) and than the step at `q`. The number of
-/// swaps made.
+/// chain's steps `y x` and `x p` (the longer of them) and than the step at `q`.
 fn swap_interleaved_ends(
     graph: &DelaunayGraph,
     points: &[[f64; 2]],
     free: &dyn Fn(LocalPoint) -> bool,
     greedy: &mut Greedy,
-) -> usize {
+) {
     let n = points.len();
     let at = |i: LocalPoint| points[i.index()];
     let along = greedy.along(n);
@@ -874,7 +853,7 @@ fn swap_interleaved_ends(
         joined.push(q);
     }
     if added.is_empty() {
-        return 0;
+        return;
     }
     for q in joined {
         greedy.degree[q.index()] += 1;
@@ -883,9 +862,7 @@ fn swap_interleaved_ends(
     greedy
         .taken
         .retain(|&[a, b]| removed.binary_search(&[a.min(b), a.max(b)]).is_err());
-    let swaps = added.len() / 3;
     greedy.taken.extend(added);
-    swaps
 }
 
 /// The chains drawn so far: each point's degree, the pieces, the edges taken.

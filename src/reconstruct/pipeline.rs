@@ -536,13 +536,16 @@ fn thinned(
     for &p in curves.iter().flat_map(|c| c.points.iter()) {
         on_curve[p as usize] = true;
     }
-    let mut unassigned: Vec<u32> = tri
-        .input_of
-        .iter()
-        .copied()
-        .filter(|&i| !on_curve[i as usize])
+    // Every kept point on no curve, ascending: marked through `input_of` (in local order)
+    // and read off in caller order, which a sort of most of the points cost 4 % of a
+    // thinned run.
+    let mut off_curve = vec![false; points.len()];
+    for &i in &tri.input_of {
+        off_curve[i as usize] = !on_curve[i as usize];
+    }
+    let unassigned: Vec<u32> = (0..points.len() as u32)
+        .filter(|&i| off_curve[i as usize])
         .collect();
-    unassigned.sort_unstable();
     let warnings: Vec<super::Warning> = inner
         .warnings()
         .iter()

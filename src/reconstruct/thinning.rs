@@ -227,27 +227,188 @@ impl Moments {
 /// A cell of the cover's grid.
 type Cell = (i64, i64);
 
-type Grid = HashMap<Cell, Vec<LocalPoint>, FastHash>;
+/// No cell, no seed, no representative: the end of a list.
+const NONE: u32 = u32::MAX;
 
-/// The cell `c` and its eight neighbours, each once. Far out (a radius tiny against the
-/// coordinates) the cell indices saturate at the ends of `i64`: neighbouring cells may then
-/// coincide, and a point's disk still lies within these cells, since saturation keeps
-/// indices that differ by at most one within one.
-fn neighbourhood(c: Cell) -> impl Iterator<Item = Cell> {
-    let mut cells = [(0i64, 0i64); 9];
-    for (k, slot) in cells.iter_mut().enumerate() {
-        let (i, j) = (k as i64 / 3 - 1, k as i64 % 3 - 1);
-        *slot = (c.0.saturating_add(i), c.1.saturating_add(j));
-    }
-    cells.sort_unstable();
-    let mut count = 1;
-    for k in 1..9 {
-        if cells[k] != cells[count - 1] {
-            cells[count] = cells[k];
-            count += 1;
+/// The points bucketed by the cells of a grid of side `radius`: the non-empty cells
+/// numbered in order of first use, each cell's points contiguous and ascending, and each
+/// cell's neighbourhood as cell numbers (looked up once a cell, not once a point).
+struct CellGrid {
+    /// The cell number of every point.
+    cell_of: Vec<u32>,
+    /// The points of cell `c` are `members[start[c]..start[c + 1]]`.
+    start: Vec<u32>,
+    members: Vec<LocalPoint>,
+    /// The non-empty cells among each cell's neighbourhood, `NONE` for the rest.
+    around: Vec<[u32; 9]>,
+}
+
+impl CellGrid {
+    fn new(points: &[[f64; 2]], radius: f64) -> Self {
+        let cell = |p: [f64; 2]| -> Cell {
+            (
+                (p[0] / radius).floor() as i64,
+                (p[1] / radius).floor() as i64,
+            )
+        };
+        let mut number: HashMap<Cell, u32, FastHash> = HashMap::default();
+        let mut cells: Vec<Cell> = Vec::new();
+        let mut count: Vec<u32> = Vec::new();
+        // Points in locality order often share the cell of the point before.
+        let mut last: Option<(Cell, u32)> = None;
+        let cell_of: Vec<u32> = points
+            .iter()
+            .map(|&x| {
+                let c = cell(x);
+                let k = match last {
+                    Some((seen, k)) if seen == c => k,
+                    _ => *number.entry(c).or_insert_with(|| {
+                        cells.push(c);
+                        count.push(0);
+                        (cells.len() - 1) as u32
+                    }),
+                };
+                last = Some((c, k));
+                count[k as usize] += 1;
+                k
+            })
+            .collect();
+        drop(number);
+        let mut start = Vec::with_capacity(cells.len() + 1);
+        let mut total = 0u32;
+        start.push(0);
+        for &c in &count {
+            total += c;
+            start.push(total);
+        }
+        let mut fill: Vec<u32> = start[..cells.len()].to_vec();
+        let mut members = vec![LocalPoint::new(0); points.len()];
+        for (p, &k) in ids::<LocalPoint>(points.len()).zip(&cell_of) {
+            members[fill[k as usize] as usize] = p;
+            fill[k as usize] += 1;
+        }
+        let around = neighbour_cells(&cells);
+        CellGrid {
+            cell_of,
+            start,
+            members,
+            around,
         }
     }
-    cells.into_iter().take(count)
+
+    /// The points of cell `c`, ascending.
+    fn points(&self, c: u32) -> &[LocalPoint] {
+        &self.members[self.start[c as usize] as usize..self.start[c as usize + 1] as usize]
+    }
+
+    /// The non-empty cells of `p`'s neighbourhood.
+    fn cells_around(&self, p: LocalPoint) -> impl Iterator<Item = u32> + '_ {
+        self.around[self.cell_of[p.index()] as usize]
+            .into_iter()
+            .filter(|&c| c != NONE)
+    }
+}
+
+/// For every cell (numbered by its position in `cells`, all distinct), the numbers of the
+/// cells of its neighbourhood (itself and the eight around it) that are in `cells` (its own
+/// first), `NONE` for the rest. Far out (a radius tiny against the coordinates) the cell
+/// indices saturate at the ends of `i64`: the cells beside one there are those that exist,
+/// and a point's disk still lies within them, since saturation keeps indices that differ by
+/// at most one within one.
+/// The cells sorted by row and column, each row's neighbours in the rows beside it are
+/// found by one forward sweep a row: linear after the sort, where a hash lookup for each of
+/// the eight neighbours cost as much as bucketing all the points.
+fn neighbour_cells(cells: &[Cell]) -> Vec<[u32; 9]> {
+    let mut order: Vec<u32> = (0..cells.len() as u32).collect();
+    order.sort_unstable_by_key(|&k| cells[k as usize]);
+    let sorted = |i: usize| cells[order[i] as usize];
+    // The rows: runs of equal first index in the sorted order.
+    let mut rows: Vec<(i64, usize, usize)> = Vec::new();
+    for i in 0..order.len() {
+        let row = sorted(i).0;
+        match rows.last_mut() {
+            Some((r, _, end)) if *r == row => *end = i + 1,
+            _ => rows.push((row, i, i + 1)),
+        }
+    }
+    let mut around = vec![[NONE; 9]; cells.len()];
+    for (r, &(row, begin, end)) in rows.iter().enumerate() {
+        // This row and the rows just below and above, where present (saturated rows at
+        // the ends of i64 can coincide: each row is swept once).
+        let mut beside: Vec<(usize, usize)> = vec![(begin, end)];
+        for other in [r.wrapping_sub(1), r + 1] {
+            if let Some(&(o, b, e)) = rows.get(other) {
+                if o.abs_diff(row) == 1 {
+                    beside.push((b, e));
+                }
+            }
+        }
+        for &(b, e) in &beside {
+            // Sweep the other row once along this one: both are sorted by column.
+            let mut at = b;
+            for i in begin..end {
+                let (ci, cj) = sorted(i);
+                let low = cj.saturating_sub(1);
+                while at < e && sorted(at).1 < low {
+                    at += 1;
+                }
+                let mut k = at;
+                while k < e && sorted(k).1 <= cj.saturating_add(1) {
+                    let (oi, oj) = sorted(k);
+                    let slots = &mut around[order[i] as usize];
+                    if (oi, oj) == (ci, cj) {
+                        slots[0] = order[k];
+                    } else {
+                        let free = slots[1..].iter().position(|&c| c == NONE).map(|f| f + 1);
+                        if let Some(f) = free {
+                            slots[f] = order[k];
+                        }
+                    }
+                    k += 1;
+                }
+            }
+        }
+    }
+    around
+}
+
+/// Some of the points (seeds, representatives) kept as a list per cell of a [`CellGrid`].
+struct Chosen {
+    head: Vec<u32>,
+    next: Vec<u32>,
+    point: Vec<LocalPoint>,
+}
+
+impl Chosen {
+    fn new(grid: &CellGrid) -> Self {
+        Chosen {
+            head: vec![NONE; grid.around.len()],
+            next: Vec::new(),
+            point: Vec::new(),
+        }
+    }
+
+    fn push(&mut self, grid: &CellGrid, p: LocalPoint) {
+        let c = grid.cell_of[p.index()] as usize;
+        self.next.push(self.head[c]);
+        self.point.push(p);
+        self.head[c] = (self.point.len() - 1) as u32;
+    }
+
+    /// Whether a chosen point lies within `r` of point `p`.
+    fn within(&self, grid: &CellGrid, points: &[[f64; 2]], p: LocalPoint, r: f64) -> bool {
+        let x = points[p.index()];
+        grid.cells_around(p).any(|c| {
+            let mut k = self.head[c as usize];
+            while k != NONE {
+                if distance(x, points[self.point[k as usize].index()]) < r {
+                    return true;
+                }
+                k = self.next[k as usize];
+            }
+            false
+        })
+    }
 }
 
 /// The representatives of the points covered by disks of `radius` (local indices,
@@ -262,41 +423,28 @@ fn neighbourhood(c: Cell) -> impl Iterator<Item = Cell> {
 ///    than [`MIN_CLUSTER_SHARE`] of the median disk's gives none (outliers, frayed edges).
 /// 3. Candidates in seed order, each kept unless a kept one lies within half the radius:
 ///    one file of representatives along the band.
+///
+/// The points are bucketed once into a grid of side `radius` (a disk lies within its
+/// seed's cell and the eight around it); seeds and kept candidates are lists per cell.
 fn cover(points: &[[f64; 2]], radius: f64) -> Vec<LocalPoint> {
-    let cell = |p: [f64; 2]| -> Cell {
-        (
-            (p[0] / radius).floor() as i64,
-            (p[1] / radius).floor() as i64,
-        )
-    };
-    let around = neighbourhood;
-    let within = |grid: &Grid, x: [f64; 2], r: f64| -> bool {
-        around(cell(x)).any(|k| {
-            grid.get(&k)
-                .is_some_and(|list| list.iter().any(|&q| distance(x, points[q.index()]) < r))
-        })
-    };
-    let mut seeds = Grid::default();
-    let mut seed_order: Vec<LocalPoint> = Vec::new();
-    let mut all = Grid::default();
-    for (p, &x) in ids::<LocalPoint>(points.len()).zip(points) {
-        all.entry(cell(x)).or_default().push(p);
-        if !within(&seeds, x, radius) {
-            seeds.entry(cell(x)).or_default().push(p);
-            seed_order.push(p);
+    let grid = CellGrid::new(points, radius);
+    let mut seeds = Chosen::new(&grid);
+    for p in ids::<LocalPoint>(points.len()) {
+        if !seeds.within(&grid, points, p, radius) {
+            seeds.push(&grid, p);
         }
     }
+    let seed_order = &seeds.point;
     // Each seed's disk: its size and the point nearest its centroid.
     let disks = parallel::map_range(seed_order.len(), |k| {
         let o = points[seed_order[k].index()];
-        let members: Vec<LocalPoint> = around(cell(o))
-            .filter_map(|c| all.get(&c))
-            .flatten()
+        let mut sorted: Vec<LocalPoint> = grid
+            .cells_around(seed_order[k])
+            .flat_map(|c| grid.points(c))
             .copied()
             .filter(|&q| distance(o, points[q.index()]) < radius)
             .collect();
         // In local order, relative to the seed: the same sums for any input order.
-        let mut sorted = members;
         sorted.sort_unstable();
         let mut sum = [0.0f64; 2];
         for &q in &sorted {
@@ -316,15 +464,13 @@ fn cover(points: &[[f64; 2]], radius: f64) -> Vec<LocalPoint> {
     sizes.sort_unstable();
     let median = sizes.get(sizes.len() / 2).copied().unwrap_or(0);
     let least = ((MIN_CLUSTER_SHARE * median as f64).ceil() as usize).max(2);
-    let mut kept = Grid::default();
-    let mut reps = Vec::new();
+    let mut kept = Chosen::new(&grid);
     for &(count, candidate) in &disks {
-        let x = points[candidate.index()];
-        if count >= least && !within(&kept, x, 0.5 * radius) {
-            kept.entry(cell(x)).or_default().push(candidate);
-            reps.push(candidate);
+        if count >= least && !kept.within(&grid, points, candidate, 0.5 * radius) {
+            kept.push(&grid, candidate);
         }
     }
+    let mut reps = kept.point;
     reps.sort_unstable();
     reps
 }
@@ -398,18 +544,39 @@ mod tests {
     }
 
     #[test]
-    fn cells_far_out_saturate_and_are_listed_once() {
-        let corner: Vec<Cell> = neighbourhood((i64::MAX, i64::MIN)).collect();
-        assert_eq!(
-            corner,
-            [
-                (i64::MAX - 1, i64::MIN),
-                (i64::MAX - 1, i64::MIN + 1),
-                (i64::MAX, i64::MIN),
-                (i64::MAX, i64::MIN + 1)
-            ]
-        );
-        assert_eq!(neighbourhood((0, 0)).count(), 9);
+    fn cells_list_their_neighbours_once_even_where_indices_saturate() {
+        // Every cell's listed neighbours are exactly the listed cells within one row and
+        // one column of it (saturating), its own first: checked against all pairs on cells
+        // at the ends of i64 and in the middle, with gaps and rows of different lengths.
+        let (max, min) = (i64::MAX, i64::MIN);
+        let cells: Vec<Cell> = vec![
+            (max, min),
+            (max - 1, min),
+            (max - 1, min + 1),
+            (max, min + 2),
+            (0, 0),
+            (1, 1),
+            (-1, 1),
+            (0, 2),
+            (2, 0),
+            (0, -1),
+            (1, 5),
+            (0, 4),
+            (-1, 3),
+        ];
+        let around = neighbour_cells(&cells);
+        for (k, &(i, j)) in cells.iter().enumerate() {
+            assert_eq!(around[k][0], k as u32);
+            let mut listed: Vec<u32> = around[k].iter().copied().filter(|&c| c != NONE).collect();
+            listed.sort_unstable();
+            let expected: Vec<u32> = (0..cells.len() as u32)
+                .filter(|&o| {
+                    let (oi, oj) = cells[o as usize];
+                    oi.abs_diff(i) <= 1 && oj.abs_diff(j) <= 1
+                })
+                .collect();
+            assert_eq!(listed, expected, "cell {:?}", (i, j));
+        }
         // Two tight clusters 2e300 apart, a radius 1e-20 of their coordinates: every cell
         // index saturates, and each cluster is still one disk with one representative.
         let points: Vec<[f64; 2]> = (0..40)

@@ -182,10 +182,12 @@ fn swap_detours(
     let mut taken: BTreeSet<LocalPoint> = BTreeSet::new();
     let anchors = anchors(group, on_curve);
     for (i, &a) in anchors.iter().enumerate() {
-        let mut chains = chains_from(curves, a);
+        // Walked when a later anchor first asks (the last anchor of a group never does).
+        let mut chains: Option<Vec<Vec<LocalPoint>>> = None;
         let mut tree: Option<BTreeMap<LocalPoint, LocalPoint>> = None;
         for &b in &anchors[i + 1..] {
-            let Some(detour) = detour_to(&chains, b) else {
+            let walked = chains.get_or_insert_with(|| chains_from(curves, a));
+            let Some(detour) = detour_to(walked, b) else {
                 continue;
             };
             // One search from `a` serves all its pairs until a swap takes points.
@@ -204,7 +206,7 @@ fn swap_detours(
             if longest_edge_order(vor, &stretch, &detour) == std::cmp::Ordering::Less {
                 taken.extend(stretch.iter().flatten().copied());
                 curves.swap(&Swap { stretch, detour });
-                chains = chains_from(curves, a);
+                chains = Some(chains_from(curves, a));
                 *tree = bottleneck_tree(
                     &around,
                     &rank,

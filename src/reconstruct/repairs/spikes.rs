@@ -117,10 +117,11 @@ fn spike_candidate(
         [o1, o2] => (beyond(o2, o1)?, beyond(o1, o2)?),
         _ => return None,
     };
-    let chain: Vec<LocalPoint> = std::iter::once(a)
-        .chain(spike.iter().copied())
-        .chain(std::iter::once(b))
-        .collect();
+    // `a → spike → b` on the stack: this runs for every sharply turning point.
+    let mut path = [a; 4];
+    path[1..=spike.len()].copy_from_slice(spike);
+    path[spike.len() + 1] = b;
+    let chain = &path[..spike.len() + 2];
     let corners = || chain.windows(3).map(|w| [at(w[0]), at(w[1]), at(w[2])]);
     // Cheap first: most points of a curve turn by far less than a spike.
     let least = MIN_SPIKE_TURN / spike.len() as f64;
@@ -132,8 +133,10 @@ fn spike_candidate(
     let a2 = beyond(a, a1)?;
     let b1 = beyond(last, b)?;
     let b2 = beyond(b, b1)?;
-    let mut run = vec![a2, a1, b1, b2];
-    run.extend_from_slice(&chain);
+    let mut all = [a2; 8];
+    all[1..4].copy_from_slice(&[a1, b1, b2]);
+    all[4..4 + chain.len()].copy_from_slice(chain);
+    let run = &mut all[..4 + chain.len()];
     run.sort_unstable();
     if run.windows(2).any(|w| w[0] == w[1]) {
         return None;

@@ -30,8 +30,8 @@ use std::collections::{HashMap, HashSet};
 use super::delaunay_graph::{FastHash, Graph, Waiting};
 use super::lengths::distance;
 use super::thresholds::thinning::{
-    BAND_SPACINGS, COVER_RADIUS, LARGE_BAND_SPACINGS, LARGE_SAMPLE, MAX_ASPECT, MIN_CLUSTER_SHARE,
-    MIN_THINNED_POINTS, PROBES, SUBSAMPLE,
+    BAND_SPACINGS, CONFIRM_RUNGS, COVER_RADIUS, LARGE_BAND_SPACINGS, LARGE_SAMPLE, MAX_ASPECT,
+    MIN_CLUSTER_SHARE, MIN_THINNED_POINTS, PROBES, QUIET_SPACINGS, SUBSAMPLE,
 };
 use crate::delaunay::Triangulation;
 use crate::ids::{ids, LocalPoint};
@@ -85,13 +85,15 @@ fn band_noise(tri: &Triangulation) -> Noise {
     let n = tri.points.len();
     let rate = n.div_ceil(SUBSAMPLE).max(1);
     let subsample;
+    // The full set's local index of each subsample point (by the subsample's input index).
+    let mut kept_ids: Vec<LocalPoint> = Vec::new();
     let (probed, graph) = if rate == 1 {
         (tri, Graph::adjacency(tri))
     } else {
-        let kept: Vec<[f64; 2]> = (0..n as u64)
-            .filter(|&i| mix(i) % rate as u64 == 0)
-            .map(|i| tri.points[i as usize])
+        kept_ids = ids::<LocalPoint>(n)
+            .filter(|p| mix(p.get() as u64) % rate as u64 == 0)
             .collect();
+        let kept: Vec<[f64; 2]> = kept_ids.iter().map(|p| tri.points[p.index()]).collect();
         subsample = match crate::delaunay::triangulate(&kept) {
             Ok(sub) if !sub.is_degenerate() => sub,
             _ => return Noise::Neither,
@@ -107,18 +109,41 @@ fn band_noise(tri: &Triangulation) -> Noise {
     };
     let stride = m.div_ceil(PROBES).max(1);
     let probes = m.div_ceil(stride);
-    let turns = parallel::map_range(probes, |i| {
-        turn(probed, &graph, LocalPoint::new((i * stride) as u32))
-    });
-    let mut banded: Vec<f64> = turns
-        .iter()
-        .flatten()
-        .filter(|t| {
-            // The spacing along the curve of all the points, not only the subsample's.
-            let spacing = 2.0 * t.radius / (t.size * rate) as f64;
-            t.deviation >= threshold * spacing
+    let probe = |i: usize| LocalPoint::new((i * stride) as u32);
+    let turns = parallel::map_range(probes, |i| turn(probed, &graph, probe(i)));
+    let banded_at: Vec<usize> = (0..probes)
+        .filter(|&i| {
+            turns[i].as_ref().is_some_and(|t| {
+                // The spacing along the curve of all the points, not only the subsample's.
+                let spacing = 2.0 * t.radius / (t.size * rate) as f64;
+                t.deviation >= threshold * spacing
+            })
         })
-        .map(|t| t.deviation)
+        .collect();
+    // A subsample's neighbourhood spans `rate` times more curve than the same number of all
+    // the points, and on a curved stretch its deviation is the arc's sagitta, not noise: clean
+    // curves of 200 000 and 10^6 points read as bands. A subsample probe counts for the band
+    // only where all the points around it do not turn thin, within CONFIRM_RUNGS of the
+    // ladder, with a deviation under QUIET_SPACINGS of their spacing (a band too wide to
+    // turn thin that soon is confirmed as it was read).
+    let banded_at = if rate == 1 || 2 * banded_at.len() < probes {
+        banded_at
+    } else {
+        let quiet = parallel::map_range(banded_at.len(), |k| {
+            let at = kept_ids[probed.input_index(probe(banded_at[k])) as usize];
+            turn_in_order(&tri.points, at)
+                .is_some_and(|t| t.deviation < QUIET_SPACINGS * (2.0 * t.radius / t.size as f64))
+        });
+        banded_at
+            .iter()
+            .zip(quiet)
+            .filter(|&(_, quiet)| !quiet)
+            .map(|(&i, _)| i)
+            .collect()
+    };
+    let mut banded: Vec<f64> = banded_at
+        .iter()
+        .filter_map(|&i| turns[i].as_ref().map(|t| t.deviation))
         .collect();
     if 2 * banded.len() < probes {
         let never_thin = turns.iter().filter(|t| t.is_none()).count();
@@ -150,8 +175,8 @@ struct Turn {
     deviation: f64,
 }
 
-/// Where the neighbourhood of `p` turns thin; `None` if none up to the ladder's last size
-/// is.
+/// Where the neighbourhood of `p` (its Delaunay neighbours, nearest first) turns thin;
+/// `None` if none up to the ladder's last size is.
 fn turn(tri: &Triangulation, graph: &Graph, p: LocalPoint) -> Option<Turn> {
     let o = tri.points[p.index()];
     let mut seen: HashSet<LocalPoint, FastHash> = HashSet::default();
@@ -161,10 +186,49 @@ fn turn(tri: &Triangulation, graph: &Graph, p: LocalPoint) -> Option<Turn> {
         seen.insert(q);
         waiting.push(Waiting(distance(o, tri.points[q.index()]), q));
     }
+    let nearest_first = std::iter::from_fn(|| {
+        let Waiting(d, q) = waiting.pop()?;
+        for &w in graph.of(q) {
+            if seen.insert(w) {
+                waiting.push(Waiting(distance(o, tri.points[w.index()]), w));
+            }
+        }
+        Some((d, tri.points[q.index()]))
+    });
+    first_thin(o, nearest_first, LADDER.len())
+}
+
+/// Where the neighbourhood of `p` turns thin within the ladder's first [`CONFIRM_RUNGS`]
+/// sizes, its neighbours taken nearest first from the points within twice the last size of
+/// it in the locality order (no Delaunay graph of all the points: building one cost as much
+/// as the rest of the band test). The locality order keeps near points near, so these are
+/// points around `p`; on a curve any of them lie on the curve and the neighbourhood is thin
+/// from the start, in a band they fill a patch of it.
+fn turn_in_order(points: &[[f64; 2]], p: LocalPoint) -> Option<Turn> {
+    let o = points[p.index()];
+    let reach = 2 * LADDER[CONFIRM_RUNGS - 1];
+    let (low, high) = (
+        p.index().saturating_sub(reach),
+        (p.index() + reach + 1).min(points.len()),
+    );
+    let mut near: Vec<(f64, usize)> = (low..high)
+        .filter(|&i| i != p.index())
+        .map(|i| (distance(o, points[i]), i))
+        .collect();
+    near.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+    first_thin(o, near.iter().map(|&(d, i)| (d, points[i])), CONFIRM_RUNGS)
+}
+
+/// Where a neighbourhood of `o`, given nearest first as (distance, point), turns thin; `None`
+/// if none of the ladder's first `rungs` sizes is.
+fn first_thin(
+    o: [f64; 2],
+    nearest_first: impl Iterator<Item = (f64, [f64; 2])>,
+    rungs: usize,
+) -> Option<Turn> {
     let mut moments = Moments::default();
     let mut rung = 0;
-    while let Some(Waiting(d, q)) = waiting.pop() {
-        let x = tri.points[q.index()];
+    for (d, x) in nearest_first {
         moments.add([x[0] - o[0], x[1] - o[1]]);
         if moments.count == LADDER[rung] {
             let (small, large) = moments.principal();
@@ -176,13 +240,8 @@ fn turn(tri: &Triangulation, graph: &Graph, p: LocalPoint) -> Option<Turn> {
                 });
             }
             rung += 1;
-            if rung == LADDER.len() {
+            if rung == rungs {
                 return None;
-            }
-        }
-        for &w in graph.of(q) {
-            if seen.insert(w) {
-                waiting.push(Waiting(distance(o, tri.points[w.index()]), w));
             }
         }
     }

@@ -31,7 +31,7 @@ use super::delaunay_graph::{FastHash, Graph, Waiting};
 use super::lengths::distance;
 use super::thresholds::thinning::{
     BAND_SPACINGS, CONFIRM_RUNGS, COVER_RADIUS, LARGE_BAND_SPACINGS, LARGE_SAMPLE, MAX_ASPECT,
-    MIN_CLUSTER_SHARE, MIN_THINNED_POINTS, PROBES, QUIET_SPACINGS, SUBSAMPLE,
+    MIN_CLUSTER_SHARE, MIN_THINNED_POINTS, PROBES, QUIET_SPACINGS, RECENTRINGS, SUBSAMPLE,
 };
 use crate::delaunay::Triangulation;
 use crate::ids::{ids, LocalPoint};
@@ -476,10 +476,12 @@ impl Chosen {
 /// 1. Seeds, greedily in local order: a point becomes a seed when no seed lies within
 ///    `radius`.
 /// 2. Each seed's disk: the point nearest the centroid of the points within `radius` of the
-///    seed. The centroid of a disk that spans the band lies near its middle, wherever in
-///    the band the seed was; so two seeds side by side across the band (they can be, in a
-///    band wider than `radius`) give candidates close together. A disk with fewer points
-///    than [`MIN_CLUSTER_SHARE`] of the median disk's gives none (outliers, frayed edges).
+///    seed; then, [`RECENTRINGS`] times, the point nearest the centroid of the disk around
+///    that point. The centroid of a disk that spans the band lies near its middle, wherever
+///    in the band the seed was, and nearer it once re-centred; so two seeds side by side
+///    across the band (they can be, in a band wider than `radius`) give candidates close
+///    together. A seed's disk with fewer points than [`MIN_CLUSTER_SHARE`] of the median
+///    disk's gives none (outliers, frayed edges).
 /// 3. Candidates in seed order, each kept unless a kept one lies within half the radius:
 ///    one file of representatives along the band.
 ///
@@ -495,10 +497,12 @@ fn cover(points: &[[f64; 2]], radius: f64) -> Vec<LocalPoint> {
     }
     let seed_order = &seeds.point;
     // Each seed's disk: its size and the point nearest its centroid.
-    let disks = parallel::map_range(seed_order.len(), |k| {
-        let o = points[seed_order[k].index()];
+    // The disk of radius `radius` around point `at`: its size and the point nearest its
+    // centroid.
+    let disk = |at: LocalPoint| -> (usize, LocalPoint) {
+        let o = points[at.index()];
         let mut sorted: Vec<LocalPoint> = grid
-            .cells_around(seed_order[k])
+            .cells_around(at)
             .flat_map(|c| grid.points(c))
             .copied()
             .filter(|&q| distance(o, points[q.index()]) < radius)
@@ -516,7 +520,16 @@ fn cover(points: &[[f64; 2]], radius: f64) -> Vec<LocalPoint> {
             .iter()
             .map(|&q| (distance(centroid, points[q.index()]), q))
             .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)))
-            .map_or(seed_order[k], |(_, q)| q);
+            .map_or(at, |(_, q)| q);
+        (count, nearest)
+    };
+    // The seed's disk counts; its candidate comes from the disk re-centred on the point
+    // nearest its centroid (RECENTRINGS times): a mean-shift step toward the band's middle.
+    let disks = parallel::map_range(seed_order.len(), |k| {
+        let (count, mut nearest) = disk(seed_order[k]);
+        for _ in 0..RECENTRINGS {
+            nearest = disk(nearest).1;
+        }
         (count, nearest)
     });
     let mut sizes: Vec<usize> = disks.iter().map(|d| d.0).collect();

@@ -74,6 +74,31 @@ fn clean_samples_give_no_warning() {
 }
 
 #[test]
+fn clean_curves_at_random_positions_give_no_warning() {
+    // Uniformly random positions along a 5-lobed star: somewhere a gap several mean steps
+    // long lies beside four short ones, about once in 200 edges. Such gaps are the curve,
+    // not chords: they were warned `long-edge` at 56 edges here.
+    for (seed, n) in [(61, 30_000), (62, 8000)] {
+        let mut rng = Rng::new(seed);
+        let points: Vec<[f64; 2]> = (0..n)
+            .map(|_| {
+                let t = rng.range(0.0, TAU);
+                let r = 1.0 + 0.3 * (5.0 * t).cos();
+                [r * t.cos(), r * t.sin()]
+            })
+            .collect();
+        let rec = reconstruct(&points).unwrap();
+        assert_eq!(rec.curves().len(), 1, "{n} points");
+        assert!(rec.curves()[0].closed);
+        assert!(
+            rec.warnings().is_empty(),
+            "{n} points: {:?}",
+            rec.warnings()
+        );
+    }
+}
+
+#[test]
 fn bundled_examples_and_well_sampled_real_sets_give_no_warning() {
     for path in [
         "examples/data/bean.txt",

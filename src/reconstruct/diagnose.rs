@@ -29,6 +29,7 @@ use super::proximity::closer;
 use super::result::{Reconstruction, Warning, WarningCode};
 use super::thresholds::warnings::{
     CLOSE_CURVE_STEPS, CLOSE_ENDS_DOUBLINGS, GAP_EDGE_DOUBLINGS, LONG_EDGE_DOUBLINGS,
+    LONG_EDGE_OUTLIER_DOUBLINGS,
 };
 use crate::delaunay::{triangulate, NO_TWIN};
 use crate::ids::LocalPoint;
@@ -372,6 +373,7 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
         let edge = |k: usize| [curve[k % n], curve[(k + 1) % n]];
         let edges = if closed { n } else { n - 1 };
         let mut long_here = vec![false; edges];
+        let mut ratios = vec![0.0; edges];
         for (k, flagged) in long_here.iter_mut().enumerate() {
             let ab = edge(k);
             // Up to two curve edges on each side; at a chain's end, the end's
@@ -409,7 +411,20 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
             }
             *flagged = true;
             let side = beside.iter().map(|&f| length(f)).fold(0.0, f64::max);
-            note(&mut long, length(ab) / side, ab.map(|p| tri.input_index(p)));
+            ratios[k] = length(ab) / side;
+        }
+        // Random positions put gaps far longer than their neighbours here and there (a
+        // long gap beside four short ones); a chord is also far longer than the curve's
+        // longest ordinary edge, as the open-curve stage's chords are.
+        let ordinary = (0..edges)
+            .filter(|&k| !long_here[k])
+            .max_by(|&i, &j| length(edge(i)).total_cmp(&length(edge(j))));
+        for k in 0..edges {
+            if long_here[k]
+                && ordinary.is_none_or(|o| longer(edge(k), edge(o), LONG_EDGE_OUTLIER_DOUBLINGS))
+            {
+                note(&mut long, ratios[k], edge(k).map(|p| tri.input_index(p)));
+            }
         }
         // A loop whose longest edge is far longer than every other one: an open curve whose
         // ends were joined.

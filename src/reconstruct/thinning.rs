@@ -68,7 +68,13 @@ pub(super) fn read(tri: &Triangulation) -> Reading {
     if !(radius.is_finite() && radius > 0.0) {
         return Reading::Neither;
     }
-    Reading::Band(cover(&tri.points, radius))
+    let representatives = cover(&tri.points, radius);
+    // A radius under the spacing leaves every disk one point, and no disk is kept: reading
+    // such a sample as a band would return no curve at all.
+    if representatives.len() < 3 {
+        return Reading::Neither;
+    }
+    Reading::Band(representatives)
 }
 
 /// The noise of a band, or what else the probes saw.
@@ -596,6 +602,15 @@ mod tests {
             .sum::<f64>()
             / reps.len() as f64;
         assert!(off.sqrt() < 0.7 * 0.03, "RMS {} off the circle", off.sqrt());
+    }
+
+    #[test]
+    fn a_cover_finer_than_the_spacing_keeps_no_representative() {
+        // Points a unit apart, disks of half a unit: each holds its seed alone, the median
+        // disk one point, and none is kept (which `read` takes for no band).
+        let points: Vec<[f64; 2]> = (0..500).map(|k| [k as f64, (k % 2) as f64 * 0.1]).collect();
+        assert!(cover(&points, 0.5).is_empty());
+        assert!(!cover(&points, 3.0).is_empty());
     }
 
     #[test]

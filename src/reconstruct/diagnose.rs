@@ -266,6 +266,22 @@ impl Survey {
         }
         let mut crowded = vec![false; n];
         let (mut close_pairs, mut first_close) = (0usize, None::<[u32; 2]>);
+        // Two curve points as close as both their longer curve edges, on different curves
+        // or far apart along one.
+        let mut close = |a: LocalPoint, b: LocalPoint| {
+            if view
+                .steps_apart(a, b)
+                .is_none_or(|steps| steps > CLOSE_CURVE_STEPS)
+            {
+                close_pairs += 1;
+                let (i, j) = (tri.input_index(a), tri.input_index(b));
+                let named = [i.min(j), i.max(j)];
+                if first_close.is_none_or(|f| named < f) {
+                    first_close = Some(named);
+                }
+            }
+        };
+        let mut skipped: Vec<(LocalPoint, LocalPoint)> = Vec::new();
         let halfedges = tri.halfedges();
         for (e, &twin) in tri.halfedge_ids().zip(halfedges) {
             if twin != NO_TWIN && twin < e {
@@ -303,15 +319,25 @@ impl Survey {
             }
             crowded[a.index()] |= a_within;
             crowded[b.index()] |= b_within;
-            let far_apart = view
-                .steps_apart(a, b)
-                .is_none_or(|steps| steps > CLOSE_CURVE_STEPS);
-            if a_within && b_within && far_apart {
-                close_pairs += 1;
-                let (i, j) = (tri.input_index(a), tri.input_index(b));
-                let named = [i.min(j), i.max(j)];
-                if first_close.is_none_or(|f| named < f) {
-                    first_close = Some(named);
+            // A point on no curve within the longer curve edge of a curve point: a sample
+            // the curves may have skipped there.
+            for (u, p, p_within) in [(a, b, b_within), (b, a, a_within)] {
+                if p_within && far[u.index()] == NO_POINT && far[p.index()] != NO_POINT {
+                    skipped.push((u, p));
+                }
+            }
+            if a_within && b_within {
+                close(a, b);
+            }
+        }
+        // Two curve points within their longer curve edges of one skipped sample are as
+        // close as the curves come there: two walls a few spacings apart whose corridor
+        // the flow closed across, leaving the samples between on no curve.
+        skipped.sort_unstable();
+        for run in skipped.chunk_by(|x, y| x.0 == y.0) {
+            for (k, &(_, p)) in run.iter().enumerate() {
+                for &(_, q) in &run[k + 1..] {
+                    close(p, q);
                 }
             }
         }

@@ -213,7 +213,7 @@ fn two_circles_one_spacing_apart_are_too_close() {
 }
 
 /// `n` points evenly spaced along the closed polygon `corners`, the first `phase` of a step
-/// past the first corner.
+/// past the first corner: unlike `DenseCurve::polyline`, the corners need not be samples.
 fn around(corners: &[[f64; 2]], n: usize, phase: f64) -> Vec<[f64; 2]> {
     let k = corners.len();
     let length = |i: usize| {

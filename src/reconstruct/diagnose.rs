@@ -442,9 +442,10 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
         // Random positions put gaps far longer than their neighbours here and there (a
         // long gap beside four short ones); a chord is also far longer than the curve's
         // longest ordinary edge, as the open-curve stage's chords are.
-        let ordinary = (0..edges)
-            .filter(|&k| !long_here[k])
-            .max_by(|&i, &j| length(edge(i)).total_cmp(&length(edge(j))));
+        let ordinary = (0..edges).filter(|&k| !long_here[k]).max_by(|&i, &j| {
+            let ([a, b], [c, d]) = (edge(i), edge(j));
+            length_order(at(a), at(b), at(c), at(d))
+        });
         for k in 0..edges {
             if long_here[k]
                 && ordinary.is_none_or(|o| longer(edge(k), edge(o), LONG_EDGE_OUTLIER_DOUBLINGS))

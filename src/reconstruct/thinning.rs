@@ -319,21 +319,15 @@ impl CellGrid {
         let mut number: HashMap<Cell, u32, FastHash> = HashMap::default();
         let mut cells: Vec<Cell> = Vec::new();
         let mut count: Vec<u32> = Vec::new();
-        // Points in locality order often share the cell of the point before.
-        let mut last: Option<(Cell, u32)> = None;
         let cell_of: Vec<u32> = points
             .iter()
             .map(|&x| {
                 let c = cell(x);
-                let k = match last {
-                    Some((seen, k)) if seen == c => k,
-                    _ => *number.entry(c).or_insert_with(|| {
-                        cells.push(c);
-                        count.push(0);
-                        (cells.len() - 1) as u32
-                    }),
-                };
-                last = Some((c, k));
+                let k = *number.entry(c).or_insert_with(|| {
+                    cells.push(c);
+                    count.push(0);
+                    (cells.len() - 1) as u32
+                });
                 count[k as usize] += 1;
                 k
             })

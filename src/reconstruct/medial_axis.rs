@@ -45,8 +45,9 @@
 //!
 //!    (`η_u` the largest noise amplitude, estimated from the curve samples alone by
 //!    [`noise`], among the points of `u`'s face; [`NOISE_TOLERANCE`], [`NOISE_RADIUS_RATIO`]).
-//!    A *clean* leaf, one whose face's samples do not zig-zag (see "Clean leaves" below),
-//!    is tested at `θ` = [`CLEAN_PRUNE_ANGLE_DEGREES`] (30°) instead, without the slack.
+//!    A *clean* leaf, one whose face's samples do not zig-zag on a loop that does not
+//!    (see "Clean leaves" below), is tested at `θ` = [`CLEAN_PRUNE_ANGLE_DEGREES`] (20°)
+//!    instead, without the slack.
 //!    A noisy leaf whose samples spread wide for its ball and their noise
 //!    (`λ² ≥ k·r_u·η_u`, `λ` half the longest side of its triangle, `k` =
 //!    [`SPREAD_SIGNIFICANCE`]) is never covered (see "Spread" below).
@@ -88,7 +89,7 @@
 //! At 45° with the slack the superellipse's corners keep more (trunk gap 4.5 % instead of
 //! 6.4 %, still not 3 %) but whiskers come back at 0.3 × the spacing (8 of 12 trials of
 //! the two shapes within 3 % at `k = 8`, 10 of 12 at `k = 14`), so 60° stays for leaves
-//! on noisy samples and clean ones get 30° ("Clean leaves" below). (Also measured and left: a second, wider
+//! on noisy samples and clean ones get 20° ("Clean leaves" below). (Also measured and left: a second, wider
 //! angle for branches bounded by at most 4–6 curve edges removed the star's whiskers but cut
 //! the smooth ends of sparse clean samples, which have that few samples there.)
 //!
@@ -152,8 +153,11 @@
 //!
 //! At 60° the rounded corners of a superellipse (p = 4) lose their branches where the
 //! object angle falls below 60° while the radius is still large: the clean trunk gap was
-//! 6.4 % of the diameter; at 45° 4.5 %, at 30° 2.5 %. Smaller angles let whiskers through
-//! on noise, so the smaller angle is given only where there is no noise to grow one.
+//! 6.4 % of the diameter; at 45° 4.5 %, at 30° 2.5 %, at 20° 2.5 %. Random Fourier blobs
+//! evenly sampled without noise carry branches into broad lobes whose object angle falls
+//! under 30° while their balls are still large: at 30° they lost up to 5.5 % of the
+//! diameter of their trunk, at 20° 1.9 % (thresholds module). Smaller angles let whiskers
+//! through on noise, so the smaller angle is given only where there is no noise to grow one.
 //! `η` cannot tell that: it reads the quickly changing curvature of sparse clean corners
 //! as noise. [`noise::loop_estimates`] can: a smooth curve bends one way between
 //! inflections, so consecutive offsets of the samples from their neighbours' chords keep
@@ -161,8 +165,15 @@
 //! them anticorrelated (about `σ / spacing`). A leaf is clean when the oscillation at each
 //! of its face's points is below [`CLEAN_OSCILLATION`] = 0.02, about that of noise of
 //! 0.02 × the spacing; a whisker needs noise, so its leaf is never clean, and a branch of a
-//! clean leaf is a branch of the shape, kept down to 30°. Clean leaves get no slack either
+//! clean leaf is a branch of the shape, kept down to 20°. Clean leaves get no slack either
 //! (there is no noise to tolerate).
+//!
+//! Noise of 0.1 × the spacing leaves a stretch of a few samples whose offsets happen to keep
+//! their sign: read face by face, its leaves were clean and a whisker there was kept at the
+//! clean angle (a sparse 3-armed star grew one of 8.6 % of the diameter). Noise is a property
+//! of the scan, so a loop whose median oscillation reaches the threshold (half its samples
+//! zig-zag) is noisy at every point; a clean loop keeps its clean points clean beside a
+//! noisy stretch.
 //!
 //! Measured on the six shapes (`tests/medial_axis.rs`): the threshold at 0.015, 0.02 and
 //! 0.03 leaves every noisy row as it was in every digit and takes the clean superellipse's
@@ -296,8 +307,8 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&LocalCurve], frame: Frame) -> MedialA
 /// The pruning's noise amplitudes are read off the samples, not off the fitted positions:
 /// a fitted loop's error is smooth along it (each vertex is fitted to much the same samples
 /// as its neighbours), so the estimate, which reads the disagreement of neighbouring
-/// curvatures, finds almost none, and the fitted loop was pruned as a clean one, at 30°
-/// with no slack for the bumps its fit left (whiskers up to 28 % of the diameter on noisy
+/// curvatures, finds almost none, and the fitted loop was pruned as a clean one, at the
+/// clean angle with no slack for the bumps its fit left (whiskers up to 28 % of the diameter on noisy
 /// blobs at 0.3 × the spacing).
 pub(super) fn fitted_medial_axis(
     curves: &[LocalCurve],
@@ -390,8 +401,9 @@ fn axis_through(
 
 /// The noise amplitude ([`noise::loop_estimates`]) at every point of `loops` (local
 /// indices of `points`), by local index, negated (its sign bit set, `-0.0` too) where the
-/// samples zig-zag: oscillation at least [`CLEAN_OSCILLATION`]. One `f32` per point, as
-/// before the oscillation was read (the memory peak).
+/// samples zig-zag: oscillation at least [`CLEAN_OSCILLATION`] at the point, or in the
+/// median over its loop (a noisy loop has stretches that look clean by chance). One `f32`
+/// per point, as before the oscillation was read (the memory peak).
 fn noise_at_points(loops: &[&LocalCurve], points: &[[f64; 2]]) -> Vec<f32> {
     let mut noise = vec![0.0f32; points.len()];
     for c in loops {
@@ -409,8 +421,12 @@ fn noise_at_points(loops: &[&LocalCurve], points: &[[f64; 2]]) -> Vec<f32> {
                 };
             });
         });
+        // The loop's median oscillation reaches the threshold when at least half its
+        // points do.
+        let zigzagging = along.iter().filter(|a| a.is_sign_negative()).count();
+        let noisy_loop = zigzagging >= n - n / 2;
         for (&p, value) in c.points.iter().zip(along) {
-            noise[p.index()] = value;
+            noise[p.index()] = if noisy_loop { -value.abs() } else { value };
         }
     }
     noise
@@ -888,6 +904,39 @@ mod tests {
             }
         }
         assert!(beyond > 50 && on > 50, "{beyond} beyond, {on} on the edge");
+    }
+
+    /// A loop whose samples mostly zig-zag is noisy everywhere, even along a stretch that
+    /// looks clean (there a whisker would be pruned at the clean angle); a loop that mostly
+    /// does not keeps its clean points clean beside a noisy stretch.
+    #[test]
+    fn a_loop_is_noisy_everywhere_when_most_of_it_zigzags() {
+        let mut rng = Rng::new(5);
+        let n = 400;
+        let spacing = std::f64::consts::TAU / n as f64;
+        let curve = LocalCurve {
+            closed: true,
+            points: (0..n as u32).map(LocalPoint::new).collect(),
+        };
+        for (noisy_share, loop_noisy) in [(0.75, true), (0.25, false)] {
+            let cut = (noisy_share * n as f64) as usize;
+            let points: Vec<[f64; 2]> = (0..n)
+                .map(|i| {
+                    let t = i as f64 * spacing;
+                    let f = if i < cut { 0.3 * spacing } else { 0.0 };
+                    [t.cos() + f * rng.normal(), t.sin() + f * rng.normal()]
+                })
+                .collect();
+            let noise = noise_at_points(&[&curve], &points);
+            let zigzag = |range: std::ops::Range<usize>| {
+                noise[range].iter().filter(|a| a.is_sign_negative()).count()
+            };
+            // Away from where the stretches meet (the estimates read 3 samples either side).
+            let (noisy, clean) = (8..cut - 8, cut + 8..n - 8);
+            assert!(zigzag(noisy.clone()) > noisy.len() / 2, "{noisy_share}");
+            let expected = if loop_noisy { clean.len() } else { 0 };
+            assert_eq!(zigzag(clean), expected, "{noisy_share}");
+        }
     }
 
     /// `curves` (caller indices) in the local indices of `tri`, as the pipeline hands

@@ -10,18 +10,29 @@ use super::NEIGHBOURHOOD;
 use crate::prefetch::prefetch;
 use crate::reconstruct::bits::Bits;
 
+/// Where a ball a leaf is tested against lies, and what the leaf's branch cuts off.
+#[derive(Clone, Copy)]
+pub(super) struct Reach {
+    /// The ball is the junction its branch ends at, or beyond it in the tree (not a ball of
+    /// the leaf's own branch).
+    pub(super) past_junction: bool,
+    /// Curve samples on the leaf's side of the Delaunay edge dual to its remaining axis
+    /// edge (saturating at `u8::MAX`; a merged face counts as a triangle).
+    pub(super) samples_cut_off: u8,
+}
+
 /// Takes leaves off the graph of `vertices` vertices and `edges`, smallest number first,
 /// and returns what remains. A leaf `u` goes when `beyond(u)`, or, unless `stays(u)`, when
-/// `covers(w, u)` for a vertex `w` of its neighbourhood ([`Tree::neighbourhood_test`]); the
-/// last edge of a component stays; a leaf whose test fails is tested again when its branch
-/// grows (one that stays is not: nothing can change its answer).
-/// `fetch(w)` asks for what `covers(w, _)` will read of `w` ([`Lookahead`]).
+/// `covers(w, u, reach)` for a vertex `w` of its neighbourhood
+/// ([`Tree::neighbourhood_test`]); the last edge of a component stays; a leaf whose test
+/// fails is tested again when its branch grows (one that stays is not: nothing can change
+/// its answer). `fetch(w)` asks for what `covers(w, ..)` will read of `w` ([`Lookahead`]).
 pub(super) fn prune(
     vertices: usize,
     edges: Vec<[u32; 2]>,
     beyond: impl Fn(u32) -> bool,
     stays: impl Fn(u32) -> bool,
-    covers: impl Fn(u32, u32) -> bool,
+    covers: impl Fn(u32, u32, Reach) -> bool,
     fetch: impl Fn(u32),
 ) -> Tree {
     let mut tree = Tree::new(vertices, &edges);
@@ -34,6 +45,10 @@ pub(super) fn prune(
         (0..vertices as u32).filter(|&v| tree.degree(v) == 1),
     );
     let mut lookahead = Lookahead::default();
+    // Each vertex is a triangle of the region: as a leaf it cuts off its third corner and
+    // what the neighbours taken off it had cut off. One byte a vertex: only small counts
+    // are read.
+    let mut cut_off = vec![1u8; vertices];
     while let Some(u) = leaves.pop() {
         lookahead.advance(u, &leaves.waiting, |leaf| {
             if let Some(w) = tree.around(leaf).next() {
@@ -52,7 +67,15 @@ pub(super) fn prune(
             if stays(u) {
                 continue;
             }
-            match tree.neighbourhood_test(u, &mut queue, |w| covers(w, u)) {
+            let samples_cut_off = cut_off[u as usize];
+            let test = tree.neighbourhood_test(u, &mut queue, |w, past_junction| {
+                let reach = Reach {
+                    past_junction,
+                    samples_cut_off,
+                };
+                covers(w, u, reach)
+            });
+            match test {
                 Test::Covered => {}
                 Test::Uncovered { junction } => {
                     if let Some(j) = junction {
@@ -63,6 +86,7 @@ pub(super) fn prune(
             }
         }
         tree.remove(u, v);
+        cut_off[v as usize] = cut_off[v as usize].saturating_add(cut_off[u as usize]);
         match tree.degree(v) {
             1 => leaves.push(v),
             // A junction became a path vertex: the branches that ended at it grew, and
@@ -234,17 +258,19 @@ impl Tree {
     /// nearly always covers, and the walk is then a step or two (the whole neighbourhood,
     /// visited for every leaf, was most of the run at 10^6 points: cache misses). When
     /// nothing covers, the junction its branch reached (if any) is returned: the leaf is
-    /// tested again when that junction becomes a path vertex ([`Waiting`]).
+    /// tested again when that junction becomes a path vertex ([`Waiting`]). `hit` is told
+    /// whether the vertex is the junction or beyond it.
     fn neighbourhood_test(
         &self,
         u: u32,
         queue: &mut VecDeque<(u32, u32)>,
-        mut hit: impl FnMut(u32) -> bool,
+        mut hit: impl FnMut(u32, bool) -> bool,
     ) -> Test {
         let mut count = 0;
         let (mut before, mut last) = (u, None);
         for v in self.branch(u).take(NEIGHBOURHOOD) {
-            if hit(v) {
+            // The branch ends at the first vertex not of degree 2.
+            if hit(v, self.degree(v) != 2) {
                 return Test::Covered;
             }
             count += 1;
@@ -269,7 +295,7 @@ impl Tree {
                     return uncovered;
                 }
                 if w != parent {
-                    if hit(w) {
+                    if hit(w, true) {
                         return Test::Covered;
                     }
                     count += 1;

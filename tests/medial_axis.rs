@@ -540,14 +540,11 @@ fn noise_of_three_tenths_of_the_spacing() {
     }
 }
 
-/// Random Fourier blobs: broad lobes whose branches have an object angle under 60° all
-/// along and whose tip balls stick out of their junction's by under twice the noise; the
-/// spread of their samples keeps them (a trunk gap of 14 % of the diameter without it).
-#[test]
-fn broad_lobes_of_noisy_blobs_keep_their_branches() {
-    let mut rng = Rng::new(11);
+/// Six random Fourier blobs drawn from `seed`.
+fn random_blobs(seed: u64) -> Vec<Shape> {
+    let mut rng = Rng::new(seed);
     let names = ["blob 1", "blob 2", "blob 3", "blob 4", "blob 5", "blob 6"];
-    let blobs = names
+    names
         .into_iter()
         .map(|name| Shape {
             name,
@@ -555,8 +552,15 @@ fn broad_lobes_of_noisy_blobs_keep_their_branches() {
             regions: 1,
             holes: 0,
         })
-        .collect();
-    let rows = measure_on(blobs, Input::Noisy(0.1), 4, 2);
+        .collect()
+}
+
+/// Random Fourier blobs: broad lobes whose branches have an object angle under 60° all
+/// along and whose tip balls stick out of their junction's by under twice the noise; the
+/// spread of their samples keeps them (a trunk gap of 14 % of the diameter without it).
+#[test]
+fn broad_lobes_of_noisy_blobs_keep_their_branches() {
+    let rows = measure_on(random_blobs(11), Input::Noisy(0.1), 4, 2);
     check(
         &rows,
         &Expect {
@@ -574,18 +578,7 @@ fn broad_lobes_of_noisy_blobs_keep_their_branches() {
 /// to 5.5 %).
 #[test]
 fn clean_blobs_keep_their_broad_lobes() {
-    let mut rng = Rng::new(101);
-    let names = ["blob 1", "blob 2", "blob 3", "blob 4", "blob 5", "blob 6"];
-    let blobs = names
-        .into_iter()
-        .map(|name| Shape {
-            name,
-            curves: vec![FourierBlob::random(&mut rng).dense(DENSE)],
-            regions: 1,
-            holes: 0,
-        })
-        .collect();
-    let rows = measure_on(blobs, Input::Noisy(0.0), 4, 102);
+    let rows = measure_on(random_blobs(101), Input::Noisy(0.0), 4, 102);
     check(
         &rows,
         &Expect {

@@ -327,8 +327,8 @@ fn subset_axis(vor: Voronoi<'_>, loops: &[&LocalCurve], frame: Frame) -> MedialA
 /// a fitted loop's error is smooth along it (each vertex is fitted to much the same samples
 /// as its neighbours), so the estimate, which reads the disagreement of neighbouring
 /// curvatures, finds almost none, and the fitted loop was pruned as a clean one, at the
-/// clean angle with no slack for the bumps its fit left (whiskers up to 28 % of the diameter on noisy
-/// blobs at 0.3 × the spacing).
+/// clean angle with no slack for the bumps its fit left (whiskers up to 28 % of the
+/// diameter on noisy blobs at 0.3 × the spacing).
 pub(super) fn fitted_medial_axis(
     curves: &[LocalCurve],
     at: impl Fn(LocalPoint) -> [f64; 2],

@@ -121,8 +121,7 @@ fn band_noise(tri: &Triangulation) -> Noise {
         .filter(|&i| {
             turns[i].as_ref().is_some_and(|t| {
                 // The spacing along the curve of all the points, not only the subsample's.
-                let spacing = 2.0 * t.radius / (t.size * rate) as f64;
-                t.deviation >= threshold * spacing
+                t.deviation >= threshold * t.spacing(rate)
             })
         })
         .collect();
@@ -138,7 +137,7 @@ fn band_noise(tri: &Triangulation) -> Noise {
         let quiet = parallel::map_range(banded_at.len(), |k| {
             let at = kept_ids[probed.input_index(probe(banded_at[k])) as usize];
             turn_in_order(&tri.points, at)
-                .is_some_and(|t| t.deviation < QUIET_SPACINGS * (2.0 * t.radius / t.size as f64))
+                .is_some_and(|t| t.deviation < QUIET_SPACINGS * t.spacing(1))
         });
         banded_at
             .iter()
@@ -179,6 +178,15 @@ struct Turn {
     radius: f64,
     /// Its smaller principal deviation: the noise across the curve.
     deviation: f64,
+}
+
+impl Turn {
+    /// The spacing along the curve of the points the neighbourhood was drawn from, when
+    /// it holds one in every `rate` of them (a subsample's neighbourhood spans `rate` times
+    /// more curve than as many of all the points).
+    fn spacing(&self, rate: usize) -> f64 {
+        2.0 * self.radius / (self.size * rate) as f64
+    }
 }
 
 /// Where the neighbourhood of `p` (its Delaunay neighbours, nearest first) turns thin;

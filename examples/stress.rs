@@ -22,11 +22,12 @@
 //! * `collinear`: `n` distinct points on the line `y = 3x + 1`, irregular spacing.
 //!
 //! Stages: a comma-separated subset of
-//! `points,triangulate,voronoi,single,reconstruct,raw,curves` (default: all but `raw` and
-//! `curves`); `single` is the reconstruction without peeling (one water-flow pass),
+//! `points,triangulate,voronoi,single,reconstruct,raw,curves,smooth` (default: all but `raw`,
+//! `curves` and `smooth`); `single` is the reconstruction without peeling (one water-flow pass),
 //! `reconstruct` the default one, `raw` the default one with the paper's raw medial axis
 //! (`MedialAxisMode::Raw`), `curves` the default one without a medial axis
-//! (`MedialAxisMode::Omitted`). `points` alone only generates the input (the baseline for
+//! (`MedialAxisMode::Omitted`), `smooth` the curves alone fitted to the samples
+//! (`Options::with_smoothing`). `points` alone only generates the input (the baseline for
 //! memory). Each run prints one line
 //! per stage and a final line with the peak resident set size read from `/proc/self/status`
 //! (`VmHWM`, the same figure as `/usr/bin/time -v`'s "Maximum resident set size").
@@ -42,7 +43,7 @@ fn main() {
         args.first(),
         args.get(1).and_then(|s| s.parse::<usize>().ok()),
     ) else {
-        eprintln!("usage: stress <uniform|curve|even-curve|band|circle|grid|two-lines|crossing-lines|dup3|collinear> <n> [points,triangulate,voronoi,single,reconstruct,raw,curves]");
+        eprintln!("usage: stress <uniform|curve|even-curve|band|circle|grid|two-lines|crossing-lines|dup3|collinear> <n> [points,triangulate,voronoi,single,reconstruct,raw,curves,smooth]");
         std::process::exit(2);
     };
     let stages: Vec<&str> = args
@@ -87,16 +88,20 @@ fn main() {
             );
         }
     }
-    for (name, peeling, axis) in [
-        ("single", false, MedialAxisMode::Pruned),
-        ("reconstruct", true, MedialAxisMode::Pruned),
-        ("raw", true, MedialAxisMode::Raw),
-        ("curves", true, MedialAxisMode::Omitted),
+    for (name, peeling, axis, smoothing) in [
+        ("single", false, MedialAxisMode::Pruned, false),
+        ("reconstruct", true, MedialAxisMode::Pruned, false),
+        ("raw", true, MedialAxisMode::Raw, false),
+        ("curves", true, MedialAxisMode::Omitted, false),
+        ("smooth", true, MedialAxisMode::Omitted, true),
     ] {
         if !stage(name) {
             continue;
         }
-        let options = Options::new().with_peeling(peeling).with_medial_axis(axis);
+        let options = Options::new()
+            .with_peeling(peeling)
+            .with_medial_axis(axis)
+            .with_smoothing(smoothing);
         let t = Instant::now();
         let (mut phases, mut peaks) = (Vec::new(), Vec::new());
         let rec = reconstruct_observed(&points, &options, &mut |phase, time| {

@@ -7,6 +7,7 @@ use crate::ids::{ids, LocalPoint};
 use crate::kernel::metric::{length_order, scaled_length_order};
 use crate::kernel::{orient, Sign};
 use crate::parallel;
+use crate::reconstruct::thresholds::smooth::{FLAT, ZIGZAG_SHARE};
 
 /// The loop `ring`'s longest edge and its next longest, by position (edge `i` runs from
 /// `ring[i]` to `ring[i + 1]`, the last back to the first), when the longest is more than
@@ -510,6 +511,53 @@ impl<P: Point> SomeAdjacency<P> {
             Err(_) => &[],
         }
     }
+}
+
+/// Whether `curve` is noisy: more than [`ZIGZAG_SHARE`] of its vertices turn the other way
+/// than both their neighbours (exact orientations). Noise that is not small against the
+/// curve's own turn per step makes the turns' signs about random, and a quarter of the
+/// vertices then zigzag; an ε-sample of a smooth curve or a polygon turns one way along
+/// every run between inflections, which it samples with several vertices, so none do.
+/// Smoothing fits only curves that zigzag (a fit could only trade clean samples' exact
+/// positions for its bias); the loops beside curves (`repairs/beside.rs`) are kept only
+/// when they do not.
+pub(crate) fn zigzags(points: &[[f64; 2]], curve: &LocalCurve) -> bool {
+    let k = curve.points.len();
+    if k < 5 {
+        return false;
+    }
+    let at = |i: usize| points[curve.points[i % k].index()];
+    // The turn at `b`, `Zero` where it is below [`FLAT`] (a straight run of clean samples
+    // that rounding put a hair off its line).
+    let turn = |a: [f64; 2], b: [f64; 2], c: [f64; 2]| {
+        let sign = orient(a, b, c);
+        let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
+        let sine = (u[0] * v[1] - u[1] * v[0]) / (u[0].hypot(u[1]) * v[0].hypot(v[1]));
+        if sine.abs() <= FLAT {
+            Sign::Zero
+        } else {
+            sign
+        }
+    };
+    let turns: Vec<Sign> = if curve.closed {
+        (0..k)
+            .map(|i| turn(at(i + k - 1), at(i), at(i + 1)))
+            .collect()
+    } else {
+        (1..k - 1)
+            .map(|i| turn(at(i - 1), at(i), at(i + 1)))
+            .collect()
+    };
+    let m = turns.len();
+    let middle = if curve.closed { 0..m } else { 1..m - 1 };
+    let flips = middle
+        .clone()
+        .filter(|&i| {
+            let (before, here, after) = (turns[(i + m - 1) % m], turns[i], turns[(i + 1) % m]);
+            here != Sign::Zero && before == after && before != here && before != Sign::Zero
+        })
+        .count();
+    flips as f64 > ZIGZAG_SHARE * middle.len() as f64
 }
 
 #[cfg(test)]

@@ -29,7 +29,7 @@ mod extract;
 mod frame;
 mod lengths;
 mod medial_axis;
-mod open_curves;
+pub(crate) mod open_curves;
 mod options;
 mod parity;
 mod pipeline;

@@ -489,7 +489,7 @@ fn loops_beside_chains(
 /// one nor the nearest-neighbour distance: noise puts samples next to each other, and one
 /// short step beside an ordinary one is no chord. A median over a wider window or the whole
 /// loop was measured and broke the loops of real noisy scans, whose spacing varies.)
-fn chords(points: &[[f64; 2]], cycle: &[LocalPoint]) -> Vec<usize> {
+pub(crate) fn chords(points: &[[f64; 2]], cycle: &[LocalPoint]) -> Vec<usize> {
     let k = cycle.len();
     let at = |i: usize| points[cycle[i % k].index()];
     // Each edge's squared length in rounded arithmetic decides where it is far from the

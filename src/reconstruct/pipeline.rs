@@ -7,6 +7,7 @@ use super::frame::Frame;
 use super::medial_axis::{fitted_medial_axis, pruned_medial_axis};
 use super::open_curves;
 use super::options::{Algorithm, MedialAxisMode, Options};
+use super::repairs::beside::{clean_loops_beside, Beside};
 use super::repairs::corridors::repair_corridors;
 use super::repairs::detours::repair_detours;
 use super::repairs::ears::{drop_islets, repair_ears, Ears};
@@ -87,7 +88,8 @@ pub enum Phase {
     /// Further passes for nested curves (WDM with peeling).
     Peel,
     /// The loops the water flow is sure of kept, every other point joined into open chains
-    /// (WDM with [`Options::with_open_curves`]).
+    /// (WDM with [`Options::with_open_curves`]); then, with peeling, the clean loops beside
+    /// curves that peeling took for noise.
     OpenCurves,
     /// Curve assembly and the unassigned points (with a baseline algorithm, also the
     /// translation to the caller's indices).
@@ -232,7 +234,7 @@ fn baseline(tri: &Triangulation, options: &Options, lap: &mut dyn FnMut(Phase)) 
         curves,
         medial_axis: MedialAxis::default(),
         unassigned,
-        peeling: Peeling::done(0),
+        peeling: Peeling::done(0, 0),
         fitted: None,
     }
 }
@@ -334,7 +336,7 @@ impl<'t> WdmRun<'t> {
             edges,
             repair: Repair::none(),
             repaired_len: 0,
-            peeling: Peeling::done(0),
+            peeling: Peeling::done(0, 0),
             scatter: None,
         }
     }
@@ -365,7 +367,7 @@ impl<'t> WdmRun<'t> {
         // Edges the first pass did not find (reattached stretches, peeling's): holes may be
         // among them, and the raw medial axis must not cross them (the pruned one takes the
         // inside of the final loops by itself).
-        let holes_possible = (self.peeling.extra_passes > 0 || !self.repair.added.is_empty())
+        let mut holes_possible = (self.peeling.extra_passes > 0 || !self.repair.added.is_empty())
             && options.medial_axis() == MedialAxisMode::Raw;
         let mut later_pass = Vec::new();
         if holes_possible {
@@ -382,6 +384,27 @@ impl<'t> WdmRun<'t> {
                 }),
                 None => open_curves::settle(tri, &self.vor, &edges),
             };
+        }
+        // Closed curves beside others, which peeling takes for their noise: a pass at a
+        // time (each finds the outermost of nested ones), within peeling's budget.
+        let peeling = &mut self.peeling;
+        while options.peeling()
+            && self.scatter.is_none()
+            && !tri.is_degenerate()
+            && !peeling.budget_exhausted
+        {
+            match clean_loops_beside(&self.vor, &mut edges, options, &mut peeling.budget_left) {
+                Beside::Nothing => break,
+                Beside::OverBudget => peeling.budget_exhausted = true,
+                Beside::Added(loops) => {
+                    peeling.extra_passes += 1;
+                    if options.medial_axis() == MedialAxisMode::Raw {
+                        holes_possible = true;
+                        later_pass.extend(loops);
+                        later_pass.sort_unstable();
+                    }
+                }
+            }
         }
         lap(Phase::OpenCurves);
         // In local indices until the axis has read them (see `assemble_unnamed`).

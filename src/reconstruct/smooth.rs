@@ -5,8 +5,10 @@
 //!
 //! # Which curves
 //!
-//! A curve is smoothed when it zigzags: more than [`ZIGZAG_SHARE`] of its vertices turn
-//! against both neighbours (exact orientations, turns below [`FLAT`] counted as none). Where
+//! A curve is smoothed when it [zigzags](super::curves::zigzags): more than
+//! [`ZIGZAG_SHARE`](super::thresholds::smooth::ZIGZAG_SHARE) of its vertices turn against both
+//! neighbours (exact orientations, turns below [`FLAT`](super::thresholds::smooth::FLAT)
+//! counted as none). Where
 //! noise sets the turns, about a quarter of the vertices do; clean ε-samples and polygons
 //! turn one way along every run between inflections, and are left exactly as they are.
 //! Junctions (points on three or more edges) stay too.
@@ -63,17 +65,16 @@ mod crossings;
 
 use std::collections::{BinaryHeap, HashMap, HashSet};
 
-use super::curves::LocalCurve;
+use super::curves::{zigzags, LocalCurve};
 use super::delaunay_graph::{FastHash, Graph, Waiting};
 use super::lengths::distance;
 use super::thresholds::smooth::{
-    AGREEMENT, FLAT, LINE_RADIUS, LINK, MAD_TO_SIGMA, MAX_ASPECT, MAX_WINDOW_POINTS,
-    MAX_WINDOW_VERTICES, MIN_CIRCLE_RADIUS, MIN_FIT_POINTS, MIN_LINE_POINTS, RESIDUAL_GROWTH,
-    ROBUST_ITERATIONS, SCALE_STEP, SHIFT_RESIDUALS, SIDED_PREFERENCE, TUKEY, WINDOWS, ZIGZAG_SHARE,
+    AGREEMENT, LINE_RADIUS, LINK, MAD_TO_SIGMA, MAX_ASPECT, MAX_WINDOW_POINTS, MAX_WINDOW_VERTICES,
+    MIN_CIRCLE_RADIUS, MIN_FIT_POINTS, MIN_LINE_POINTS, RESIDUAL_GROWTH, ROBUST_ITERATIONS,
+    SCALE_STEP, SHIFT_RESIDUALS, SIDED_PREFERENCE, TUKEY, WINDOWS,
 };
 use crate::delaunay::Triangulation;
 use crate::ids::LocalPoint;
-use crate::kernel::{orient, Sign};
 use crate::parallel;
 
 /// Residuals and standard errors below this share of the radius are rounding, not noise:
@@ -124,52 +125,6 @@ pub(super) fn fitted_positions(
     }
     crossings::undo_crossings(&tri.points, curves, &mut moved);
     moved
-}
-
-/// Whether `curve` is noisy: more than [`ZIGZAG_SHARE`] of its vertices turn the other way
-/// than both their neighbours (exact orientations). Noise that is not small against the
-/// curve's own turn per step makes the turns' signs about random, and a quarter of the
-/// vertices then zigzag; an ε-sample of a smooth curve or a polygon turns one way along
-/// every run between inflections, which it samples with several vertices, so none do. A
-/// curve that does not zigzag is left as it is: a fit could only trade its samples' exact
-/// positions for the fit's bias.
-fn zigzags(points: &[[f64; 2]], curve: &LocalCurve) -> bool {
-    let k = curve.points.len();
-    if k < 5 {
-        return false;
-    }
-    let at = |i: usize| points[curve.points[i % k].index()];
-    // The turn at `b`, `Zero` where it is below [`FLAT`] (a straight run of clean samples
-    // that rounding put a hair off its line).
-    let turn = |a: [f64; 2], b: [f64; 2], c: [f64; 2]| {
-        let sign = orient(a, b, c);
-        let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
-        let sine = (u[0] * v[1] - u[1] * v[0]) / (u[0].hypot(u[1]) * v[0].hypot(v[1]));
-        if sine.abs() <= FLAT {
-            Sign::Zero
-        } else {
-            sign
-        }
-    };
-    let turns: Vec<Sign> = if curve.closed {
-        (0..k)
-            .map(|i| turn(at(i + k - 1), at(i), at(i + 1)))
-            .collect()
-    } else {
-        (1..k - 1)
-            .map(|i| turn(at(i - 1), at(i), at(i + 1)))
-            .collect()
-    };
-    let m = turns.len();
-    let middle = if curve.closed { 0..m } else { 1..m - 1 };
-    let flips = middle
-        .clone()
-        .filter(|&i| {
-            let (before, here, after) = (turns[(i + m - 1) % m], turns[i], turns[(i + 1) % m]);
-            here != Sign::Zero && before == after && before != here && before != Sign::Zero
-        })
-        .count();
-    flips as f64 > ZIGZAG_SHARE * middle.len() as f64
 }
 
 /// One fit of one window, in the frame's units: where it puts the vertex, its normal

@@ -29,7 +29,7 @@ pub(crate) mod peel {
     /// inside a shape has edges of the outliers' spacing, many sample spacings long.
     ///
     /// Measurement: 2×: drawings recall 88.7 %, a real scan loses a loop. Used by
-    /// `reconstruct/repairs/peel.rs`.
+    /// `reconstruct/repairs/peel.rs` and `reconstruct/repairs/beside.rs`.
     pub(crate) const SPARSER_LOOP: f64 = 3.0;
 
     /// How far apart two left-over points may lie and still be linked into one group
@@ -61,6 +61,16 @@ pub(crate) mod peel {
     /// 63 against 97 / 93 / 83 / 80 %. Used by `reconstruct/repairs/peel.rs` and
     /// `reconstruct/repairs/ears.rs`.
     pub(crate) const MIN_LOOP_POINTS: usize = 7;
+
+    /// The fewest points of a loop that the loops beside curves (`repairs/beside.rs`) call clean
+    /// (no vertex zigzags), both the loop a pass keeps and the loop it lies beside: the turns of a
+    /// loop through noise have about random signs, and each vertex zigzags with probability about
+    /// 1/4, so a loop of `k` noise points looks clean with probability about `(3/4)^k`: 1e-3 at 24.
+    ///
+    /// Measurement: a noisy star of 10^6 points at random positions (noise 0.1 and 0.3 of the
+    /// mean step) leaves 27 loops of 7–10 points that do not zigzag, none of 24 or more. Used by
+    /// `reconstruct/repairs/beside.rs`.
+    pub(crate) const CLEAN_LOOP_POINTS: usize = 24;
 
     /// How far, in its own sample spacings, a loop closed by chords (`peel::loops_by_chords`,
     /// `peel::close_by_chord`) must
@@ -633,14 +643,15 @@ pub(crate) mod smooth {
     /// neighbours): about a quarter do where noise sets the turns, none on clean samples.
     ///
     /// Measurement: clean ε-samples (ε = 0.2, 0.39) and polygons: no vertex moves; without the test
-    /// they moved by up to 0.45 spacings. Used by `reconstruct/smooth.rs`.
+    /// they moved by up to 0.45 spacings. Used by `reconstruct/curves.rs` (`zigzags`, read by
+    /// smoothing and by the loops beside curves, `reconstruct/repairs/beside.rs`).
     pub(crate) const ZIGZAG_SHARE: f64 = 0.05;
 
     /// Turns (sines) below this are no turns to the zigzag test: the rounding of a moved or scaled
     /// straight run of clean samples turns them by about `1e-16`.
     ///
     /// Measurement: without it clean polygons zigzag (rounding's random signs). Used by
-    /// `reconstruct/smooth.rs`.
+    /// `reconstruct/curves.rs` (`zigzags`).
     pub(crate) const FLAT: f64 = 1e-9;
 
     /// A family grows only while its residual stays within this factor of that of its window of

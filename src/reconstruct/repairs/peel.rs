@@ -52,10 +52,10 @@ pub(crate) fn peel(
     let n = points.len();
     // A clean sample leaves fewer than three points to peel, and a nearly clean one only
     // leftovers of its noise: return before building anything over all the points.
-    if !first_pass_may_run(full, edges) {
-        return Peeling::done(0);
-    }
     let mut budget = options.peeling_budget().saturating_mul(n);
+    if !first_pass_may_run(full, edges) {
+        return Peeling::done(0, budget);
+    }
     // Points that can no longer start a curve: noise leftovers and what a pass could only
     // read as noise.
     let mut spent = vec![false; n];
@@ -78,12 +78,13 @@ pub(crate) fn peel(
         }
         let rest: Vec<LocalPoint> = rest.into_iter().filter(|&p| !spent[p.index()]).collect();
         if rest.len() < 3 {
-            return Peeling::done(extra);
+            return Peeling::done(extra, budget);
         }
         if rest.len() > budget {
             return Peeling {
                 extra_passes: extra,
                 budget_exhausted: true,
+                budget_left: budget,
             };
         }
         budget -= rest.len();
@@ -104,7 +105,7 @@ pub(crate) fn peel(
             }
         }
         if pass.edges.is_empty() && new_curves.is_empty() {
-            return Peeling::done(extra);
+            return Peeling::done(extra, budget);
         }
         // A pass that found only noise still made progress: its points are spent, and what
         // the noise hid from the water (a hole inside a ring of leftovers) is next.
@@ -212,13 +213,13 @@ fn isolated_leftovers(full: &Voronoi<'_>, rest: &[LocalPoint]) -> Vec<LocalPoint
 /// What a later pass found: its WDM_CRUST edges that are edges of the full triangulation
 /// (`[min, max]`, local indices of the full triangulation, sorted), and the other ones that
 /// cross no curve found before (sorted): candidates for [`close_by_chord`].
-struct LaterPass {
-    edges: Vec<[LocalPoint; 2]>,
-    chords: Vec<[LocalPoint; 2]>,
+pub(super) struct LaterPass {
+    pub(super) edges: Vec<[LocalPoint; 2]>,
+    pub(super) chords: Vec<[LocalPoint; 2]>,
 }
 
 /// WDM_CRUST on the points `rest` alone (see [`peel`]).
-fn later_pass(
+pub(super) fn later_pass(
     full: &Voronoi<'_>,
     earlier: &Adjacency,
     rest: &[LocalPoint],
@@ -356,7 +357,7 @@ fn loops_by_chords(
 }
 
 /// The edges `[min, max]` of a curve (a closed one includes its closing edge).
-fn piece_edges(curve: &LocalCurve) -> Vec<[LocalPoint; 2]> {
+pub(super) fn piece_edges(curve: &LocalCurve) -> Vec<[LocalPoint; 2]> {
     let p = &curve.points;
     let closing = curve.closed.then(|| [p[p.len() - 1], p[0]]);
     p.windows(2)
@@ -440,13 +441,18 @@ fn near_a_curve<'a>(
 pub(crate) struct Peeling {
     pub(crate) extra_passes: usize,
     pub(crate) budget_exhausted: bool,
+    /// How many more points later passes may run on ([`Options::with_peeling_budget`]
+    /// times the input's, less what the passes took): the loops beside curves
+    /// (`beside.rs`) spend it too.
+    pub(crate) budget_left: usize,
 }
 
 impl Peeling {
-    pub(crate) fn done(extra_passes: usize) -> Peeling {
+    pub(crate) fn done(extra_passes: usize, budget_left: usize) -> Peeling {
         Peeling {
             extra_passes,
             budget_exhausted: false,
+            budget_left,
         }
     }
 }

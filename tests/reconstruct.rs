@@ -1072,6 +1072,39 @@ fn evenly_along(ring: &[[f64; 2]], n: usize, phase: f64) -> Vec<[f64; 2]> {
     out
 }
 
+/// Each closed polyline of `rings` sampled evenly at about `spacing` (from a random phase),
+/// moved by `similarity`, one after the other; with the edges of every ring's cycle.
+fn sampled_rings(
+    rings: &[&[[f64; 2]]],
+    spacing: f64,
+    similarity: &Similarity,
+    rng: &mut Rng,
+) -> (Vec<[f64; 2]>, EdgeSet) {
+    let mut points = Vec::new();
+    let mut truth = EdgeSet::new();
+    for ring in rings {
+        let perimeter: f64 = (0..ring.len())
+            .map(|i| {
+                let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
+                (b[0] - a[0]).hypot(b[1] - a[1])
+            })
+            .sum();
+        let n = (perimeter / spacing).round() as usize;
+        let first = points.len();
+        points.extend(
+            evenly_along(ring, n, rng.f64())
+                .into_iter()
+                .map(|p| similarity.apply(p)),
+        );
+        truth.extend(
+            cycle_edges(n)
+                .into_iter()
+                .map(|(a, b)| (a + first, b + first)),
+        );
+    }
+    (points, truth)
+}
+
 /// A closed curve inside another, one to one and a half sample spacings from it, clean:
 /// peeling alone takes every point of the inner one for noise of the outer one (it lies
 /// within 1.5 spacings) and reports it unassigned; the pass for clean loops beside curves
@@ -1106,14 +1139,6 @@ fn clean_curves_a_spacing_or_two_apart_are_both_kept() {
             .collect()
     };
     let square = |d: f64| vec![[d, d], [1.0 - d, d], [1.0 - d, 1.0 - d], [d, 1.0 - d]];
-    let perimeter = |ring: &[[f64; 2]]| -> f64 {
-        (0..ring.len())
-            .map(|i| {
-                let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
-                (b[0] - a[0]).hypot(b[1] - a[1])
-            })
-            .sum()
-    };
     let mut rng = Rng::new(41);
     let mut cases = Vec::new();
     for gap in [1.0, 1.5] {
@@ -1131,22 +1156,7 @@ fn clean_curves_a_spacing_or_two_apart_are_both_kept() {
     for (name, outer, inner) in cases {
         for trial in 0..4 {
             let similarity = Similarity::random(&mut rng);
-            let mut points = Vec::new();
-            let mut truth = EdgeSet::new();
-            for ring in [&outer, &inner] {
-                let n = (perimeter(ring) / spacing).round() as usize;
-                let first = points.len();
-                points.extend(
-                    evenly_along(ring, n, rng.f64())
-                        .into_iter()
-                        .map(|p| similarity.apply(p)),
-                );
-                truth.extend(
-                    cycle_edges(n)
-                        .into_iter()
-                        .map(|(a, b)| (a + first, b + first)),
-                );
-            }
+            let (points, truth) = sampled_rings(&[&outer, &inner], spacing, &similarity, &mut rng);
             let rec = reconstruct(&points).unwrap();
             assert_eq!(
                 score(&truth, rec.edges()),
@@ -1155,6 +1165,53 @@ fn clean_curves_a_spacing_or_two_apart_are_both_kept() {
                 rec.curves().len(),
                 rec.unassigned().len()
             );
+        }
+    }
+}
+
+/// Two clean polygons whose corners face each other, or face the other's side, one and a
+/// half to three sample spacings apart: the water flow joins them across the gap by two long
+/// edges (one loop of both, or a loop of the corridor between them, the corner samples on
+/// no curve), and the facing-corner swap gives each its own steps back. Squares side by side
+/// and offset, diamonds tip to tip, a pentagon's corner at a square's side, under a random
+/// similarity and sampling phase: every edge exact.
+#[test]
+fn polygons_with_facing_corners_a_few_spacings_apart_are_both_exact() {
+    let spacing = 0.05;
+    let square = |x: f64, y: f64| vec![[x, y], [x + 1.0, y], [x + 1.0, y + 1.0], [x, y + 1.0]];
+    let diamond = |x: f64| vec![[x, 0.5], [x + 0.5, 0.0], [x + 1.0, 0.5], [x + 0.5, 1.0]];
+    let pentagon: Vec<[f64; 2]> = (0..5)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / 5.0;
+            [0.5 + 0.5 * t.cos(), 0.5 + 0.5 * t.sin()]
+        })
+        .collect();
+    let mut rng = Rng::new(43);
+    for gap in [1.5, 2.0, 3.0] {
+        let g = gap * spacing;
+        let cases = [
+            ("squares", square(0.0, 0.0), square(1.0 + g, 0.3)),
+            ("diamonds", diamond(0.0), diamond(1.0 + g)),
+            (
+                "pentagon and square",
+                pentagon.clone(),
+                square(1.0 + g, -0.5),
+            ),
+        ];
+        for (name, left, right) in cases {
+            for trial in 0..4 {
+                let similarity = Similarity::rotation(rng.range(0.0, std::f64::consts::TAU));
+                let (points, truth) =
+                    sampled_rings(&[&left, &right], spacing, &similarity, &mut rng);
+                let rec = reconstruct(&points).unwrap();
+                assert_eq!(
+                    score(&truth, rec.edges()),
+                    (0, 0),
+                    "{name} {gap} spacings apart, trial {trial}: {} curves, {} unassigned",
+                    rec.curves().len(),
+                    rec.unassigned().len()
+                );
+            }
         }
     }
 }

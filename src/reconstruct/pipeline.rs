@@ -11,6 +11,7 @@ use super::repairs::beside::{clean_loops_beside, Beside};
 use super::repairs::corridors::repair_corridors;
 use super::repairs::detours::repair_detours;
 use super::repairs::ears::{drop_islets, repair_ears, Ears};
+use super::repairs::facing::swap_facing_corners;
 use super::repairs::peel::{hole_edges, parity_inside, peel, Peeling};
 use super::repairs::shared::Repair;
 use super::result::{untouched_points, MedialAxis, Reconstruction};
@@ -91,8 +92,8 @@ pub enum Phase {
     /// (WDM with [`Options::with_open_curves`]); then, with peeling, the clean loops beside
     /// curves that peeling took for noise.
     OpenCurves,
-    /// Curve assembly and the unassigned points (with a baseline algorithm, also the
-    /// translation to the caller's indices).
+    /// Curve assembly (WDM: with the facing-corner swaps) and the unassigned points (with a
+    /// baseline algorithm, also the translation to the caller's indices).
     Curves,
     /// The medial axis (WDM; none with [`MedialAxisMode::Omitted`]); then the curves'
     /// translation to the caller's indices, and the edges read off them (not held through
@@ -408,9 +409,17 @@ impl<'t> WdmRun<'t> {
         }
         lap(Phase::OpenCurves);
         // In local indices until the axis has read them (see `assemble_unnamed`).
-        let curves = curves::assemble_unnamed(tri.points.len(), &edges, &tri.points, |p| {
-            tri.input_index(p)
-        });
+        let assemble = |edges: &[[LocalPoint; 2]]| {
+            curves::assemble_unnamed(tri.points.len(), edges, &tri.points, |p| tri.input_index(p))
+        };
+        let mut curves = assemble(&edges);
+        // Two closed curves joined across a gap at facing corners, split again.
+        if self.scatter.is_none() && !tri.is_degenerate() {
+            if let Some(swapped) = swap_facing_corners(&self.vor, &curves) {
+                edges = swapped;
+                curves = assemble(&edges);
+            }
+        }
         let unassigned = untouched_points(tri, edges.iter().copied());
         let holes = if holes_possible {
             // The edges are distinct: those of the first pass the repair kept, then the

@@ -293,6 +293,34 @@ pub(crate) mod open_curves {
 }
 
 /// A scatter read off the first pass (`reconstruct/scatter.rs`).
+/// Facing corners: two long loop edges across a gap swapped for the short links between their
+/// ends (`docs/design/facing-corners.md`).
+pub(crate) mod facing {
+    /// A loop edge is long when it is at least this many times each loop edge beside it, and a
+    /// link replacing it at most its length over this.
+    ///
+    /// Measurement (clean pairs 1.5 spacings apart, 20 trials each): 1.5 / 2: offset squares
+    /// exact 20 / 0, wedges tip to tip 18 / 6; at 1.5 without the zigzag test 7 of 480 noisy
+    /// curves came back worse, with it none (`docs/design/facing-corners.md`). Used by
+    /// `reconstruct/repairs/facing.rs`.
+    pub(crate) const FACING_RATIO: f64 = 1.5;
+
+    /// A loop whose long edges (by [`FACING_RATIO`]) are more than one in this many of its edges,
+    /// and more than [`FACING_FEWEST`], is sampled too irregularly for them to mark a gap: samples
+    /// at random positions have gaps of exponential length, and about one edge in six is twice
+    /// both its neighbours.
+    ///
+    /// Measurement: 10^6 samples of a star at random parameters: the swap's search over every
+    /// such edge cost 0.07 s (a sixth of the curves phase); skipped, nothing. Used by
+    /// `reconstruct/repairs/facing.rs`.
+    pub(crate) const FACING_SHARE: usize = 100;
+
+    /// Long edges a loop may always have: two facing corners make two on each loop they join.
+    ///
+    /// Used by `reconstruct/repairs/facing.rs`.
+    pub(crate) const FACING_FEWEST: usize = 8;
+}
+
 pub(crate) mod scatter {
     /// The first pass read a scatter only when it put fewer than this share of the points on an
     /// edge (and most of those are crowded, and the thinning's probes read an area): the water flow's loops through a uniform scatter

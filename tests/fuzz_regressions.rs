@@ -540,3 +540,22 @@ fn noisy_and_outlier_inputs_give_well_formed_results() {
         }
     }
 }
+
+/// Found by `reconstruct`: 600 points, two closed curves at ~1e182 and ~1e-302 scale. The
+/// facing-corner swap (`repairs/facing.rs`) took edges whose squared lengths overflow or
+/// underflow for long ones, swapped consecutive edges into loops of two points (duplicate
+/// edges), chose among equal swaps in an order that followed the input's, and ran without the
+/// open-curve stage (the single pass must be the flow's crust alone). Now such lengths decide
+/// nothing, the swaps are ordered by coordinates, and the swap is part of settling the curves.
+#[test]
+fn facing_swap_at_the_ends_of_the_range() {
+    let points = regression_points("facing-swap-at-the-ends-of-the-range.txt");
+    check_everything(&points);
+    let perm: Vec<usize> = (0..points.len()).rev().collect();
+    let reversed = checks::permute(&points, &perm);
+    let (rec, other) = (
+        wdm_crust::reconstruct(&points).unwrap(),
+        wdm_crust::reconstruct(&reversed).unwrap(),
+    );
+    checks::check_permuted(&points, &perm, &rec, &other, true, true).unwrap();
+}

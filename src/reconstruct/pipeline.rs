@@ -387,9 +387,12 @@ impl<'t> WdmRun<'t> {
             };
         }
         // Closed curves beside others, which peeling takes for their noise: a pass at a
-        // time (each finds the outermost of nested ones), within peeling's budget.
+        // time (each finds the outermost of nested ones), within peeling's budget. Like the
+        // facing-corner swap below, a part of settling the curves: without the open-curve
+        // stage the result is the flow's and peeling's alone.
         let peeling = &mut self.peeling;
         while options.peeling()
+            && options.open_curves()
             && self.scatter.is_none()
             && !tri.is_degenerate()
             && !peeling.budget_exhausted
@@ -414,7 +417,7 @@ impl<'t> WdmRun<'t> {
         };
         let mut curves = assemble(&edges);
         // Two closed curves joined across a gap at facing corners, split again.
-        if self.scatter.is_none() && !tri.is_degenerate() {
+        if options.open_curves() && self.scatter.is_none() && !tri.is_degenerate() {
             if let Some(swapped) = swap_facing_corners(&self.vor, &curves) {
                 edges = swapped;
                 curves = assemble(&edges);

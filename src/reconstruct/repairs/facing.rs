@@ -12,8 +12,10 @@
 //! short beside its neighbours), and a correct noisy loop has no two long edges whose ends
 //! are pairwise a step apart: it would fold back on itself there. The links are Delaunay
 //! edges, so they cross no curve edge that is one; a curve edge that is none is walked
-//! through the triangulation against them, exactly. The rule and its measurements:
-//! `docs/design/facing-corners.md`.
+//! through the triangulation against them, exactly. The swaps are ordered by lengths and
+//! coordinates, never by the curves' or the triangulation's order, so the result does not
+//! depend on the input order. Part of settling the curves: it runs with the open-curve stage.
+//! The rule and its measurements: `docs/design/facing-corners.md`.
 //!
 //! Every index here is local to the full triangulation.
 
@@ -89,14 +91,15 @@ pub(crate) fn swap_facing_corners(
         let (i, j) = (position(e, x), position(f, y));
         e.curve == f.curve && ((i + 1) % k == j || (j + 1) % k == i)
     };
-    // The first way from `p` to the end `target` of a long edge, or (with `target` None) to
-    // any end of one, within `reach`: through an unassigned point other than `not_via`
-    // first (a corner's own sample that the long edges left out), then a Delaunay edge.
-    let link = |p: LocalPoint,
-                reach: f64,
-                target: Option<LocalPoint>,
-                not_via: Option<LocalPoint>|
-     -> Option<(LocalPoint, Option<LocalPoint>)> {
+    // Every way from `p` to the end `target` of a long edge, or (with `target` None) to any
+    // end of one, within `reach`: a Delaunay edge, or two through an unassigned point
+    // other than `not_via`. All of them: which is taken is decided by coordinates below,
+    // not by the order of the triangulation's neighbours.
+    let links = |p: LocalPoint,
+                 reach: f64,
+                 target: Option<LocalPoint>,
+                 not_via: Option<LocalPoint>|
+     -> Vec<(LocalPoint, Option<LocalPoint>)> {
         let wanted = |r: LocalPoint| {
             r != p
                 && match target {
@@ -105,70 +108,83 @@ pub(crate) fn swap_facing_corners(
                 }
         };
         let near = |x: LocalPoint, y: LocalPoint| distance(at(x), at(y)) <= reach;
-        let mut direct = None;
+        let mut out = Vec::new();
         for u in full.delaunay_neighbours(p) {
             if !near(p, u) {
                 continue;
             }
             if on_curve[u.index()] {
-                if direct.is_none() && wanted(u) {
-                    direct = Some((u, None));
+                if wanted(u) {
+                    out.push((u, None));
                 }
             } else if Some(u) != not_via {
-                if let Some(r) = full
-                    .delaunay_neighbours(u)
-                    .find(|&r| on_curve[r.index()] && wanted(r) && near(u, r))
-                {
-                    return Some((r, Some(u)));
-                }
+                out.extend(
+                    full.delaunay_neighbours(u)
+                        .filter(|&r| on_curve[r.index()] && wanted(r) && near(u, r))
+                        .map(|r| (r, Some(u))),
+                );
             }
         }
-        direct
+        out
     };
-    // Every swap each long edge finds, found independently of the others.
+    // Every swap of two long edges, each found from both of its edges.
     let mut found = Vec::new();
     for (a, e) in long.iter().enumerate() {
         for [p, q] in [e.ends, [e.ends[1], e.ends[0]]] {
-            let Some((r, via_pr)) = link(p, e.length / FACING_RATIO, None, None) else {
-                continue;
-            };
-            let b = long_at[r.index()] as usize;
-            let f = &long[b];
-            if b <= a || steps_along(e, p, f, r) {
-                continue;
-            }
-            let s = if f.ends[0] == r { f.ends[1] } else { f.ends[0] };
-            let reach = e.length.min(f.length) / FACING_RATIO;
-            let legs_short = match via_pr {
-                None => distance(at(p), at(r)) <= reach,
-                Some(u) => distance(at(p), at(u)) <= reach && distance(at(u), at(r)) <= reach,
-            };
-            if !legs_short || [p, q].contains(&s) || steps_along(e, q, f, s) {
-                continue;
-            }
-            if let Some((_, via_qs)) = link(q, reach, Some(s), via_pr) {
-                found.push(Swap {
-                    a,
-                    b,
-                    ends: [p, q, r, s],
-                    via: [via_pr, via_qs],
-                });
-                break;
+            for (r, via_pr) in links(p, e.length / FACING_RATIO, None, None) {
+                let b = long_at[r.index()] as usize;
+                let f = &long[b];
+                if b == a || steps_along(e, p, f, r) {
+                    continue;
+                }
+                let s = if f.ends[0] == r { f.ends[1] } else { f.ends[0] };
+                let reach = e.length.min(f.length) / FACING_RATIO;
+                let legs_short = match via_pr {
+                    None => distance(at(p), at(r)) <= reach,
+                    Some(u) => distance(at(p), at(u)) <= reach && distance(at(u), at(r)) <= reach,
+                };
+                if !legs_short || [p, q].contains(&s) || steps_along(e, q, f, s) {
+                    continue;
+                }
+                for (_, via_qs) in links(q, reach, Some(s), via_pr) {
+                    found.push(Swap {
+                        a,
+                        b,
+                        ends: [p, q, r, s],
+                        via: [via_pr, via_qs],
+                    });
+                }
             }
         }
     }
     if found.is_empty() {
         return None;
     }
-    // Made longest first (ties by coordinates, not by the curves' order, which follows the
-    // input's), each long edge and unassigned point in one swap at most, and only between
-    // loops that do not zigzag: noise makes long edges beside short ones, and its leftovers
-    // links (each loop tested once, exact orientations).
+    // Made longest first, then those through unassigned points (a corner's own sample that
+    // the long edges left out), then by coordinates: never by the curves' order (it follows
+    // the input's) nor the triangulation's; each long edge and unassigned point in one swap
+    // at most, and only between loops that do not zigzag: noise makes long edges beside
+    // short ones, and its leftovers links (each loop tested once, exact orientations).
+    let key = |w: &Swap| {
+        let lengths = long[w.a].length.max(long[w.b].length);
+        let skipped = w.via.iter().flatten().count();
+        // The same swap found from either edge is one: its ends and links read from the
+        // lexicographically smaller long edge.
+        let [p, q, r, s] = w.ends.map(at);
+        let (mut ends, mut via) = ([p, q, r, s], w.via.map(|v| v.map(at)));
+        if lexicographic(&[r, s], &[p, q]).is_lt() {
+            ends = [r, s, p, q];
+            via = [via[0], via[1]];
+        }
+        let via = via.map(|v| v.unwrap_or([f64::NAN; 2]));
+        (lengths, skipped, ends, via)
+    };
     found.sort_by(|x, y| {
-        let key = |w: &Swap| (long[w.a].length.max(long[w.b].length), w.ends.map(at));
         let (kx, ky) = (key(x), key(y));
         ky.0.total_cmp(&kx.0)
-            .then_with(|| lexicographic(&kx.1, &ky.1))
+            .then_with(|| ky.1.cmp(&kx.1))
+            .then_with(|| lexicographic(&kx.2, &ky.2))
+            .then_with(|| lexicographic(&kx.3, &ky.3))
     });
     let mut used_edge = vec![false; long.len()];
     let mut used_point: Vec<LocalPoint> = Vec::new();
@@ -242,7 +258,12 @@ fn long_loop_edges(points: &[[f64; 2]], curves: &[LocalCurve]) -> Vec<LongEdge> 
         let (mut before, mut here) = (squared(k - 1), squared(0));
         for i in 0..k {
             let after = squared(i + 1);
-            if here >= squared_ratio * before.max(after) {
+            // Squared lengths that overflow or underflow (coordinates near the ends of the
+            // `f64` range) decide nothing: such an edge is not taken for long.
+            let measured = [before, here, after]
+                .iter()
+                .all(|&l| l.is_finite() && l >= f64::MIN_POSITIVE);
+            if measured && here >= squared_ratio * before.max(after) {
                 long.push(LongEdge {
                     ends: [c.points[i], c.points[(i + 1) % k]],
                     length: distance(at(i), at(i + 1)),

@@ -539,7 +539,17 @@ fn chain_ends_close(rec: &Reconstruction, view: &CurveView) -> Option<Warning> {
     if ends.len() < 4 {
         return None;
     }
-    let coords: Vec<[f64; 2]> = ends.iter().map(|&(p, _, _)| at(p)).collect();
+    // One site per end point: a junction is the end of several chains (in the single
+    // pass), and which of them a merged duplicate would stand for followed the input order.
+    ends.sort_unstable_by_key(|&(p, c, _)| (p, c));
+    let mut sites: Vec<LocalPoint> = ends.iter().map(|&(p, _, _)| p).collect();
+    sites.dedup();
+    let of_site = |p: LocalPoint| {
+        let from = ends.partition_point(|e| e.0 < p);
+        let to = ends.partition_point(|e| e.0 <= p);
+        &ends[from..to]
+    };
+    let coords: Vec<[f64; 2]> = sites.iter().map(|&p| at(p)).collect();
     let Ok(among) = triangulate(&coords) else {
         return None;
     };
@@ -551,15 +561,20 @@ fn chain_ends_close(rec: &Reconstruction, view: &CurveView) -> Option<Warning> {
         if twin != NO_TWIN && twin < e {
             continue;
         }
-        let (x, y) = (
-            ends[among.input_index(among.org(e)) as usize],
-            ends[among.input_index(among.dest(e)) as usize],
+        let (p, q) = (
+            sites[among.input_index(among.org(e)) as usize],
+            sites[among.input_index(among.dest(e)) as usize],
         );
-        if x.1 == y.1 || !within(x.0, y.0, x.2) || !within(x.0, y.0, y.2) {
+        let close = of_site(p).iter().any(|x| {
+            of_site(q)
+                .iter()
+                .any(|y| x.1 != y.1 && within(p, q, x.2) && within(p, q, y.2))
+        });
+        if !close {
             continue;
         }
         pairs += 1;
-        let (i, j) = (tri.input_index(x.0), tri.input_index(y.0));
+        let (i, j) = (tri.input_index(p), tri.input_index(q));
         let named = [i.min(j), i.max(j)];
         if first.is_none_or(|f| named < f) {
             first = Some(named);

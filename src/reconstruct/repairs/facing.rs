@@ -8,9 +8,9 @@
 //! and `q` to `s`, each by a Delaunay edge or through one unassigned point — become those
 //! links, every link shorter than either long edge by the same factor.
 //!
-//! Clean samples never have such edges (Lemma 3.1: every edge of an ε-sample's curve is
-//! short beside its neighbours), and a correct noisy loop has no two long edges whose ends
-//! are pairwise a step apart: it would fold back on itself there. The links are Delaunay
+//! A long edge alone proves nothing (graded or oversampled samples have them); two whose
+//! ends are pairwise a short step apart mean the loop folds back on itself within a step or
+//! two, which a correct loop does only at a neck thinner than its sampling. The links are Delaunay
 //! edges, so they cross no curve edge that is one; a curve edge that is none is walked
 //! through the triangulation against them, exactly. The swaps are ordered by lengths and
 //! coordinates, never by the curves' or the triangulation's order, so the result does not

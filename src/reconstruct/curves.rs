@@ -220,7 +220,7 @@ pub(crate) fn ring_orientation_by(n: usize, at: impl Fn(usize) -> [f64; 2]) -> S
 }
 
 /// By value (`-0.0` equals `0.0`, which `total_cmp` would not say); coordinates are finite.
-fn lexicographic(a: [f64; 2], b: [f64; 2]) -> Ordering {
+pub(crate) fn lexicographic(a: [f64; 2], b: [f64; 2]) -> Ordering {
     let by = |x: f64, y: f64| x.partial_cmp(&y).unwrap_or(Ordering::Equal);
     by(a[0], b[0]).then(by(a[1], b[1]))
 }

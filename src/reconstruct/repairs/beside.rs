@@ -14,15 +14,16 @@
 //!
 //! Every index here is local to the full triangulation.
 
-use super::peel::{later_pass, piece_edges};
-use super::shared::{degrees, median_length};
+use std::ops::ControlFlow;
+
+use super::peel::{later_pass, leftover_groups};
+use super::shared::{curve_edges, degrees, median_length};
 use crate::ids::{ids, LocalPoint};
 use crate::reconstruct::curves::{assemble_unnamed, zigzags, Adjacency};
-use crate::reconstruct::lengths::distance;
 use crate::reconstruct::open_curves;
 use crate::reconstruct::options::Options;
 use crate::reconstruct::segment_walk::crosses_a_curve;
-use crate::reconstruct::thresholds::peel::{CLEAN_LOOP_POINTS, LINK, SPARSER_LOOP};
+use crate::reconstruct::thresholds::peel::{CLEAN_LOOP_POINTS, SPARSER_LOOP};
 use crate::voronoi::Voronoi;
 
 /// The role of a point in a pass: on no curve or on a short open piece beside a clean loop
@@ -114,13 +115,9 @@ pub(crate) fn clean_loops_beside(
         return Beside::OverBudget;
     }
     *budget -= rest.len();
-    let loops: Vec<[LocalPoint; 2]> = edges
-        .iter()
-        .filter(|&&[a, _]| role[a.index()] >= ON_CLEAN_LOOP)
-        .copied()
-        .collect();
-    let earlier = Adjacency::new(n, &loops);
-    let pass = later_pass(full, &earlier, &rest, options);
+    // The pass's chords (no Delaunay edges) are not looked at: a kept loop is made of
+    // Delaunay edges only.
+    let pass = later_pass(full, &rest, options);
     if pass.edges.is_empty() {
         return Beside::Nothing;
     }
@@ -134,7 +131,7 @@ pub(crate) fn clean_loops_beside(
         assemble_unnamed(n, &pass.edges, points, LocalPoint::get)
             .into_iter()
             .filter(|piece| piece.closed && piece.points.len() >= CLEAN_LOOP_POINTS)
-            .map(|piece| (piece_edges(&piece), piece))
+            .map(|piece| (curve_edges(&piece), piece))
             .filter(|(loop_edges, piece)| {
                 let on_pieces = piece.points.iter().filter(|p| role[p.index()] == ON_PIECE);
                 2 * on_pieces.count() < piece.points.len()
@@ -184,47 +181,22 @@ pub(crate) fn clean_loops_beside(
     Beside::Added(kept)
 }
 
-/// Do at least `fewest` unassigned points (`degree` 0) hang together, each linked to a
-/// Delaunay neighbour among them no farther than [`LINK`] times the longer of the two
-/// points' nearest-neighbour distances (as peeling links its leftovers)? A kept loop has more
-/// unassigned points than others, and they run along it; a noise band's leftovers lie in
-/// small groups, and a noisy input then costs no assembly of its curves.
+/// Do at least `fewest` unassigned points (`degree` 0) hang together, linked as peeling links
+/// its leftovers ([`leftover_groups`])? A kept loop has more unassigned points than others,
+/// and they run along it; a noise band's leftovers lie in small groups, and a noisy input
+/// then costs no assembly of its curves.
 fn has_a_run(full: &Voronoi<'_>, degree: &[u8], fewest: usize) -> bool {
-    let points = &full.triangulation().points;
-    let at = |p: LocalPoint| points[p.index()];
-    let nearest = |p: LocalPoint| {
-        full.delaunay_neighbours(p)
-            .map(|q| distance(at(p), at(q)))
-            .fold(f64::INFINITY, f64::min)
-    };
-    let mut seen = vec![false; degree.len()];
-    let mut stack = Vec::new();
-    for start in (0..degree.len()).filter(|&p| degree[p] == 0) {
-        if seen[start] {
-            continue;
+    let unassigned: Vec<LocalPoint> = ids::<LocalPoint>(degree.len())
+        .filter(|p| degree[p.index()] == 0)
+        .collect();
+    let mut found = false;
+    leftover_groups(full, &unassigned, |group| {
+        found = group.len() >= fewest;
+        if found {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
         }
-        seen[start] = true;
-        stack.push(LocalPoint::new(start as u32));
-        let mut size = 0;
-        while let Some(p) = stack.pop() {
-            size += 1;
-            let near_p = nearest(p);
-            for q in full.delaunay_neighbours(p) {
-                if degree[q.index()] != 0 || seen[q.index()] {
-                    continue;
-                }
-                // `q`'s own nearest distance only when `p`'s does not link them (a walk
-                // around `q`: most pairs never need it).
-                let d = distance(at(p), at(q));
-                if d <= LINK * near_p || d <= LINK * nearest(q) {
-                    seen[q.index()] = true;
-                    stack.push(q);
-                }
-            }
-        }
-        if size >= fewest {
-            return true;
-        }
-    }
-    false
+    });
+    found
 }

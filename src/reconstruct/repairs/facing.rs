@@ -21,8 +21,9 @@
 
 use std::collections::HashMap;
 
+use super::shared::curve_edges;
 use crate::ids::LocalPoint;
-use crate::reconstruct::curves::{zigzags, Adjacency, LocalCurve};
+use crate::reconstruct::curves::{lexicographic, zigzags, Adjacency, LocalCurve};
 use crate::reconstruct::delaunay_graph::FastHash;
 use crate::reconstruct::lengths::distance;
 use crate::reconstruct::segment_walk::crosses_a_curve;
@@ -61,7 +62,7 @@ pub(crate) fn swap_facing_corners(
     if long.len() < 2 {
         return None;
     }
-    // The long edge at each point (at most one: a long edge is twice its neighbours), and
+    // The long edge at each point (at most one: a long edge is longer than its neighbours), and
     // which points are on a curve.
     const NONE: u32 = u32::MAX;
     let mut long_at = vec![NONE; n];
@@ -171,20 +172,30 @@ pub(crate) fn swap_facing_corners(
         // The same swap found from either edge is one: its ends and links read from the
         // lexicographically smaller long edge.
         let [p, q, r, s] = w.ends.map(at);
-        let (mut ends, mut via) = ([p, q, r, s], w.via.map(|v| v.map(at)));
-        if lexicographic(&[r, s], &[p, q]).is_lt() {
-            ends = [r, s, p, q];
-            via = [via[0], via[1]];
-        }
-        let via = via.map(|v| v.unwrap_or([f64::NAN; 2]));
+        let ends = if by_coordinates(&[r, s], &[p, q]).is_lt() {
+            [r, s, p, q]
+        } else {
+            [p, q, r, s]
+        };
+        let via = w.via.map(|v| v.map(at));
         (lengths, skipped, ends, via)
     };
     found.sort_by(|x, y| {
         let (kx, ky) = (key(x), key(y));
         ky.0.total_cmp(&kx.0)
             .then_with(|| ky.1.cmp(&kx.1))
-            .then_with(|| lexicographic(&kx.2, &ky.2))
-            .then_with(|| lexicographic(&kx.3, &ky.3))
+            .then_with(|| by_coordinates(&kx.2, &ky.2))
+            .then_with(|| {
+                // A direct link first, then links through points by their coordinates.
+                kx.3.iter()
+                    .zip(&ky.3)
+                    .map(|(x, y)| match (x, y) {
+                        (Some(x), Some(y)) => lexicographic(*x, *y),
+                        _ => x.is_some().cmp(&y.is_some()),
+                    })
+                    .find(|o| o.is_ne())
+                    .unwrap_or(std::cmp::Ordering::Equal)
+            })
     });
     let mut used_edge = vec![false; long.len()];
     let mut used_point: Vec<LocalPoint> = Vec::new();
@@ -282,23 +293,17 @@ fn long_loop_edges(points: &[[f64; 2]], curves: &[LocalCurve]) -> Vec<LongEdge> 
     long
 }
 
-/// Lists of points compared lexicographically by their coordinates (`total_cmp`).
-fn lexicographic(a: &[[f64; 2]], b: &[[f64; 2]]) -> std::cmp::Ordering {
+/// Lists of points compared point by point, each by its coordinates
+/// ([`lexicographic`]: by value, so that `-0.0` and `0.0`, one point, compare equal).
+fn by_coordinates(a: &[[f64; 2]], b: &[[f64; 2]]) -> std::cmp::Ordering {
     a.iter()
-        .flatten()
-        .zip(b.iter().flatten())
-        .map(|(x, y)| x.total_cmp(y))
+        .zip(b)
+        .map(|(&x, &y)| lexicographic(x, y))
         .find(|o| o.is_ne())
         .unwrap_or(std::cmp::Ordering::Equal)
 }
 
-/// The edges `[min, max]` of a curve.
-fn curve_edges(c: &LocalCurve) -> impl Iterator<Item = [LocalPoint; 2]> + '_ {
-    let k = c.points.len();
-    let count = if c.closed { k } else { k.saturating_sub(1) };
-    (0..count).map(move |i| ordered([c.points[i], c.points[(i + 1) % k]]))
-}
-
+/// An edge as `[min, max]`.
 fn ordered([a, b]: [LocalPoint; 2]) -> [LocalPoint; 2] {
     [a.min(b), a.max(b)]
 }

@@ -2,8 +2,10 @@
 //! and which inner Voronoi vertices those holes take away from the medial axis. All point
 //! indices here are local to the full triangulation.
 
+use std::ops::ControlFlow;
+
 use super::ears::{repair_ears, Ears};
-use super::shared::{edges_near, lies_apart, median_length, segment_distance};
+use super::shared::{curve_edges, edges_near, lies_apart, median_length, segment_distance};
 use crate::delaunay::triangulate;
 use crate::ids::{ids, HalfEdge, LocalPoint};
 use crate::reconstruct::curves::{assemble_unnamed, Adjacency, LocalCurve};
@@ -89,7 +91,9 @@ pub(crate) fn peel(
         }
         budget -= rest.len();
         let scale = median_length(points, edges);
-        let mut pass = later_pass(full, &curve, &rest, options);
+        let mut pass = later_pass(full, &rest, options);
+        pass.chords
+            .retain(|&[a, b]| !crosses_a_curve(full, &curve, a, b));
         let chord_loops = loops_by_chords(full, &curve, &mut pass);
         let found = Adjacency::new(n, &pass.edges);
         let mut new_curves = Vec::new();
@@ -97,7 +101,7 @@ pub(crate) fn peel(
         for mut piece in chord_loops.into_iter().chain(pieces) {
             close_by_chord(full, &curve, &found, &pass.chords, &mut piece);
             if is_a_curve(points, &piece, scale) {
-                new_curves.extend(piece_edges(&piece));
+                new_curves.extend(curve_edges(&piece));
             } else {
                 for &p in &piece.points {
                     spent[p.index()] = true;
@@ -157,6 +161,26 @@ fn first_pass_may_run(full: &Voronoi<'_>, edges: &[[LocalPoint; 2]]) -> bool {
 /// The groups are sets of points: the result does not depend on the input order. `rest` is
 /// sorted.
 fn isolated_leftovers(full: &Voronoi<'_>, rest: &[LocalPoint]) -> Vec<LocalPoint> {
+    let mut isolated = Vec::new();
+    leftover_groups(full, rest, |group| {
+        if group.len() < MIN_GROUP {
+            isolated.extend(group.iter().map(|&i| rest[i]));
+        }
+        ControlFlow::Continue(())
+    });
+    isolated
+}
+
+/// The groups of `rest` (sorted), as positions in it, each handed to `each` as it is found
+/// (which may stop the search): points linked to a Delaunay neighbour (of all the points) in
+/// `rest` no farther than [`LINK`] times the longer of their nearest-neighbour distances,
+/// and the points linked to those. Groups are sets: which are found does not depend on the
+/// input order.
+pub(super) fn leftover_groups(
+    full: &Voronoi<'_>,
+    rest: &[LocalPoint],
+    mut each: impl FnMut(&[usize]) -> ControlFlow<()>,
+) {
     let points = &full.triangulation().points;
     let at = |p: LocalPoint| points[p.index()];
     // Position in `rest` (sorted) of a point, or none: an array over all points, or for
@@ -181,7 +205,6 @@ fn isolated_leftovers(full: &Voronoi<'_>, rest: &[LocalPoint]) -> Vec<LocalPoint
         })
         .collect();
     let mut grouped = vec![false; rest.len()];
-    let mut isolated = Vec::new();
     for start in 0..rest.len() {
         if grouped[start] {
             continue;
@@ -203,28 +226,23 @@ fn isolated_leftovers(full: &Voronoi<'_>, rest: &[LocalPoint]) -> Vec<LocalPoint
                 }
             }
         }
-        if group.len() < MIN_GROUP {
-            isolated.extend(group.iter().map(|&i| rest[i]));
+        if each(&group).is_break() {
+            return;
         }
     }
-    isolated
 }
 
 /// What a later pass found: its WDM_CRUST edges that are edges of the full triangulation
-/// (`[min, max]`, local indices of the full triangulation, sorted), and the other ones that
-/// cross no curve found before (sorted): candidates for [`close_by_chord`].
+/// (`[min, max]`, local indices of the full triangulation, sorted), and the other ones
+/// (sorted): [`peel`] keeps those that cross no curve found before, candidates for
+/// [`close_by_chord`].
 pub(super) struct LaterPass {
     pub(super) edges: Vec<[LocalPoint; 2]>,
     pub(super) chords: Vec<[LocalPoint; 2]>,
 }
 
 /// WDM_CRUST on the points `rest` alone (see [`peel`]).
-pub(super) fn later_pass(
-    full: &Voronoi<'_>,
-    earlier: &Adjacency,
-    rest: &[LocalPoint],
-    options: &Options,
-) -> LaterPass {
+pub(super) fn later_pass(full: &Voronoi<'_>, rest: &[LocalPoint], options: &Options) -> LaterPass {
     let points = &full.triangulation().points;
     let subset: Vec<[f64; 2]> = rest.iter().map(|&i| points[i.index()]).collect();
     let nothing = LaterPass {
@@ -246,7 +264,7 @@ pub(super) fn later_pass(
     // rule below opens the loop there; ARCHITECTURE.md, "Ears").
     repair_ears(&vor, &mut labels, &mut crust, Ears::Drop);
     // `sub`'s local points are its own; its caller indices are positions in `rest`.
-    let (mut edges, chords): (Vec<[LocalPoint; 2]>, Vec<[LocalPoint; 2]>) = crust
+    let (mut edges, mut chords): (Vec<[LocalPoint; 2]>, Vec<[LocalPoint; 2]>) = crust
         .iter()
         .map(|&[a, b]| {
             let at = |p: LocalPoint| rest[sub.input_index(p) as usize];
@@ -254,10 +272,6 @@ pub(super) fn later_pass(
             [a.min(b), a.max(b)]
         })
         .partition(|&[a, b]| full.is_delaunay_edge(a, b));
-    let mut chords: Vec<[LocalPoint; 2]> = chords
-        .into_iter()
-        .filter(|&[a, b]| !crosses_a_curve(full, earlier, a, b))
-        .collect();
     edges.sort_unstable();
     chords.sort_unstable();
     LaterPass { edges, chords }
@@ -291,7 +305,7 @@ fn close_by_chord(
     }
     piece.closed = true;
     let points = &full.triangulation().points;
-    let spacing = median_length(points, &piece_edges(piece));
+    let spacing = median_length(points, &curve_edges(piece));
     if !lies_apart(
         full,
         |q| earlier.neighbours(q),
@@ -332,7 +346,7 @@ fn loops_by_chords(
         if !piece.closed {
             continue;
         }
-        let edges = piece_edges(&piece);
+        let edges = curve_edges(&piece);
         if !edges.iter().any(is_chord) {
             continue;
         }
@@ -356,17 +370,6 @@ fn loops_by_chords(
     loops.into_iter().map(|(piece, _)| piece).collect()
 }
 
-/// The edges `[min, max]` of a curve (a closed one includes its closing edge).
-pub(super) fn piece_edges(curve: &LocalCurve) -> Vec<[LocalPoint; 2]> {
-    let p = &curve.points;
-    let closing = curve.closed.then(|| [p[p.len() - 1], p[0]]);
-    p.windows(2)
-        .map(|w| [w[0], w[1]])
-        .chain(closing)
-        .map(|[a, b]| [a.min(b), a.max(b)])
-        .collect()
-}
-
 /// Does a piece a later pass found read as a sampled curve, not as noise?
 /// * sampled like the curves found before it: the median edge at most [`SPARSER_LOOP`]
 ///   times theirs (`scale`);
@@ -384,7 +387,7 @@ fn is_a_curve(points: &[[f64; 2]], curve: &LocalCurve, scale: f64) -> bool {
     } else {
         MIN_CHAIN_POINTS
     };
-    if p.len() < fewest || median_length(points, &piece_edges(curve)) > SPARSER_LOOP * scale {
+    if p.len() < fewest || median_length(points, &curve_edges(curve)) > SPARSER_LOOP * scale {
         return false;
     }
     if curve.closed {

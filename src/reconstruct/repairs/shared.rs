@@ -1,4 +1,4 @@
-//! What the repairs share: the curves' degrees and median edge, the curve edges near a set of
+//! What the repairs share: the curves' edges, degrees and median edge, the curve edges near a set of
 //! points and the distance test of a loop to the curves found before (peeling and the
 //! islets), and the curves as edited by swaps with the repair that results (the detours and
 //! the spikes). Kept here so that no repair borrows from another.
@@ -7,10 +7,21 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use crate::ids::LocalPoint;
 use crate::reconstruct::bits::Bits;
-use crate::reconstruct::curves::{Adjacency, SomeAdjacency};
+use crate::reconstruct::curves::{Adjacency, LocalCurve, SomeAdjacency};
 use crate::reconstruct::lengths::distance;
 use crate::reconstruct::thresholds::peel::APART;
 use crate::voronoi::Voronoi;
+
+/// The edges `[min, max]` of a curve (a closed one includes its closing edge).
+pub(crate) fn curve_edges(curve: &LocalCurve) -> Vec<[LocalPoint; 2]> {
+    let p = &curve.points;
+    let closing = curve.closed.then(|| [p[p.len() - 1], p[0]]);
+    p.windows(2)
+        .map(|w| [w[0], w[1]])
+        .chain(closing)
+        .map(|[a, b]| [a.min(b), a.max(b)])
+        .collect()
+}
 
 /// The crust degree of every point (saturating at 255). Degrees are even: the labels change an
 /// even number of times around a cell.

@@ -308,12 +308,21 @@ fn smoothing_is_independent_of_order_and_scale() {
     let fitted = |rec: &Reconstruction, i: u32| rec.curve_vertex(i).unwrap();
     let plain = reconstruct_with(&points, &Options::new()).unwrap();
     assert!(!plain.smoothed() && rec.smoothed());
-    let mut moved = 0;
     for i in 0..points.len() as u32 {
         assert_eq!(plain.curve_vertex(i), Some(points[i as usize]));
-        moved += usize::from(fitted(&rec, i) != points[i as usize]);
     }
-    assert!(moved > 500, "only {moved} moved");
+    // Noise of a spacing: the vertices of the curves (through all the points, or through
+    // representatives where the sample is thinned) nearly all move.
+    let on_curves: Vec<u32> = rec.curves().iter().flat_map(|c| c.points.clone()).collect();
+    let moved = on_curves
+        .iter()
+        .filter(|&&i| fitted(&rec, i) != points[i as usize])
+        .count();
+    assert!(
+        on_curves.len() >= 100 && 10 * moved > 9 * on_curves.len(),
+        "only {moved} of {} moved",
+        on_curves.len()
+    );
     for round in 0..3 {
         let order = rng.permutation(points.len());
         let shuffled: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();

@@ -17,7 +17,7 @@ use super::repairs::shared::Repair;
 use super::result::{untouched_points, MedialAxis, Reconstruction};
 use super::scatter;
 use super::smooth;
-use super::thinning;
+use super::thinning::{self, uncertain};
 use super::wdm::{self, Label, LabelRule};
 use super::{crust, nn_crust};
 use crate::delaunay::Triangulation;
@@ -152,7 +152,7 @@ pub fn reconstruct_observed(
     // Everything runs in the frame (the points exactly rescaled, see `frame`) and on the
     // triangulation's local indices (its locality order); the coordinates, curves and
     // edges come out in the caller's.
-    let (mut triangulation, frame) = Frame::triangulate(points)?;
+    let (triangulation, frame) = Frame::triangulate(points)?;
     lap(Phase::Triangulate);
     // Whether the probes read an area: a scatter is then possible (see `scatter`).
     let mut area = false;
@@ -163,14 +163,50 @@ pub fn reconstruct_observed(
             thinning::Reading::Band(local) => {
                 return thinned(points, triangulation, frame, &local, options, on_phase);
             }
+            thinning::Reading::Uncertain(local) => {
+                let given = as_given(points, triangulation, frame, options, false, &mut lap);
+                if !uncertain::doubtful(&given) {
+                    return Ok(given);
+                }
+                // The same triangulation again, in the frame (the result holds its own in
+                // the caller's coordinates): built only where it is needed, it is not held
+                // through the first reconstruction's memory peak.
+                let (triangulation, frame) = Frame::triangulate(points)?;
+                let through = thinned(points, triangulation, frame, &local, options, on_phase)?;
+                return Ok(if uncertain::preferred(&through, &given) {
+                    through
+                } else {
+                    given
+                });
+            }
             thinning::Reading::Area => area = true,
             thinning::Reading::Neither => {}
         }
     }
+    Ok(as_given(
+        points,
+        triangulation,
+        frame,
+        options,
+        area,
+        &mut lap,
+    ))
+}
+
+/// The reconstruction of the points as they are (no thinning); `area` when the thinning's
+/// probes read an area.
+fn as_given(
+    points: &[[f64; 2]],
+    mut triangulation: Triangulation,
+    frame: Frame,
+    options: &Options,
+    area: bool,
+    lap: &mut dyn FnMut(Phase),
+) -> Reconstruction {
     let mut outcome = if options.algorithm() == Algorithm::Wdm {
-        wdm_crust(&triangulation, frame, options, area, &mut lap)
+        wdm_crust(&triangulation, frame, options, area, lap)
     } else {
-        let mut outcome = baseline(&triangulation, options, &mut lap);
+        let mut outcome = baseline(&triangulation, options, lap);
         outcome.fitted = smoothing(&triangulation, &outcome.curves, options);
         if options.smoothing() {
             lap(Phase::Smooth);
@@ -182,7 +218,7 @@ pub fn reconstruct_observed(
         .fitted
         .take()
         .map(|moved| frame.fitted_to_caller(&triangulation, moved));
-    Ok(Reconstruction {
+    Reconstruction {
         algorithm: options.algorithm(),
         triangulation,
         labels: outcome.labels,
@@ -196,7 +232,7 @@ pub fn reconstruct_observed(
         fitted,
         warnings: Default::default(),
         thinned: None,
-    })
+    }
 }
 
 /// What a run of one algorithm leaves for the [`Reconstruction`]: the curves, edges and

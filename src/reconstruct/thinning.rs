@@ -25,6 +25,8 @@
 //! representatives are the same for any input order; which points they are is all that
 //! leaves this module, and the exact engine reconstructs them as given.
 
+pub(super) mod uncertain;
+
 use std::collections::{HashMap, HashSet};
 
 use super::delaunay_graph::{FastHash, Graph, Waiting};
@@ -32,6 +34,7 @@ use super::lengths::distance;
 use super::thresholds::thinning::{
     BAND_SPACINGS, CONFIRM_RUNGS, COVER_RADIUS, LARGE_BAND_SPACINGS, LARGE_SAMPLE, MAX_ASPECT,
     MIN_CLUSTER_SHARE, MIN_THINNED_POINTS, PROBES, QUIET_SPACINGS, RECENTRINGS, SUBSAMPLE,
+    UNCERTAIN_SPACINGS,
 };
 use crate::delaunay::Triangulation;
 use crate::ids::{ids, LocalPoint};
@@ -46,6 +49,11 @@ const LADDER: [usize; 15] = [
 pub(super) enum Reading {
     /// A dense noisy band, and its representatives (local indices, ascending).
     Band(Vec<LocalPoint>),
+    /// Noise of a large share of the spacing, short of a band ([`UNCERTAIN_SPACINGS`] up to
+    /// the band's threshold): the water flow may reconstruct the points as they are or
+    /// leave junk, and the representatives of a band of that noise (ascending) are the
+    /// alternative the caller weighs against them.
+    Uncertain(Vec<LocalPoint>),
     /// An area: at least half the probes' neighbourhoods never turn thin (a uniform
     /// scatter, a filled region), up to the ladder's last size.
     Area,
@@ -59,8 +67,9 @@ pub(super) fn read(tri: &Triangulation) -> Reading {
     if n < MIN_THINNED_POINTS || tri.is_degenerate() {
         return Reading::Neither;
     }
-    let sigma = match band_noise(tri) {
-        Noise::Band(sigma) => sigma,
+    let (sigma, certain) = match band_noise(tri) {
+        Noise::Band(sigma) => (sigma, true),
+        Noise::Uncertain(sigma) => (sigma, false),
         Noise::Area => return Reading::Area,
         Noise::Neither => return Reading::Neither,
     };
@@ -74,18 +83,26 @@ pub(super) fn read(tri: &Triangulation) -> Reading {
     if representatives.len() < 3 {
         return Reading::Neither;
     }
-    Reading::Band(representatives)
+    if certain {
+        Reading::Band(representatives)
+    } else {
+        Reading::Uncertain(representatives)
+    }
 }
 
 /// The noise of a band, or what else the probes saw.
 enum Noise {
-    /// The band's across deviation, in the frame's units.
+    /// A band: the noise its cover is drawn for (its across deviation, at least
+    /// [`BAND_SPACINGS`] of its spacing), in the frame's units.
     Band(f64),
+    /// Noise of at least [`UNCERTAIN_SPACINGS`] of the spacing, short of a band: the noise a
+    /// cover of it is drawn for, as for a band.
+    Uncertain(f64),
     Area,
     Neither,
 }
 
-/// The noise of the band (its across deviation, in the frame's units), or what else the
+/// The noise of the band or of the uncertain sample (see [`Noise`]), or what else the
 /// probes saw.
 fn band_noise(tri: &Triangulation) -> Noise {
     let n = tri.points.len();
@@ -117,49 +134,72 @@ fn band_noise(tri: &Triangulation) -> Noise {
     let probes = m.div_ceil(stride);
     let probe = |i: usize| LocalPoint::new((i * stride) as u32);
     let turns = parallel::map_range(probes, |i| turn(probed, &graph, probe(i)));
-    let banded_at: Vec<usize> = (0..probes)
-        .filter(|&i| {
-            turns[i].as_ref().is_some_and(|t| {
-                // The spacing along the curve of all the points, not only the subsample's.
-                t.deviation >= threshold * t.spacing(rate)
+    // The probes whose noise is at least `threshold` spacings, when they are at least half
+    // of them: their deviations, sorted.
+    let banded = |threshold: f64| -> Option<Vec<f64>> {
+        let banded_at: Vec<usize> = (0..probes)
+            .filter(|&i| {
+                turns[i].as_ref().is_some_and(|t| {
+                    // The spacing along the curve of all the points, not only the subsample's.
+                    t.deviation >= threshold * t.spacing(rate)
+                })
             })
-        })
-        .collect();
-    // A subsample's neighbourhood spans `rate` times more curve than the same number of all
-    // the points, and on a curved stretch its deviation is the arc's sagitta, not noise: clean
-    // curves of 200 000 and 10^6 points read as bands. A subsample probe counts for the band
-    // only where all the points around it do not turn thin, within CONFIRM_RUNGS of the
-    // ladder, with a deviation under QUIET_SPACINGS of their spacing (a band too wide to
-    // turn thin that soon is confirmed as it was read).
-    let banded_at = if rate == 1 || 2 * banded_at.len() < probes {
-        banded_at
-    } else {
-        let quiet = parallel::map_range(banded_at.len(), |k| {
-            let at = kept_ids[probed.input_index(probe(banded_at[k])) as usize];
-            turn_in_order(&tri.points, at)
-                .is_some_and(|t| t.deviation < QUIET_SPACINGS * t.spacing(1))
-        });
-        banded_at
-            .iter()
-            .zip(quiet)
-            .filter(|&(_, quiet)| !quiet)
-            .map(|(&i, _)| i)
-            .collect()
-    };
-    let mut banded: Vec<f64> = banded_at
-        .iter()
-        .filter_map(|&i| turns[i].as_ref().map(|t| t.deviation))
-        .collect();
-    if 2 * banded.len() < probes {
-        let never_thin = turns.iter().filter(|t| t.is_none()).count();
-        return if 2 * never_thin >= probes {
-            Noise::Area
+            .collect();
+        // A subsample's neighbourhood spans `rate` times more curve than the same number of
+        // all the points, and on a curved stretch its deviation is the arc's sagitta, not
+        // noise: clean curves of 200 000 and 10^6 points read as bands. A subsample probe
+        // counts for the band only where all the points around it do not turn thin, within
+        // CONFIRM_RUNGS of the ladder, with a deviation under QUIET_SPACINGS of their spacing
+        // (a band too wide to turn thin that soon is confirmed as it was read).
+        let banded_at = if rate == 1 || 2 * banded_at.len() < probes {
+            banded_at
         } else {
-            Noise::Neither
+            let quiet = parallel::map_range(banded_at.len(), |k| {
+                let at = kept_ids[probed.input_index(probe(banded_at[k])) as usize];
+                turn_in_order(&tri.points, at)
+                    .is_some_and(|t| t.deviation < QUIET_SPACINGS * t.spacing(1))
+            });
+            banded_at
+                .iter()
+                .zip(quiet)
+                .filter(|&(_, quiet)| !quiet)
+                .map(|(&i, _)| i)
+                .collect()
         };
+        let mut deviations: Vec<f64> = banded_at
+            .iter()
+            .filter_map(|&i| turns[i].as_ref().map(|t| t.deviation))
+            .collect();
+        if 2 * deviations.len() < probes {
+            return None;
+        }
+        deviations.sort_by(f64::total_cmp);
+        Some(deviations)
+    };
+    // The noise the cover is drawn for: the banded probes' median deviation, and never less
+    // than BAND_SPACINGS of the sample's spacing (the median over the probes that turned),
+    // the thinnest band read below LARGE_SAMPLE. Finer covers (large samples from a third
+    // of a spacing, uncertain ones from a fifth) hold a few points a disk: their
+    // representatives were spaced unevenly, in gaps five times their median step, and
+    // the water flow left open curves in pieces and closed curves open.
+    let cover_noise = |deviations: Vec<f64>| {
+        let mut spacings: Vec<f64> = turns.iter().flatten().map(|t| t.spacing(rate)).collect();
+        spacings.sort_by(f64::total_cmp);
+        let spacing = spacings.get(spacings.len() / 2).copied().unwrap_or(0.0);
+        deviations[deviations.len() / 2].max(BAND_SPACINGS * spacing)
+    };
+    if let Some(deviations) = banded(threshold) {
+        return Noise::Band(cover_noise(deviations));
     }
-    banded.sort_by(f64::total_cmp);
-    Noise::Band(banded[banded.len() / 2])
+    if let Some(deviations) = banded(UNCERTAIN_SPACINGS) {
+        return Noise::Uncertain(cover_noise(deviations));
+    }
+    let never_thin = turns.iter().filter(|t| t.is_none()).count();
+    if 2 * never_thin >= probes {
+        Noise::Area
+    } else {
+        Noise::Neither
+    }
 }
 
 /// SplitMix64's finaliser: a subsample that owes nothing to the locality order's pattern.

@@ -133,6 +133,40 @@ fn a_noisy_circle_is_fitted_well_within_its_noise() {
     assert!(judged >= 4, "only {judged} seeds reconstructed the circle");
 }
 
+/// A dense band of 20 000 points (σ = 1 and 2 % of the diagonal) is thinned to a few
+/// dozen representatives, a step apart by hundreds of samples: every vertex of its curve is
+/// fitted to them, and the fitted curve lies far closer to the circle than the samples do.
+/// The windows of such bands stopped at a fixed cap of samples while still round (no curve
+/// piece), and no vertex moved: the curve stayed at the representatives.
+#[test]
+fn a_band_of_many_points_a_step_is_fitted() {
+    for (seed, share) in [(131, 0.01), (132, 0.02)] {
+        let mut rng = Rng::new(seed);
+        let sigma = share * 2.0 * 2.0f64.sqrt();
+        let points = noisy_circle(20_000, 1.0, sigma, &mut rng);
+        let rec = smoothed(&points);
+        assert!(rec.thinned().is_some(), "σ = {share}");
+        assert_eq!(rec.curves().len(), 1, "σ = {share}");
+        let curve = &rec.curves()[0];
+        let fitted = rec.curve_coords(curve);
+        let unmoved = curve
+            .points
+            .iter()
+            .zip(&fitted)
+            .filter(|&(&i, &f)| f == points[i as usize])
+            .count();
+        assert_eq!(unmoved, 0, "σ = {share}");
+        let off = |p: [f64; 2]| (p[0].hypot(p[1]) - 1.0).abs();
+        let input = rms(points.iter().map(|&p| off(p)));
+        let representatives = rms(curve.points.iter().map(|&i| off(points[i as usize])));
+        let smoothed = rms(fitted.into_iter().map(off));
+        assert!(
+            smoothed <= 0.15 * input && smoothed < representatives,
+            "σ = {share}: fitted {smoothed:.5}, representatives {representatives:.5}, input {input:.5}"
+        );
+    }
+}
+
 /// On clean ε-samples of smooth curves (ε = 0.2 and 0.39) and of polygons, every vertex
 /// moves by at most a small share of its spacing.
 #[test]

@@ -118,3 +118,12 @@ impl Hasher for FastHasher {
         self.write_u64(u64::from(v));
     }
 }
+
+/// SplitMix64's finaliser: subsamples by `mix(local index) % rate` owe nothing to the
+/// locality order's pattern, and depend on the points only.
+pub(super) fn mix(i: u64) -> u64 {
+    let mut z = i.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}

@@ -16,7 +16,7 @@ use super::repairs::peel::{hole_edges, parity_inside, peel, Peeling};
 use super::repairs::shared::Repair;
 use super::result::{untouched_points, MedialAxis, Reconstruction};
 use super::scatter;
-use super::smooth;
+use super::smooth::{self, Fitted};
 use super::thinning::{self, uncertain};
 use super::wdm::{self, Label, LabelRule};
 use super::{crust, nn_crust};
@@ -207,7 +207,7 @@ fn as_given(
         wdm_crust(&triangulation, frame, options, area, lap)
     } else {
         let mut outcome = baseline(&triangulation, options, lap);
-        outcome.fitted = smoothing(&triangulation, &outcome.curves, options);
+        outcome.fitted = smoothing(&triangulation, &outcome.curves, options, Fitted::Zigzagging);
         if options.smoothing() {
             lap(Phase::Smooth);
         }
@@ -297,7 +297,7 @@ fn wdm_crust(
     // Before the axis, which is then that of the fitted curves.
     let fitted = options
         .smoothing()
-        .then(|| smooth::fitted_positions(tri, &assembly.curves));
+        .then(|| smooth::fitted_positions(tri, &assembly.curves, Fitted::Zigzagging));
     if fitted.is_some() {
         lap(Phase::Smooth);
     }
@@ -626,7 +626,7 @@ fn thinned(
             points: w.points.iter().map(|&k| id(k)).collect(),
         })
         .collect();
-    let fitted = smoothing(&tri, &curves, options);
+    let fitted = smoothing(&tri, &curves, options, Fitted::Every);
     // With smoothing, the axis of the fitted curves (fitted to all the samples) instead of
     // the representatives' loops.
     let fitted_axis = match &fitted {
@@ -664,11 +664,16 @@ fn smoothing(
     tri: &Triangulation,
     curves: &[curves::Curve],
     options: &Options,
+    which: Fitted,
 ) -> Option<Vec<Option<[f64; 2]>>> {
     if !options.smoothing() {
         return None;
     }
-    Some(smooth::fitted_positions(tri, &local_curves(tri, curves)))
+    Some(smooth::fitted_positions(
+        tri,
+        &local_curves(tri, curves),
+        which,
+    ))
 }
 
 /// `curves` (caller indices) in the local indices of `tri`.

@@ -66,12 +66,12 @@ mod crossings;
 use std::collections::{BinaryHeap, HashMap, HashSet};
 
 use super::curves::{zigzags, LocalCurve};
-use super::delaunay_graph::{FastHash, Graph, Waiting};
+use super::delaunay_graph::{mix, FastHash, Graph, Waiting};
 use super::lengths::distance;
 use super::thresholds::smooth::{
     AGREEMENT, LINE_RADIUS, LINK, MAD_TO_SIGMA, MAX_ASPECT, MAX_WINDOW_POINTS, MAX_WINDOW_VERTICES,
     MIN_CIRCLE_RADIUS, MIN_FIT_POINTS, MIN_LINE_POINTS, RESIDUAL_GROWTH, ROBUST_ITERATIONS,
-    SCALE_STEP, SHIFT_RESIDUALS, SIDED_PREFERENCE, TUKEY, WINDOWS,
+    SCALE_STEP, SHIFT_RESIDUALS, SIDED_PREFERENCE, TUKEY, WINDOWS, WINDOW_STEPS,
 };
 use crate::delaunay::Triangulation;
 use crate::ids::LocalPoint;
@@ -81,11 +81,23 @@ use crate::parallel;
 /// on samples exactly on a line every fit's are about `1e-16 R`.
 const RESIDUAL_FLOOR: f64 = 1e-12;
 
+/// Which curves are fitted.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(super) enum Fitted {
+    /// Those that zigzag: noise is read off the curve itself.
+    Zigzagging,
+    /// Every curve: the curves of a band's representatives, which run smoothly along the
+    /// band's middle (they zigzag less the more points a band has) and lie off the true
+    /// curve by a share of the band's noise that the fit to all its samples takes back.
+    Every,
+}
+
 /// The fitted position of every point of `curves` (local indices, in the frame of `tri`),
 /// `None` for a point that stays where it is; indexed by local point.
 pub(super) fn fitted_positions(
     tri: &Triangulation,
     curves: &[LocalCurve],
+    which: Fitted,
 ) -> Vec<Option<[f64; 2]>> {
     let n = tri.points.len();
     let mut moved = vec![None; n];
@@ -107,7 +119,7 @@ pub(super) fn fitted_positions(
     }
     let mut vertices: Vec<(usize, usize)> = Vec::new();
     for (j, c) in curves.iter().enumerate() {
-        if c.points.len() < 2 || !zigzags(&tri.points, c) {
+        if c.points.len() < 2 || (which == Fitted::Zigzagging && !zigzags(&tri.points, c)) {
             continue;
         }
         for (i, &p) in c.points.iter().enumerate() {
@@ -116,9 +128,18 @@ pub(super) fn fitted_positions(
             }
         }
     }
+    // Where the samples are many to a curve vertex (a band's representatives: hundreds of
+    // samples a step), the windows keep one sample in `rate`, so that MAX_WINDOW_POINTS of
+    // them span WINDOW_STEPS steps: taking every sample, a window was still round at the
+    // cap (no curve piece), and the curves of bands of 20 000 points a curve did not move.
+    let vertex_count = curves.iter().map(|c| c.points.len()).sum::<usize>().max(1);
+    let rate = WINDOW_STEPS
+        .saturating_mul(n.div_ceil(vertex_count))
+        .div_ceil(MAX_WINDOW_POINTS)
+        .max(1) as u64;
     let fits = parallel::map_range(vertices.len(), |v| {
         let (j, i) = vertices[v];
-        fit_vertex(tri, &graph, &curves[j], i)
+        fit_vertex(tri, &graph, &curves[j], i, rate)
     });
     for (&(j, i), fit) in vertices.iter().zip(fits) {
         moved[curves[j].points[i].index()] = fit;
@@ -209,6 +230,7 @@ fn fit_vertex(
     graph: &Graph,
     curve: &LocalCurve,
     i: usize,
+    rate: u64,
 ) -> Option<[f64; 2]> {
     let at = |q: LocalPoint| tri.points[q.index()];
     let k = curve.points.len();
@@ -294,7 +316,9 @@ fn fit_vertex(
             }
             let (d, q) = (*d, *q);
             waiting.pop();
-            window.push((d, q, side_of(&guide, &guide_side, q)));
+            if rate == 1 || q == p || mix(q.get() as u64) % rate == 0 {
+                window.push((d, q, side_of(&guide, &guide_side, q)));
+            }
             for &w in graph.of(q) {
                 // Along the curve's samples only: not across the inside of a sparse curve,
                 // nor from one noise band to the next.

@@ -29,7 +29,7 @@ pub(super) mod uncertain;
 
 use std::collections::{HashMap, HashSet};
 
-use super::delaunay_graph::{FastHash, Graph, Waiting};
+use super::delaunay_graph::{mix, FastHash, Graph, Waiting};
 use super::lengths::distance;
 use super::thresholds::thinning::{
     BAND_SPACINGS, CONFIRM_RUNGS, COVER_RADIUS, LARGE_BAND_SPACINGS, LARGE_SAMPLE, MAX_ASPECT,
@@ -200,14 +200,6 @@ fn band_noise(tri: &Triangulation) -> Noise {
     } else {
         Noise::Neither
     }
-}
-
-/// SplitMix64's finaliser: a subsample that owes nothing to the locality order's pattern.
-fn mix(i: u64) -> u64 {
-    let mut z = i.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
 }
 
 /// Where a probe's neighbourhood turned thin.

@@ -380,3 +380,35 @@ fn a_cover_that_loses_a_curve_is_not_taken() {
     assert!(rec.thinned().is_none());
     assert_eq!(counts(&rec).0, 3);
 }
+
+#[test]
+fn the_choice_for_an_uncertain_sample_depends_neither_on_the_order_nor_on_the_scale() {
+    // An arc as in the test above, whose result as it is was junk: the representatives'
+    // result is taken, the same for any input order and at any exact power-of-two scale,
+    // up to the ends of the range (where lengths are measured by `hypot` instead of a
+    // square root of squares).
+    let arc = arc_270();
+    let mut rng = Rng::new(64);
+    let points = band(&arc, false, 2000, 0.003, &mut rng);
+    let rec = default(&points);
+    assert!(rec.thinned().is_some());
+    let identity: Vec<usize> = (0..points.len()).collect();
+    let edges = edges_in_original(&rec, &identity);
+    for round in 0..3 {
+        let order = rng.permutation(points.len());
+        let permuted: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
+        let other = default(&permuted);
+        assert_eq!(other.thinned(), rec.thinned(), "round {round}");
+        assert_eq!(edges_in_original(&other, &order), edges, "round {round}");
+    }
+    for k in [-1000, -600, -3, 7, 600, 1000] {
+        let scale = 2.0f64.powi(k);
+        let scaled: Vec<[f64; 2]> = points
+            .iter()
+            .map(|p| [p[0] * scale, p[1] * scale])
+            .collect();
+        let other = default(&scaled);
+        assert_eq!(other.thinned(), rec.thinned(), "scale 2^{k}");
+        assert_eq!(other.edges(), rec.edges(), "scale 2^{k}");
+    }
+}

@@ -502,3 +502,38 @@ fn codes_are_stable_names() {
         ]
     );
 }
+
+#[test]
+fn an_open_curve_broken_at_a_random_gap_is_warned() {
+    // 3 000 to 5 000 points at random positions along a 270° arc, noise of a tenth of the
+    // mean step: the largest gaps between neighbours are 7–9 mean steps, and where the
+    // open-curve stage leaves the arc in two or three chains they end about as far apart as
+    // the longest steps the chains span, far more than 4× the steps at their ends. Such a
+    // result came back without a warning; the chains' longest edges now tell.
+    let mut broken = 0;
+    for seed in 0..24u64 {
+        let mut rng = Rng::new(900 + seed);
+        let n = 3000 + 1000 * (seed as usize % 3);
+        let spacing = 0.75 * TAU / n as f64;
+        let points: Vec<[f64; 2]> = (0..n)
+            .map(|_| {
+                let t = rng.range(0.0, 0.75 * TAU);
+                [
+                    t.cos() + 0.1 * spacing * rng.normal(),
+                    t.sin() + 0.1 * spacing * rng.normal(),
+                ]
+            })
+            .collect();
+        let rec = reconstruct(&points).unwrap();
+        if rec.curves().len() > 1 {
+            broken += 1;
+            assert!(
+                codes(&rec).contains(&WarningCode::ChainEndsClose),
+                "seed {seed}: {} pieces, warnings {:?}",
+                rec.curves().len(),
+                codes(&rec)
+            );
+        }
+    }
+    assert!(broken > 0, "no arc broke: the test exercises nothing");
+}

@@ -28,8 +28,8 @@ use super::lengths::distance;
 use super::proximity::closer;
 use super::result::{Reconstruction, Warning, WarningCode};
 use super::thresholds::warnings::{
-    CLOSE_CURVE_STEPS, CLOSE_ENDS_DOUBLINGS, GAP_EDGE_DOUBLINGS, LONG_EDGE_DOUBLINGS,
-    LONG_EDGE_OUTLIER_DOUBLINGS,
+    CLOSE_CURVE_STEPS, CLOSE_ENDS_DOUBLINGS, CLOSE_ENDS_LONGEST_DOUBLINGS, GAP_EDGE_DOUBLINGS,
+    LONG_EDGE_DOUBLINGS, LONG_EDGE_OUTLIER_DOUBLINGS,
 };
 use crate::delaunay::{triangulate, NO_TWIN};
 use crate::ids::LocalPoint;
@@ -504,7 +504,8 @@ fn edge_warnings(rec: &Reconstruction, view: &CurveView, survey: &Survey) -> Vec
 }
 
 /// `chain-ends-close`: two open chains whose ends are at most `2^CLOSE_ENDS_DOUBLINGS` times
-/// the step at each end apart. The pairs looked at are the edges of the Delaunay
+/// the step at each end apart, or at most `2^CLOSE_ENDS_LONGEST_DOUBLINGS` times the longest
+/// edge of each chain. The pairs looked at are the edges of the Delaunay
 /// triangulation of the chain ends alone: an end's nearest other end is among them.
 fn chain_ends_close(rec: &Reconstruction, view: &CurveView) -> Option<Warning> {
     let tri = &rec.triangulation;
@@ -539,6 +540,21 @@ fn chain_ends_close(rec: &Reconstruction, view: &CurveView) -> Option<Warning> {
     if ends.len() < 4 {
         return None;
     }
+    // Each chain's longest edge: samples at random positions leave gaps far longer than the
+    // steps at the ends beside them, as long as the longest gaps the chain itself spans.
+    let mut longest: Vec<[LocalPoint; 2]> = vec![[LocalPoint::new(0); 2]; view.curves.len()];
+    for (c, (curve, closed)) in view.curves.iter().enumerate() {
+        if *closed || curve.len() < 2 {
+            continue;
+        }
+        let mut best = [curve[0], curve[1]];
+        for w in curve.windows(2) {
+            if length_order(at(w[0]), at(w[1]), at(best[0]), at(best[1])) == Ordering::Greater {
+                best = [w[0], w[1]];
+            }
+        }
+        longest[c] = best;
+    }
     // One site per end point: a junction is the end of several chains (in the single
     // pass), and which of them a merged duplicate would stand for followed the input order.
     ends.sort_unstable_by_key(|&(p, c, _)| (p, c));
@@ -565,10 +581,16 @@ fn chain_ends_close(rec: &Reconstruction, view: &CurveView) -> Option<Warning> {
             sites[among.input_index(among.org(e)) as usize],
             sites[among.input_index(among.dest(e)) as usize],
         );
+        let within_longest = |[a, b]: [LocalPoint; 2]| {
+            scaled_length_order(at(p), at(q), at(a), at(b), CLOSE_ENDS_LONGEST_DOUBLINGS)
+                != Ordering::Greater
+        };
         let close = of_site(p).iter().any(|x| {
-            of_site(q)
-                .iter()
-                .any(|y| x.1 != y.1 && within(p, q, x.2) && within(p, q, y.2))
+            of_site(q).iter().any(|y| {
+                x.1 != y.1
+                    && ((within(p, q, x.2) && within(p, q, y.2))
+                        || (within_longest(longest[x.1]) && within_longest(longest[y.1])))
+            })
         });
         if !close {
             continue;
@@ -585,8 +607,8 @@ fn chain_ends_close(rec: &Reconstruction, view: &CurveView) -> Option<Warning> {
         code: WarningCode::ChainEndsClose,
         message: format!(
             "{} within a few steps of each other (points {i} and {j} at {}): if they are one curve, \
-             noise or a corner sharper than the spacing allows broke it there; sample it more \
-             densely or with less noise",
+             noise, a gap in the samples or a corner sharper than the spacing allows broke it \
+             there; sample it more densely or with less noise",
             count(pairs, "pair of open chains ends", "pairs of open chains end"),
             position(at(tri.local_index(i)))
         ),

@@ -1,4 +1,5 @@
-//! The reconstruction, top to bottom: triangulate, dual, label, extract, peel, assemble.
+//! The reconstruction, top to bottom: triangulate, thin (a noisy band, or an uncertain sample
+//! whose result is junk), dual, label, extract, peel, assemble.
 
 use super::curves;
 use super::curves::chain_edges;
@@ -105,7 +106,9 @@ pub enum Phase {
     /// Thinning ([`Options::with_thinning`], WDM): recognising a dense noisy band and
     /// choosing its representatives. When it chose some, the phases of their reconstruction
     /// follow (from [`Triangulate`](Self::Triangulate) on), then [`Curves`](Self::Curves)
-    /// again for the way back to all the points.
+    /// again for the way back to all the points. An uncertain sample (noisy, short of a
+    /// band) reports the phases of its reconstruction as it is first, and where that is
+    /// doubtful those of the representatives' after them.
     Thin,
 }
 

@@ -20,9 +20,10 @@ use crate::reconstruct::thresholds::thinning::{MAX_UNCOVERED_SHARE, REACH_STEPS}
 
 /// Whether the reconstruction of an uncertain sample as it is may be junk: it carries a
 /// warning or an open chain (the pieces a noisy stretch breaks into), and most of its
-/// curves' points lie on curves that zigzag ([`curves::zigzags`]). Clean samples whose
-/// curves run close together (line drawings) read as noisy to the probes too, and their
-/// warned results are better than any cover of them: their curves do not zigzag.
+/// curves' points lie on curves that zigzag ([`curves::zigzags`]), or it has no curve and a
+/// warning. Clean samples whose curves run close together (line drawings) read as noisy to
+/// the probes too, and their warned results are better than any cover of them: their
+/// curves do not zigzag.
 pub(in crate::reconstruct) fn doubtful(given: &Reconstruction) -> bool {
     if given.warnings().is_empty() && given.curves.iter().all(|c| c.closed) {
         return false;
@@ -36,7 +37,7 @@ pub(in crate::reconstruct) fn doubtful(given: &Reconstruction) -> bool {
             zigzagging += curve.points.len();
         }
     }
-    2 * zigzagging >= all.max(1)
+    2 * zigzagging >= all
 }
 
 /// Whether the reconstruction `through` the representatives of an uncertain sample is
@@ -55,7 +56,7 @@ pub(in crate::reconstruct) fn preferred(through: &Reconstruction, given: &Recons
 /// a noisy sample lies inside its band, within a step or two of the representatives' curve
 /// through it; a curve the cover lost lies as far away as it lay from the other curves.
 ///
-/// A statistic in rounded arithmetic (squared distances, a grid of cells a reach wide): it
+/// A statistic in rounded arithmetic (rounded distances, a grid of cells a reach wide): it
 /// chooses between two exact results and decides nothing in either.
 fn uncovered_share(through: &Reconstruction, given: &Reconstruction) -> f64 {
     let at = |rec: &Reconstruction, i: u32| rec.triangulation.point(i);

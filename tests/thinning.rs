@@ -181,6 +181,25 @@ fn edges_in_original(rec: &Reconstruction, order: &[usize]) -> BTreeSet<[usize; 
         .collect()
 }
 
+/// `rec`, computed on `points` with `options`, has the same representatives and edges
+/// (in the caller's indices) for three random input orders.
+fn assert_same_in_any_order(
+    points: &[[f64; 2]],
+    rec: &Reconstruction,
+    options: &Options,
+    rng: &mut Rng,
+) {
+    let identity: Vec<usize> = (0..points.len()).collect();
+    let edges = edges_in_original(rec, &identity);
+    for round in 0..3 {
+        let order = rng.permutation(points.len());
+        let permuted: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
+        let other = reconstruct_with(&permuted, options).unwrap();
+        assert_eq!(other.thinned(), rec.thinned(), "round {round}");
+        assert_eq!(edges_in_original(&other, &order), edges, "round {round}");
+    }
+}
+
 #[test]
 fn thinning_depends_neither_on_the_order_nor_on_a_power_of_two_scale() {
     let mut rng = Rng::new(34);
@@ -188,15 +207,12 @@ fn thinning_depends_neither_on_the_order_nor_on_a_power_of_two_scale() {
     let points = band(&star.points, true, 4000, 0.03, &mut rng);
     let rec = reconstruct_with(&points, &Options::new().with_smoothing(true)).unwrap();
     assert!(rec.thinned().is_some());
-    let identity: Vec<usize> = (0..points.len()).collect();
-    let edges = edges_in_original(&rec, &identity);
-    for round in 0..3 {
-        let order = rng.permutation(points.len());
-        let permuted: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
-        let other = reconstruct_with(&permuted, &Options::new().with_smoothing(true)).unwrap();
-        assert_eq!(other.thinned(), rec.thinned(), "round {round}");
-        assert_eq!(edges_in_original(&other, &order), edges, "round {round}");
-    }
+    assert_same_in_any_order(
+        &points,
+        &rec,
+        &Options::new().with_smoothing(true),
+        &mut rng,
+    );
     for scale in [0.125, 1024.0] {
         let scaled: Vec<[f64; 2]> = points
             .iter()
@@ -392,15 +408,7 @@ fn the_choice_for_an_uncertain_sample_depends_neither_on_the_order_nor_on_the_sc
     let points = band(&arc, false, 2000, 0.003, &mut rng);
     let rec = default(&points);
     assert!(rec.thinned().is_some());
-    let identity: Vec<usize> = (0..points.len()).collect();
-    let edges = edges_in_original(&rec, &identity);
-    for round in 0..3 {
-        let order = rng.permutation(points.len());
-        let permuted: Vec<[f64; 2]> = order.iter().map(|&i| points[i]).collect();
-        let other = default(&permuted);
-        assert_eq!(other.thinned(), rec.thinned(), "round {round}");
-        assert_eq!(edges_in_original(&other, &order), edges, "round {round}");
-    }
+    assert_same_in_any_order(&points, &rec, &Options::new(), &mut rng);
     for k in [-1000, -600, -3, 7, 600, 1000] {
         let scale = 2.0f64.powi(k);
         let scaled: Vec<[f64; 2]> = points
